@@ -1,0 +1,95 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include <Eigen/Core>
+#include <optional>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "materials/InputError.h"
+#include "materials/Status.h"
+
+namespace dabs::elements {
+
+/// Coordinates of an element's nodes in node order, each padded to 3D with zeros (a 2D model's
+/// node (x, y) is (x, y, 0)).
+using NodalCoordinates = std::vector<Eigen::Vector3d>;
+
+/// Trial kinematics of one element, gathered by the domain in the element's dof order (node by
+/// node, each node's dofs in order 1..ndf). All vectors are TOTAL values in the global frame.
+struct Kinematics {
+  Eigen::Ref<const Eigen::VectorXd> u;  ///< trial displacement
+  Eigen::Ref<const Eigen::VectorXd> v;  ///< trial velocity
+  Eigen::Ref<const Eigen::VectorXd> a;  ///< trial acceleration
+  double time = 0.0;                    ///< trial (pseudo) time
+  double dt = 0.0;                      ///< trial time minus committed time (0 in static steps)
+};
+
+/// A finite element seen by the domain. Elements store no Node* or Domain* (style.md section 3):
+/// the domain passes coordinates once and trial kinematics at every update, so an element can be
+/// tested alone. Getters never compute state: all state work happens in update().
+///
+/// Force convention: resistingForce() is the element's internal force on its nodes (global frame),
+/// i.e. the force the nodes must apply to the element; it includes the element's own
+/// velocity-dependent forces (dashpots) but not Rayleigh damping and not inertia, which the domain
+/// forms from mass() and the Rayleigh factors.
+class Element {
+ public:
+  explicit Element(int tag) noexcept : tag_(tag) {}
+  virtual ~Element() = default;
+  Element(const Element&) = delete;
+  Element& operator=(const Element&) = delete;
+
+  /// User tag given in the `element` command.
+  int tag() const noexcept { return tag_; }
+  /// Type name as in the `element` command (e.g. "zeroLength").
+  virtual std::string_view typeName() const = 0;
+  /// Tags of the connected nodes, in element order.
+  virtual const std::vector<int>& nodeTags() const = 0;
+  /// Number of element dofs (nodes x dofs per node).
+  virtual int numDof() const = 0;
+  /// Dofs per node the element expects; the domain checks each node has exactly this many.
+  virtual int dofPerNode() const = 0;
+
+  /// Called once when the element joins a domain, with its nodes' coordinates. Throws InputError
+  /// for impossible geometry (zero length, vecxz parallel to the axis) so the command can report it.
+  virtual void initialize(const NodalCoordinates& x) = 0;
+  /// Sets the trial state from trial kinematics, starting from the committed state.
+  [[nodiscard]] virtual Status update(const Kinematics& trial) = 0;
+
+  /// Internal force (global frame) at the last update.
+  virtual Eigen::Ref<const Eigen::VectorXd> resistingForce() const = 0;
+  /// d(resistingForce)/du at the last update (global frame).
+  virtual Eigen::Ref<const Eigen::MatrixXd> tangentStiff() const = 0;
+  /// Stiffness of the virgin element (global frame).
+  virtual Eigen::Ref<const Eigen::MatrixXd> initialStiff() const = 0;
+  /// Stiffness at the last commit, for Rayleigh betaKcomm; defaults to the initial stiffness.
+  virtual Eigen::Ref<const Eigen::MatrixXd> committedStiff() const { return initialStiff(); }
+  /// d(resistingForce)/dv: the element's own dashpots (not Rayleigh). Zero by default.
+  virtual Eigen::Ref<const Eigen::MatrixXd> dampingTangent() const;
+  /// Mass matrix (global frame). Zero by default.
+  virtual Eigen::Ref<const Eigen::MatrixXd> mass() const;
+  /// True when tangentStiff() may be non-symmetric (sliding friction): the solver must use LU.
+  virtual bool hasNonSymmetricTangent() const { return false; }
+  /// True when Rayleigh damping applies to this element unless a region says otherwise
+  /// (OpenSees: zeroLength and truss default to no Rayleigh damping, beams to yes).
+  virtual bool rayleighByDefault() const { return true; }
+  /// True when the element is linear, so its tangent never changes and needs no re-forming.
+  virtual bool isLinear() const { return false; }
+
+  virtual void commitState() = 0;
+  virtual void revertToLastCommit() = 0;
+  virtual void revertToStart() = 0;
+
+  /// Named response for `eleResponse` and element recorders (e.g. {"force"},
+  /// {"section","2","force"}); nullopt when the name is unknown.
+  virtual std::optional<Eigen::VectorXd> response(std::span<const std::string> args) const;
+  /// Human-readable description for `print -ele`.
+  virtual std::string describe() const;
+
+ private:
+  int tag_;
+};
+
+}  // namespace dabs::elements

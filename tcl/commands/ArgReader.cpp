@@ -1,0 +1,270 @@
+// SPDX-License-Identifier: MIT
+#include "tcl/commands/ArgReader.h"
+
+#include <cctype>
+#include <cmath>
+#include <limits>
+
+namespace dabs::tcl {
+
+namespace {
+constexpr std::size_t kNone = std::numeric_limits<std::size_t>::max();
+
+bool parseReal(Tcl_Obj* obj, double& value) {
+  return Tcl_GetDoubleFromObj(nullptr, obj, &value) == TCL_OK && std::isfinite(value);
+}
+bool parseInteger(Tcl_Obj* obj, int& value) {
+  return Tcl_GetIntFromObj(nullptr, obj, &value) == TCL_OK;
+}
+}  // namespace
+
+bool isOptionWord(std::string_view token) noexcept {
+  return token.size() >= 2 && token[0] == '-' &&
+         std::isalpha(static_cast<unsigned char>(token[1])) != 0;
+}
+
+ArgReader::ArgReader(int objc, Tcl_Obj* const objv[], std::string usage, int first)
+    : tokens_(objv, objv + objc), used_(static_cast<std::size_t>(objc), false),
+      usage_(std::move(usage)) {
+  for (int i = 0; i < first && i < objc; ++i) used_[static_cast<std::size_t>(i)] = true;
+  std::string ctx;
+  for (int i = 0; i < first && i < objc; ++i) {
+    if (i > 0) ctx += ' ';
+    ctx += Tcl_GetString(objv[i]);
+  }
+  context_ = ctx;
+}
+
+std::string_view ArgReader::text(std::size_t i) const { return Tcl_GetString(tokens_[i]); }
+
+std::size_t ArgReader::nextUnread() const {
+  for (std::size_t i = 0; i < tokens_.size(); ++i)
+    if (!used_[i]) return i;
+  return tokens_.size();
+}
+
+bool ArgReader::hasMore() const { return nextUnread() < tokens_.size(); }
+
+bool ArgReader::hasPositional() const {
+  const std::size_t i = nextUnread();
+  return i < tokens_.size() && !isOptionWord(text(i));
+}
+
+std::string_view ArgReader::peek() const {
+  const std::size_t i = nextUnread();
+  return i < tokens_.size() ? text(i) : std::string_view{};
+}
+
+void ArgReader::fail(std::size_t pos, std::string_view name, std::string_view what) const {
+  std::string msg = context_ + ": argument " + std::to_string(pos) + " (" + std::string(name) +
+                    ") " + std::string(what);
+  if (!usage_.empty()) msg += "; usage: " + usage_;
+  throw ArgError(msg);
+}
+
+void ArgReader::fail(std::string_view what) const {
+  std::string msg = context_ + ": " + std::string(what);
+  if (!usage_.empty()) msg += "; usage: " + usage_;
+  throw ArgError(msg);
+}
+
+void ArgReader::expected(std::size_t i, std::string_view name, std::string_view what) const {
+  if (i >= tokens_.size()) fail(i, name, std::string(what) + ", got nothing (too few arguments)");
+  fail(i, name, std::string(what) + ", got \"" + std::string(text(i)) + "\"");
+}
+
+int ArgReader::integer(std::string_view name) {
+  const std::size_t i = nextUnread();
+  int value = 0;
+  if (i >= tokens_.size() || !parseInteger(tokens_[i], value)) expected(i, name, "expected an integer");
+  used_[i] = true;
+  last_ = i;
+  return value;
+}
+
+double ArgReader::real(std::string_view name) {
+  const std::size_t i = nextUnread();
+  double value = 0.0;
+  if (i >= tokens_.size() || !parseReal(tokens_[i], value)) expected(i, name, "expected a number");
+  used_[i] = true;
+  last_ = i;
+  return value;
+}
+
+std::string ArgReader::word(std::string_view name) {
+  const std::size_t i = nextUnread();
+  if (i >= tokens_.size()) expected(i, name, "expected a word");
+  used_[i] = true;
+  last_ = i;
+  return std::string(text(i));
+}
+
+Tcl_Obj* ArgReader::object(std::string_view name) {
+  const std::size_t i = nextUnread();
+  if (i >= tokens_.size()) expected(i, name, "expected a value");
+  used_[i] = true;
+  last_ = i;
+  return tokens_[i];
+}
+
+std::optional<double> ArgReader::optionalReal(std::string_view name) {
+  if (!hasPositional()) return std::nullopt;
+  return real(name);
+}
+
+std::optional<int> ArgReader::optionalInteger(std::string_view name) {
+  if (!hasPositional()) return std::nullopt;
+  return integer(name);
+}
+
+std::vector<int> ArgReader::integers(std::string_view name, std::size_t atLeast) {
+  std::vector<int> out;
+  while (hasPositional()) {
+    int value = 0;
+    const std::size_t i = nextUnread();
+    if (!parseInteger(tokens_[i], value)) {
+      if (out.size() >= atLeast) break;
+      expected(i, name, "expected an integer");
+    }
+    used_[i] = true;
+    last_ = i;
+    out.push_back(value);
+  }
+  if (out.size() < atLeast) {
+    expected(nextUnread(), name,
+             "expected at least " + std::to_string(atLeast) + " integer" + (atLeast > 1 ? "s" : ""));
+  }
+  return out;
+}
+
+std::vector<double> ArgReader::reals(std::string_view name, std::size_t atLeast) {
+  std::vector<double> out;
+  while (hasPositional()) {
+    double value = 0.0;
+    const std::size_t i = nextUnread();
+    if (!parseReal(tokens_[i], value)) {
+      if (out.size() >= atLeast) break;
+      expected(i, name, "expected a number");
+    }
+    used_[i] = true;
+    last_ = i;
+    out.push_back(value);
+  }
+  if (out.size() < atLeast) {
+    expected(nextUnread(), name,
+             "expected at least " + std::to_string(atLeast) + " number" + (atLeast > 1 ? "s" : ""));
+  }
+  return out;
+}
+
+std::vector<double> ArgReader::reals(std::string_view name, std::size_t count, bool /*exact*/) {
+  std::vector<double> out;
+  out.reserve(count);
+  for (std::size_t k = 0; k < count; ++k) out.push_back(real(name));
+  return out;
+}
+
+std::size_t ArgReader::findKey(std::string_view key) const {
+  for (std::size_t i = 0; i < tokens_.size(); ++i)
+    if (!used_[i] && text(i) == key) return i;
+  return kNone;
+}
+
+bool ArgReader::flag(std::string_view key) {
+  const std::size_t i = findKey(key);
+  if (i == kNone) return false;
+  used_[i] = true;
+  return true;
+}
+
+std::optional<double> ArgReader::optionalOption(std::string_view key) {
+  const std::size_t i = findKey(key);
+  if (i == kNone) return std::nullopt;
+  used_[i] = true;
+  double value = 0.0;
+  if (i + 1 >= tokens_.size() || used_[i + 1] || !parseReal(tokens_[i + 1], value))
+    expected(i + 1, key, "expected a number after " + std::string(key));
+  used_[i + 1] = true;
+  return value;
+}
+
+double ArgReader::option(std::string_view key, double fallback) {
+  return optionalOption(key).value_or(fallback);
+}
+
+int ArgReader::option(std::string_view key, int fallback) {
+  const std::size_t i = findKey(key);
+  if (i == kNone) return fallback;
+  used_[i] = true;
+  int value = 0;
+  if (i + 1 >= tokens_.size() || used_[i + 1] || !parseInteger(tokens_[i + 1], value))
+    expected(i + 1, key, "expected an integer after " + std::string(key));
+  used_[i + 1] = true;
+  return value;
+}
+
+std::optional<std::string> ArgReader::optionalWordOption(std::string_view key) {
+  const std::size_t i = findKey(key);
+  if (i == kNone) return std::nullopt;
+  used_[i] = true;
+  if (i + 1 >= tokens_.size() || used_[i + 1])
+    expected(i + 1, key, "expected a value after " + std::string(key));
+  used_[i + 1] = true;
+  return std::string(text(i + 1));
+}
+
+std::string ArgReader::option(std::string_view key, const std::string& fallback) {
+  return optionalWordOption(key).value_or(fallback);
+}
+
+std::optional<std::vector<double>> ArgReader::optionReals(std::string_view key, std::size_t n) {
+  const std::size_t i = findKey(key);
+  if (i == kNone) return std::nullopt;
+  used_[i] = true;
+  std::vector<double> out(n);
+  for (std::size_t k = 0; k < n; ++k) {
+    const std::size_t j = i + 1 + k;
+    if (j >= tokens_.size() || used_[j] || !parseReal(tokens_[j], out[k]))
+      expected(j, key, "expected " + std::to_string(n) + " numbers after " + std::string(key));
+    used_[j] = true;
+  }
+  return out;
+}
+
+std::optional<std::vector<double>> ArgReader::optionRealList(std::string_view key) {
+  const std::size_t i = findKey(key);
+  if (i == kNone) return std::nullopt;
+  used_[i] = true;
+  std::vector<double> out;
+  double value = 0.0;
+  for (std::size_t j = i + 1; j < tokens_.size() && !used_[j] && parseReal(tokens_[j], value); ++j) {
+    used_[j] = true;
+    out.push_back(value);
+  }
+  if (out.empty()) expected(i + 1, key, "expected numbers after " + std::string(key));
+  return out;
+}
+
+std::optional<std::vector<int>> ArgReader::optionIntegerList(std::string_view key) {
+  const std::size_t i = findKey(key);
+  if (i == kNone) return std::nullopt;
+  used_[i] = true;
+  std::vector<int> out;
+  int value = 0;
+  for (std::size_t j = i + 1; j < tokens_.size() && !used_[j] && parseInteger(tokens_[j], value);
+       ++j) {
+    used_[j] = true;
+    out.push_back(value);
+  }
+  if (out.empty()) expected(i + 1, key, "expected integers after " + std::string(key));
+  return out;
+}
+
+void ArgReader::finish() const {
+  const std::size_t i = nextUnread();
+  if (i < tokens_.size()) {
+    fail(i, "extra", "unexpected argument \"" + std::string(text(i)) + "\"");
+  }
+}
+
+}  // namespace dabs::tcl

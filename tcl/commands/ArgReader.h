@@ -1,0 +1,110 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include <tcl.h>
+
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace dabs::tcl {
+
+/// A command argument that cannot be used. The message names the command (and type and tag when
+/// known), the argument's position and name, the bad token and the usage line, e.g.
+/// `uniaxialMaterial Restrainer 7: argument 4 (gap) expected a number, got "abc"; usage: ...`.
+class ArgError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+/// The one argument parser of the Tcl layer (style.md section 5): reads positional arguments in
+/// order and `-key value` options from anywhere after them, over Tcl's objc/objv, so no command
+/// writes its own parsing loop. Every failure throws ArgError with a complete message.
+///
+/// Positional readers stop at an option word (a token starting with '-' that is not a number), so
+/// a missing positional argument is reported as such. Options are consumed wherever they stand;
+/// `finish()` rejects anything left over.
+class ArgReader {
+ public:
+  /// `objv[0]` is the command word; reading starts at `objv[first]`.
+  ArgReader(int objc, Tcl_Obj* const objv[], std::string usage, int first = 1);
+
+  /// Sets the prefix of error messages, e.g. "uniaxialMaterial Steel02 7", once type and tag are read.
+  void setContext(std::string context) { context_ = std::move(context); }
+  /// Replaces the usage line shown in error messages (after a type word selected a sub-command).
+  void setUsage(std::string usage) { usage_ = std::move(usage); }
+  const std::string& context() const noexcept { return context_; }
+  const std::string& usage() const noexcept { return usage_; }
+
+  // --- positional arguments -------------------------------------------------------------
+  /// Next positional argument as an integer.
+  int integer(std::string_view name);
+  /// Next positional argument as a real number.
+  double real(std::string_view name);
+  /// Next positional argument as a word (any string, including one starting with '-').
+  std::string word(std::string_view name);
+  /// Next positional argument as a Tcl object (e.g. a script body), without conversion.
+  Tcl_Obj* object(std::string_view name);
+  /// Next positional argument as a real number when one follows, else nullopt.
+  std::optional<double> optionalReal(std::string_view name);
+  /// Next positional argument as an integer when one follows, else nullopt.
+  std::optional<int> optionalInteger(std::string_view name);
+  /// All following positional integers (at least `atLeast`).
+  std::vector<int> integers(std::string_view name, std::size_t atLeast = 1);
+  /// All following positional real numbers (at least `atLeast`).
+  std::vector<double> reals(std::string_view name, std::size_t atLeast = 1);
+  /// Exactly `count` following real numbers.
+  std::vector<double> reals(std::string_view name, std::size_t count, bool exact);
+  /// True when another positional (non-option) argument follows.
+  bool hasPositional() const;
+  /// True when any unread argument remains.
+  bool hasMore() const;
+  /// The next unread token, without consuming it ("" at the end).
+  std::string_view peek() const;
+
+  // --- options -------------------------------------------------------------------------
+  /// Consumes a bare flag such as "-time"; true when present.
+  bool flag(std::string_view key);
+  /// Consumes "-key value" and returns the value, or `fallback` when absent.
+  double option(std::string_view key, double fallback);
+  int option(std::string_view key, int fallback);
+  std::string option(std::string_view key, const std::string& fallback);
+  /// Consumes "-key value" when present.
+  std::optional<double> optionalOption(std::string_view key);
+  std::optional<std::string> optionalWordOption(std::string_view key);
+  /// Consumes "-key v1 v2 ... vn" (exactly n reals) when present.
+  std::optional<std::vector<double>> optionReals(std::string_view key, std::size_t n);
+  /// Consumes "-key v1 v2 ..." with every following number when present (at least one).
+  std::optional<std::vector<double>> optionRealList(std::string_view key);
+  /// Consumes "-key i1 i2 ..." with every following integer when present (at least one).
+  std::optional<std::vector<int>> optionIntegerList(std::string_view key);
+
+  /// Throws when any argument is left unread.
+  void finish() const;
+
+  /// Throws an ArgError about the argument at position `pos` (1-based, as in the command line).
+  [[noreturn]] void fail(std::size_t pos, std::string_view name, std::string_view what) const;
+  /// Throws an ArgError about the command as a whole.
+  [[noreturn]] void fail(std::string_view what) const;
+  /// Position (1-based) of the most recently read positional argument.
+  std::size_t lastPosition() const noexcept { return last_; }
+
+ private:
+  std::size_t findKey(std::string_view key) const;  // index in tokens_ or npos
+  std::size_t nextUnread() const;                   // index of next unused token or size
+  std::string_view text(std::size_t i) const;
+  [[noreturn]] void expected(std::size_t i, std::string_view name, std::string_view what) const;
+
+  std::vector<Tcl_Obj*> tokens_;  // tokens_[0] is the command word
+  std::vector<bool> used_;
+  std::string usage_;
+  std::string context_;
+  std::size_t last_ = 0;
+};
+
+/// True for a token that is an option word: starts with '-' followed by a letter.
+bool isOptionWord(std::string_view token) noexcept;
+
+}  // namespace dabs::tcl

@@ -1,0 +1,45 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include <tcl.h>
+
+#include <memory>
+#include <vector>
+
+#include "materials/UniaxialMaterial.h"
+#include "tcl/domain/Domain.h"
+#include "tcl/domain/ModelBuilder.h"
+
+namespace dabs::analysis {
+class AnalysisBuilder;
+}
+
+namespace dabs::tcl {
+
+/// State of a `section Fiber` body while it is being evaluated; defined by the section parsers.
+struct FiberSectionUnderConstruction;
+
+/// Everything one interpreter's commands share (style.md section 5): created in Dabs_Init, passed
+/// as ClientData to every command and deleted with the interpreter. No global state.
+struct Runtime {
+  explicit Runtime(Tcl_Interp* interp);
+  ~Runtime();
+  Runtime(const Runtime&) = delete;
+  Runtime& operator=(const Runtime&) = delete;
+
+  Tcl_Interp* interp;
+  domain::Domain domain;
+  domain::ModelBuilder builder;
+  std::unique_ptr<analysis::AnalysisBuilder> analysis;
+  /// Material under test by testUniaxialMaterial/setStrain/getStress (OpenSees' material tester).
+  std::unique_ptr<materials::UniaxialMaterial> testMaterial;
+  /// Set while a `section Fiber` body runs (an RAII guard clears it); null otherwise.
+  FiberSectionUnderConstruction* currentFiberSection = nullptr;
+  /// Bindings handed to Tcl as ClientData, owned here.
+  std::vector<std::unique_ptr<struct CommandBinding>> bindings;
+
+  /// Throws ArgError-like InputError when no `model basic` has been given.
+  void requireModel(const char* command) const;
+};
+
+}  // namespace dabs::tcl

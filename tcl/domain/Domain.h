@@ -1,0 +1,146 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include <Eigen/Core>
+#include <map>
+#include <memory>
+#include <vector>
+
+#include "elements/Element.h"
+#include "tcl/domain/Constraints.h"
+#include "tcl/domain/LoadPattern.h"
+#include "tcl/domain/Node.h"
+#include "tcl/domain/Recorder.h"
+
+namespace dabs::domain {
+
+/// Rayleigh damping factors, C = alphaM M + betaK K_current + betaK0 K_initial + betaKc K_committed.
+struct RayleighFactors {
+  double alphaM = 0.0;
+  double betaK = 0.0;
+  double betaK0 = 0.0;
+  double betaKc = 0.0;
+  bool any() const noexcept { return alphaM != 0.0 || betaK != 0.0 || betaK0 != 0.0 || betaKc != 0.0; }
+};
+
+/// The model: nodes, elements, constraints, load patterns, recorders and the (pseudo) time. It owns
+/// everything through std::map<int, ...> (style.md section 4). Every mutator checks its input first
+/// and throws InputError before changing anything, so a rejected command leaves the model as it was.
+/// The analysis (tcl/analysis) reads the model through this interface and writes trial responses
+/// into the nodes.
+class Domain {
+ public:
+  Domain();
+  ~Domain();
+  Domain(const Domain&) = delete;
+  Domain& operator=(const Domain&) = delete;
+
+  // --- nodes and elements -----------------------------------------------------------------
+  /// Adds a node; throws InputError on a duplicate tag.
+  Node& addNode(int tag, int ndm, int ndf, const Eigen::Vector3d& coords);
+  /// Adds an element after checking that its nodes exist, have the element's dofs per node and
+  /// that its geometry is valid (Element::initialize); throws InputError otherwise.
+  elements::Element& addElement(std::unique_ptr<elements::Element> element);
+  /// Node by tag, or nullptr.
+  const Node* findNode(int tag) const;
+  Node* findNode(int tag);
+  /// Node by tag; throws InputError("node", ...) when absent.
+  const Node& node(int tag) const;
+  Node& node(int tag);
+  /// Element by tag, or nullptr.
+  const elements::Element* findElement(int tag) const;
+  elements::Element* findElement(int tag);
+  const std::map<int, Node>& nodes() const noexcept { return nodes_; }
+  std::map<int, Node>& nodes() noexcept { return nodes_; }
+  const std::map<int, std::unique_ptr<elements::Element>>& elements() const noexcept { return elements_; }
+  /// Removes an element / a node (the node must not be used by an element); throws when absent.
+  void removeElement(int tag);
+  void removeNode(int tag);
+
+  // --- constraints ----------------------------------------------------------------------
+  /// Homogeneous single-point constraint (fix); dof is 0-based. Throws on a duplicate or bad dof.
+  void addFix(int nodeTag, int dof);
+  /// Equal-dof or rigid-link multi-point constraint; throws InputError when inconsistent.
+  void addMP(MPConstraint mp);
+  const std::vector<SPConstraint>& fixes() const noexcept { return fixes_; }
+  const std::vector<MPConstraint>& mps() const noexcept { return mps_; }
+  /// Removes every SP constraint (fix) on a node dof; returns how many were removed.
+  int removeFix(int nodeTag, int dof);
+
+  // --- loads ----------------------------------------------------------------------------
+  /// Adds a pattern; throws InputError on a duplicate tag.
+  LoadPattern& addPattern(std::unique_ptr<LoadPattern> pattern);
+  LoadPattern* findPattern(int tag);
+  void removePattern(int tag);
+  const std::map<int, std::unique_ptr<LoadPattern>>& patterns() const noexcept { return patterns_; }
+  /// Freezes every pattern at its current factor (loadConst).
+  void setLoadConst();
+
+  // --- damping --------------------------------------------------------------------------
+  /// Sets Rayleigh factors on all elements and nodes (the `rayleigh` command).
+  void setRayleigh(const RayleighFactors& f);
+  /// Sets Rayleigh factors on listed elements and nodes (`region ... -rayleigh`).
+  void setRayleigh(const RayleighFactors& f, const std::vector<int>& elementTags,
+                   const std::vector<int>& nodeTags);
+  /// Rayleigh factors of an element (zero when none were set or the element declines them).
+  RayleighFactors elementRayleigh(int elementTag) const;
+  /// Rayleigh mass factor of a node.
+  double nodeAlphaM(int nodeTag) const;
+  /// Modal damping ratio per mode (empty when none).
+  std::vector<double> modalDamping;
+
+  // --- time and state -------------------------------------------------------------------
+  double time() const noexcept { return time_; }
+  double committedTime() const noexcept { return committedTime_; }
+  void setTime(double t) noexcept { time_ = t; }
+  /// setTime command: sets trial and committed time.
+  void setCommittedTime(double t) noexcept { time_ = committedTime_ = t; }
+  /// Commits nodes, elements and time, then lets recorders record.
+  void commit();
+  /// Reverts nodes, elements and time to the last commit.
+  void revertToLastCommit();
+  /// Back to the virgin state at time 0 (the `reset` command).
+  void revertToStart();
+  /// Increases whenever nodes, elements, constraints or patterns change; the analysis re-numbers
+  /// its equations when this differs from what it saw.
+  long modelVersion() const noexcept { return modelVersion_; }
+  void touch() noexcept { ++modelVersion_; }
+
+  /// Eigenvalues of the last eigen analysis.
+  std::vector<double> eigenvalues;
+
+  // --- recorders ------------------------------------------------------------------------
+  /// Adds a recorder and returns its tag (0, 1, 2, ... as OpenSees does).
+  int addRecorder(std::unique_ptr<Recorder> recorder);
+  void removeRecorder(int tag);
+  void removeAllRecorders();
+  void flushRecorders();
+  /// Records the current state with every recorder.
+  void record();
+
+  /// Computes nodal reactions from element forces and applied loads; with `includeInertia`,
+  /// inertia and damping forces too (`reactions -dynamic`).
+  void calculateNodalReactions(bool includeInertia);
+
+  /// External nodal load vector of a node at the current time (sum over patterns).
+  Eigen::VectorXd nodalLoad(int nodeTag) const;
+
+  /// Empties the model (wipe): recorders are flushed and closed first.
+  void clear();
+
+ private:
+  std::map<int, Node> nodes_;
+  std::map<int, std::unique_ptr<elements::Element>> elements_;
+  std::vector<SPConstraint> fixes_;
+  std::vector<MPConstraint> mps_;
+  std::map<int, std::unique_ptr<LoadPattern>> patterns_;
+  std::map<int, RayleighFactors> elementRayleigh_;
+  std::map<int, double> nodeAlphaM_;
+  std::map<int, std::unique_ptr<Recorder>> recorders_;
+  int nextRecorderTag_ = 0;
+  double time_ = 0.0;
+  double committedTime_ = 0.0;
+  long modelVersion_ = 0;
+};
+
+}  // namespace dabs::domain

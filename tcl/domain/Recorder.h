@@ -1,0 +1,27 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+
+namespace dabs::domain {
+
+class Domain;
+
+/// Writes part of the state after each committed step. Output is buffered and flushed at the end
+/// of every `analyze`, on `remove recorders`, `wipe` and exit (Domain::flushRecorders), so nothing
+/// already recorded is lost when a later step fails.
+class Recorder {
+ public:
+  virtual ~Recorder() = default;
+  /// Records the domain's committed state at its current time.
+  virtual void record(const Domain& domain) = 0;
+  /// Writes buffered output to the file.
+  virtual void flush() = 0;
+  /// Called once with the domain before the first record (e.g. to resolve tags); may throw
+  /// InputError for unknown tags.
+  virtual void initialize(const Domain& /*domain*/) {}
+  /// True when the recorder needs reactions computed before it records.
+  virtual bool needsReactions() const { return false; }
+  /// Called when an eigen analysis finishes (recorders of eigenvectors write then).
+  virtual void recordEigen(const Domain& /*domain*/) {}
+};
+
+}  // namespace dabs::domain
