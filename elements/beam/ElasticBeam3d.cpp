@@ -1,0 +1,127 @@
+// SPDX-License-Identifier: MIT
+#include "elements/beam/ElasticBeam3d.h"
+
+#include <cassert>
+#include <sstream>
+
+#include "materials/InputError.h"
+
+namespace dabs::elements {
+
+void ElasticBeam3dParams::validate() const {
+  if (!(area > 0.0)) throw InputError("A", "must be positive");
+  if (!(modulus > 0.0)) throw InputError("E", "must be positive");
+  if (!(shearModulus > 0.0)) throw InputError("G", "must be positive");
+  if (!(torsion > 0.0)) throw InputError("J", "must be positive");
+  if (!(inertiaY > 0.0)) throw InputError("Iy", "must be positive");
+  if (!(inertiaZ > 0.0)) throw InputError("Iz", "must be positive");
+  if (!(massPerLength >= 0.0)) throw InputError("-mass", "must be zero or positive");
+}
+
+ElasticBeam3d::ElasticBeam3d(int tag, int nodeI, int nodeJ, const Params& params,
+                             std::unique_ptr<CrdTransf3d> transf)
+    : FixedSizeElement(tag, {nodeI, nodeJ}), params_(params), transf_(std::move(transf)) {
+  assert(transf_);
+}
+
+void ElasticBeam3d::initialize(const NodalCoordinates& x) {
+  if (x.size() != 2) throw InputError("element", "elasticBeamColumn needs 2 nodes");
+  transf_->initialize(x[0], x[1]);
+  const double length = transf_->initialLength();
+  const double e = params_.modulus / length;
+  kb_.setZero();
+  kb_(0, 0) = e * params_.area;
+  kb_(1, 1) = kb_(2, 2) = 4.0 * e * params_.inertiaZ;
+  kb_(1, 2) = kb_(2, 1) = 2.0 * e * params_.inertiaZ;
+  kb_(3, 3) = kb_(4, 4) = 4.0 * e * params_.inertiaY;
+  kb_(3, 4) = kb_(4, 3) = 2.0 * e * params_.inertiaY;
+  kb_(5, 5) = params_.shearModulus * params_.torsion / length;
+  k0_ = transf_->initialGlobalStiffness(kb_);
+
+  m_.setZero();
+  const double mass = params_.massPerLength * length;
+  if (mass > 0.0 && !params_.consistentMass) {
+    for (int d : {0, 1, 2, 6, 7, 8}) m_(d, d) = 0.5 * mass;
+  } else if (mass > 0.0) {
+    // Local consistent mass (Przemieniecki 1968, eq. 11.42): linear axial and torsional, cubic
+    // Hermitian transverse. In the x-z plane ry = -dw/dx flips the sign of the coupling terms.
+    Matrix ml = Matrix::Zero();
+    const double m = mass / 420.0, l = length, polar = params_.torsion / params_.area;
+    ml(0, 0) = ml(6, 6) = 140.0 * m;
+    ml(0, 6) = ml(6, 0) = 70.0 * m;
+    ml(3, 3) = ml(9, 9) = 140.0 * m * polar;
+    ml(3, 9) = ml(9, 3) = 70.0 * m * polar;
+    for (int d : {1, 2}) {
+      const int r = d == 1 ? 5 : 4;        // rotation dof of the bending plane
+      const double s = d == 1 ? 1.0 : -1.0;  // sign of the translation-rotation coupling
+      ml(d, d) = ml(d + 6, d + 6) = 156.0 * m;
+      ml(d, d + 6) = ml(d + 6, d) = 54.0 * m;
+      ml(r, r) = ml(r + 6, r + 6) = 4.0 * l * l * m;
+      ml(r, r + 6) = ml(r + 6, r) = -3.0 * l * l * m;
+      ml(d, r) = ml(r, d) = s * 22.0 * l * m;
+      ml(d + 6, r + 6) = ml(r + 6, d + 6) = -s * 22.0 * l * m;
+      ml(d, r + 6) = ml(r + 6, d) = -s * 13.0 * l * m;
+      ml(r, d + 6) = ml(d + 6, r) = s * 13.0 * l * m;
+    }
+    m_ = transf_->globalFromLocal(ml);
+  }
+  uTrial_.setZero();
+  uCommitted_.setZero();
+  formState(uTrial_);
+}
+
+void ElasticBeam3d::formState(const Vector& u) {
+  transf_->update(u);
+  q_ = kb_ * transf_->basicDeformation();
+  f_ = transf_->globalForce(q_);
+  k_ = transf_->globalStiffness(kb_, q_);
+}
+
+Status ElasticBeam3d::update(const Kinematics& trial) {
+  uTrial_ = trial.u;
+  formState(uTrial_);
+  return f_.allFinite() ? Status::Ok : Status::NonFinite;
+}
+
+void ElasticBeam3d::commitState() {
+  transf_->commitState();
+  uCommitted_ = uTrial_;
+}
+
+void ElasticBeam3d::revertToLastCommit() {
+  transf_->revertToLastCommit();
+  uTrial_ = uCommitted_;
+  formState(uTrial_);
+}
+
+void ElasticBeam3d::revertToStart() {
+  transf_->revertToStart();
+  uTrial_.setZero();
+  uCommitted_.setZero();
+  formState(uTrial_);
+}
+
+std::optional<Eigen::VectorXd> ElasticBeam3d::response(std::span<const std::string> args) const {
+  if (args.empty()) return std::nullopt;
+  const std::string& name = args[0];
+  if (name == "force" || name == "forces" || name == "globalForce" || name == "globalForces")
+    return Eigen::VectorXd(f_);
+  if (name == "localForce" || name == "localForces") return Eigen::VectorXd(transf_->localForce(q_));
+  if (name == "basicForce" || name == "basicForces") return Eigen::VectorXd(q_);
+  if (name == "deformations" || name == "basicDeformation" || name == "basicDeformations")
+    return Eigen::VectorXd(transf_->basicDeformation());
+  return std::nullopt;
+}
+
+std::string ElasticBeam3d::describe() const {
+  std::ostringstream s;
+  s << "ElasticBeam3d " << tag() << ": nodes " << nodes_[0] << " " << nodes_[1] << ", A "
+    << params_.area << ", E " << params_.modulus << ", G " << params_.shearModulus << ", J "
+    << params_.torsion << ", Iy " << params_.inertiaY << ", Iz " << params_.inertiaZ
+    << ", geomTransf " << transf_->typeName() << " " << transf_->tag() << ", mass/length "
+    << params_.massPerLength << (params_.consistentMass ? " (consistent)" : "")
+    << ", basic forces " << q_.transpose();
+  return s.str();
+}
+
+}  // namespace dabs::elements
