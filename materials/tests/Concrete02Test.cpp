@@ -1,0 +1,57 @@
+// SPDX-License-Identifier: MIT
+// Concrete02: compression envelope (Kent-Scott-Park) and linear tension softening, computed here.
+
+#include "materials/Concrete02.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+namespace dabs::materials {
+namespace {
+
+constexpr double kFpc = -30.0, kEps0 = -0.002, kFpcu = -6.0, kEpsU = -0.006;
+constexpr double kFt = 3.0, kEts = 1500.0, kEc = 2.0 * kFpc / kEps0;
+constexpr double kTol = 1e-10;
+
+Concrete02 make() { return Concrete02(1, Concrete02::Params{kFpc, kEps0, kFpcu, kEpsU, 0.1, kFt, kEts}); }
+
+TEST(Concrete02Test, CompressionEnvelope) {
+  auto m = make();
+  ASSERT_TRUE(ok(m.setTrialStrain(0.5 * kEps0)));
+  EXPECT_NEAR(m.getStress(), kFpc * (2.0 * 0.5 - 0.25), kTol * 30.0);
+  m.revertToLastCommit();
+  ASSERT_TRUE(ok(m.setTrialStrain(-0.005)));
+  EXPECT_NEAR(m.getStress(), kFpc + (kFpcu - kFpc) * (-0.005 - kEps0) / (kEpsU - kEps0), kTol * 30.0);
+  EXPECT_NEAR(m.getTangent(), (kFpcu - kFpc) / (kEpsU - kEps0), kTol * kEc);
+}
+
+TEST(Concrete02Test, TensionBranchAndLinearSoftening) {
+  auto m = make();
+  const double epsCrack = kFt / kEc;
+  ASSERT_TRUE(ok(m.setTrialStrain(0.5 * epsCrack)));
+  EXPECT_NEAR(m.getStress(), 0.5 * kFt, kTol * 30.0);
+  EXPECT_DOUBLE_EQ(m.getTangent(), kEc);
+  ASSERT_TRUE(ok(m.setTrialStrain(epsCrack + 0.001)));
+  EXPECT_NEAR(m.getStress(), kFt - kEts * 0.001, kTol * 30.0);
+  EXPECT_DOUBLE_EQ(m.getTangent(), -kEts);
+  m.commitState();
+  // unloading from the softening branch goes back towards the origin (secant slope)
+  const double sigMax = m.getStress();
+  ASSERT_TRUE(ok(m.setTrialStrain(0.5 * (epsCrack + 0.001))));
+  EXPECT_NEAR(m.getStress(), 0.5 * sigMax, kTol * 30.0);
+  // beyond ft/Ec0 + ft/Ets the tensile stress is zero
+  m.revertToLastCommit();
+  ASSERT_TRUE(ok(m.setTrialStrain(epsCrack + kFt / kEts + 1e-4)));
+  EXPECT_EQ(m.getStress(), 0.0);
+}
+
+TEST(Concrete02Test, DefaultsFollowOpenSees) {
+  const auto p = Concrete02::Params::withDefaults(kFpc, kEps0, kFpcu, kEpsU);
+  EXPECT_DOUBLE_EQ(p.lambda, 0.1);
+  EXPECT_DOUBLE_EQ(p.ft, 3.0);
+  EXPECT_DOUBLE_EQ(p.Ets, 0.1 * kFpc / kEps0);
+}
+
+}  // namespace
+}  // namespace dabs::materials

@@ -1,0 +1,104 @@
+// SPDX-License-Identifier: MIT
+// Steel02 against the Menegotto-Pinto equation evaluated here from the published formula
+// (Menegotto & Pinto 1973; Filippou, Popov & Bertero 1983, EERC 83/19, eqs. 3-5).
+
+#include "materials/Steel02.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+namespace dabs::materials {
+namespace {
+
+constexpr double kFy = 400.0, kE = 2.0e5, kB = 0.01, kEpsY = kFy / kE;
+constexpr double kRelTol = 1e-12;
+
+/// Normalised Menegotto-Pinto curve sig* = b*eps* + (1-b)*eps*/(1+|eps*|^R)^(1/R).
+double menegottoPinto(double epsStar, double b, double R) {
+  return b * epsStar + (1.0 - b) * epsStar / std::pow(1.0 + std::pow(std::fabs(epsStar), R), 1.0 / R);
+}
+
+TEST(Steel02Test, FirstLoadingFollowsMenegottoPintoWithR0) {
+  Steel02 m(1, Steel02::Params{kFy, kE, kB});
+  // first excursion: origin (0,0), asymptote intersection (epsy, Fy), xi = 0 so R = R0 = 15
+  for (double ratio : {0.5, 1.0, 1.5, 3.0}) {
+    ASSERT_TRUE(ok(m.setTrialStrain(ratio * kEpsY)));
+    const double expected = kFy * menegottoPinto(ratio, kB, 15.0);
+    EXPECT_NEAR(m.getStress(), expected, kRelTol * kFy) << "eps/epsy = " << ratio;
+  }
+}
+
+TEST(Steel02Test, ElasticStartAndHardeningAsymptote) {
+  Steel02 m(1, Steel02::Params{kFy, kE, kB});
+  ASSERT_TRUE(ok(m.setTrialStrain(0.01 * kEpsY)));
+  EXPECT_NEAR(m.getTangent(), kE, 1e-12 * kE);  // |eps*|^R negligible: initial slope E
+  ASSERT_TRUE(ok(m.setTrialStrain(20.0 * kEpsY)));
+  // far beyond yield the curve approaches the asymptote Fy + b*E*(eps - epsy), slope b*E
+  EXPECT_NEAR(m.getStress(), kFy + kB * kE * 19.0 * kEpsY, 1e-6 * kFy);
+  EXPECT_NEAR(m.getTangent(), kB * kE, 1e-3 * kB * kE);
+}
+
+TEST(Steel02Test, ReversalUsesNewOriginAsymptoteAndDegradedR) {
+  Steel02::Params p{kFy, kE, kB};
+  Steel02 m(1, p);
+  const double epsMax = 3.0 * kEpsY;
+  ASSERT_TRUE(ok(m.setTrialStrain(epsMax)));
+  m.commitState();
+  const double sigR = m.getStress();
+  // independent construction of the reversal branch:
+  // elastic line sig = sigR + E*(eps - epsR) meets the compressive asymptote
+  // sig = -Fy + b*E*(eps + epsy) at eps0
+  const double eps0 = (-kFy + kB * kE * kEpsY - sigR + kE * epsMax) / (kE - kB * kE);
+  const double sig0 = -kFy + kB * kE * (eps0 + kEpsY);
+  // xi = |eps_pl - eps0|/epsy with eps_pl the previous extreme on the compression side (-epsy)
+  const double xi = std::fabs(-kEpsY - eps0) / kEpsY;
+  const double R = p.R0 * (1.0 - p.cR1 * xi / (p.cR2 + xi));
+  for (double eps : {2.5 * kEpsY, 0.0, -2.0 * kEpsY}) {
+    ASSERT_TRUE(ok(m.setTrialStrain(eps)));
+    const double epsStar = (eps - epsMax) / (eps0 - epsMax);
+    const double expected = sigR + (sig0 - sigR) * menegottoPinto(epsStar, kB, R);
+    EXPECT_NEAR(m.getStress(), expected, kRelTol * kFy) << "eps = " << eps;
+  }
+  // unloading starts with the elastic slope
+  ASSERT_TRUE(ok(m.setTrialStrain(epsMax - 1e-7)));
+  EXPECT_NEAR(m.getTangent(), kE, 1e-6 * kE);
+}
+
+TEST(Steel02Test, IsotropicHardeningShiftsTheCompressiveAsymptote) {
+  Steel02::Params p{kFy, kE, kB};
+  p.a1 = 0.4;
+  p.a2 = 2.0;
+  Steel02 hard(1, p), plain(2, Steel02::Params{kFy, kE, kB});
+  for (auto* m : {&hard, &plain}) {
+    ASSERT_TRUE(ok(m->setTrialStrain(5.0 * kEpsY)));
+    m->commitState();
+    ASSERT_TRUE(ok(m->setTrialStrain(-30.0 * kEpsY)));
+  }
+  // shift = 1 + a1*((epsmax - epsmin)/(2*a2*epsy))^0.8 with epsmax = 5 epsy, epsmin = -epsy
+  const double shift = 1.0 + 0.4 * std::pow(6.0 / 4.0, 0.8);
+  const double epsR = 5.0 * kEpsY, sigR = kFy * menegottoPinto(5.0, kB, 15.0);
+  // elastic line from the reversal meets the shifted asymptote -Fy*shift + bE(eps + epsy*shift)
+  const double Esh = kB * kE;
+  const double eps0 = (-kFy * shift + Esh * kEpsY * shift - sigR + kE * epsR) / (kE - Esh);
+  const double sig0 = -kFy * shift + Esh * (eps0 + kEpsY * shift);
+  const double xi = std::fabs(-kEpsY - eps0) / kEpsY;
+  const double R = 15.0 * (1.0 - 0.925 * xi / (0.15 + xi));
+  const double epsStar = (-30.0 * kEpsY - epsR) / (eps0 - epsR);
+  EXPECT_NEAR(hard.getStress(), sigR + (sig0 - sigR) * menegottoPinto(epsStar, kB, R),
+              kRelTol * kFy);
+  EXPECT_LT(hard.getStress(), plain.getStress() - 0.3 * kFy);
+}
+
+TEST(Steel02Test, InitialStressShiftsTheVirginState) {
+  Steel02::Params p{kFy, kE, kB};
+  p.sigInit = 100.0;
+  Steel02 m(1, p);
+  EXPECT_DOUBLE_EQ(m.getStress(), 100.0);
+  ASSERT_TRUE(ok(m.setTrialStrain(0.1 * kEpsY)));
+  // internal strain 0.1 epsy + 100/E = 0.35 epsy on the first-loading curve
+  EXPECT_NEAR(m.getStress(), kFy * menegottoPinto(0.35, kB, 15.0), kRelTol * kFy);
+}
+
+}  // namespace
+}  // namespace dabs::materials
