@@ -1,0 +1,310 @@
+// SPDX-License-Identifier: MIT
+#include "contact/NodeToSurfaceContact3d.h"
+
+#include <Eigen/Dense>
+#include <cmath>
+#include <sstream>
+#include <unsupported/Eigen/AutoDiff>
+
+#include "materials/InputError.h"
+
+namespace dabs::contact {
+
+namespace {
+
+// Forward-mode derivatives with respect to the 15 translations (k, a, b, c, d) and then their
+// 15 velocities; fixed size, so no heap allocation during update().
+constexpr int kTrans = 15;
+using Deriv = Eigen::Matrix<double, 2 * kTrans, 1>;
+using AD = Eigen::AutoDiffScalar<Deriv>;
+using Vec3 = std::array<AD, 3>;
+
+AD dot(const Eigen::Vector3d& a, const Vec3& b) { return a(0) * b[0] + a(1) * b[1] + a(2) * b[2]; }
+
+NormalLaw::Params normalParams(const NodeToSurfaceParams& p) { return {p.K, p.e, p.M1, p.M2}; }
+CoulombFriction::Params frictionParams(const NodeToSurfaceParams& p) {
+  return {p.K, p.et, p.muS, p.muK, p.M1, p.M2};
+}
+
+}  // namespace
+
+void NodeToSurfaceParams::validate() const {
+  normalParams(*this).validate();
+  try {
+    frictionParams(*this).validate();
+  } catch (const InputError& err) {
+    if (err.field() == "Kt") throw InputError("K", err.reason());
+    throw;
+  }
+  if (!(search > 0.0)) throw InputError("search", "must be positive");
+}
+
+template <int Ndf>
+NodeToSurfaceContact3d<Ndf>::NodeToSurfaceContact3d(int tag, int contactor,
+                                                    const std::array<int, 4>& target,
+                                                    const NodeToSurfaceParams& params)
+    : Base(tag, {contactor, target[0], target[1], target[2], target[3]}),
+      params_(params),
+      normal_(normalParams(params)),
+      friction_(frictionParams(params)),
+      search_(params.search) {}
+
+template <int Ndf>
+void NodeToSurfaceContact3d<Ndf>::initialize(const elements::NodalCoordinates& x) {
+  if (x.size() != 5) throw InputError("nodes", "nodeToSurface needs 5 nodes (k a b c d)");
+  for (std::size_t i = 0; i < 5; ++i) X_[i] = x[i];
+  const std::array<Eigen::Vector3d, 4> quad{X_[1], X_[2], X_[3], X_[4]};
+  frame_ = makeSurfaceFrame(quad);
+  origin_ = boundingSphere(quad).center;
+  const double side = frame_.n.dot(X_[0] - origin_);
+  if (side < -1e-9 * frame_.size)
+    throw InputError("surface",
+                     "outward normal (b-a)x(d-a) points away from the contactor node: "
+                     "list the target nodes a b c d in the opposite order");
+  revertToStart();
+}
+
+template <int Ndf>
+void NodeToSurfaceContact3d<Ndf>::clearForces() {
+  if (forcesZero_) return;
+  this->f_.setZero();
+  this->k_.setZero();
+  this->c_.setZero();
+  forcesZero_ = true;
+}
+
+template <int Ndf>
+void NodeToSurfaceContact3d<Ndf>::revertToStart() {
+  trial_ = committed_ = NodeToSurfaceState{};
+  forcesZero_ = false;
+  clearForces();
+}
+
+template <int Ndf>
+bool NodeToSurfaceContact3d<Ndf>::hasNonSymmetricTangent() const {
+  return friction_.active() || normal_.damping() > 0.0;
+}
+
+template <int Ndf>
+Status NodeToSurfaceContact3d<Ndf>::update(const elements::Kinematics& kin) {
+  NodeToSurfaceState t = committed_;
+  t.force.setZero();
+  t.dashpotPower = 0.0;
+  const bool hasVelocity = kin.v.size() == Base::kNumDof;
+
+  std::array<Eigen::Vector3d, 5> x;
+  for (int j = 0; j < 5; ++j) x[j] = X_[j] + kin.u.template segment<3>(j * Ndf);
+  for (const auto& p : x)
+    if (!p.allFinite()) return Status::NonFinite;
+  const std::array<Eigen::Vector3d, 4> quad{x[1], x[2], x[3], x[4]};
+
+  // Leaves the trial state open with zero force (accumulators still integrate the last step).
+  auto finishOpen = [&](double gap, bool projValid) {
+    t.status = ContactStatus::Open;
+    t.stickValid = false;
+    t.projValid = projValid;
+    t.gap = gap;
+    clearForces();
+  };
+  auto finishAccumulators = [&]() {
+    t.impulse = committed_.impulse + 0.5 * kin.dt * (committed_.force + t.force);
+    t.dampingEnergy =
+        committed_.dampingEnergy + 0.5 * kin.dt * (committed_.dashpotPower + t.dashpotPower);
+    trial_ = t;
+  };
+
+  // Search: one bounding-sphere distance when the pair is far.
+  double bound = 0.0;
+  if (search_.isFar(x[0], quad, bound)) {
+    finishOpen(bound, false);
+    finishAccumulators();
+    return Status::Ok;
+  }
+
+  // In-plane coordinates and heights, relative to the reference centroid (keeps them small).
+  std::array<Eigen::Vector2d, 5> s;
+  std::array<double, 5> z;
+  for (int j = 0; j < 5; ++j) {
+    const Eigen::Vector3d r = x[j] - origin_;
+    s[j] = Eigen::Vector2d(frame_.t1.dot(r), frame_.t2.dot(r));
+    z[j] = frame_.n.dot(r);
+  }
+  const std::array<Eigen::Vector2d, 4> sq{s[1], s[2], s[3], s[4]};
+  const auto xi = inverseBilinear(sq, s[0], 1e-12 * frame_.size);
+  if (!xi || !onQuad(*xi)) {  // off the quad (slid past an edge): no contact
+    finishOpen(z[0] - 0.25 * (z[1] + z[2] + z[3] + z[4]), false);
+    finishAccumulators();
+    return Status::Ok;
+  }
+  const auto Nd = shapeFunctions(xi->x(), xi->y());
+  const double gap = z[0] - (Nd[0] * z[1] + Nd[1] * z[2] + Nd[2] * z[3] + Nd[3] * z[4]);
+  t.projXi = *xi;
+  if (gap >= 0.0) {
+    finishOpen(gap, true);
+    t.projXi = *xi;
+    finishAccumulators();
+    return Status::Ok;
+  }
+
+  // --- contact: evaluate the forces with derivatives -------------------------------------
+  std::array<Vec3, 5> xa, va;
+  for (int j = 0; j < 5; ++j)
+    for (int d = 0; d < 3; ++d) {
+      xa[j][d] = AD(x[j](d) - origin_(d), 2 * kTrans, 3 * j + d);
+      const double vel = hasVelocity ? kin.v(j * Ndf + d) : 0.0;
+      va[j][d] = AD(vel, 2 * kTrans, kTrans + 3 * j + d);
+    }
+  std::array<std::array<AD, 2>, 5> sa;
+  std::array<AD, 5> za;
+  for (int j = 0; j < 5; ++j) {
+    sa[j] = {dot(frame_.t1, xa[j]), dot(frame_.t2, xa[j])};
+    za[j] = dot(frame_.n, xa[j]);
+  }
+  // Projection: one Newton step from the converged xi carries exact first derivatives,
+  // dxi = -J^-1 dr (implicit function theorem).
+  Eigen::Matrix2d J;
+  {
+    const auto dN = shapeDerivatives(xi->x(), xi->y());
+    J.setZero();
+    for (int i = 0; i < 4; ++i)
+      for (int a = 0; a < 2; ++a) J.col(a) += dN[a][i] * s[i + 1];
+  }
+  const Eigen::Matrix2d Jinv = J.inverse();
+  std::array<AD, 2> res;
+  for (int m = 0; m < 2; ++m) {
+    res[m] = -sa[0][m];
+    for (int i = 0; i < 4; ++i) res[m] += Nd[i] * sa[i + 1][m];
+  }
+  const AD xiA = xi->x() - (Jinv(0, 0) * res[0] + Jinv(0, 1) * res[1]);
+  const AD etaA = xi->y() - (Jinv(1, 0) * res[0] + Jinv(1, 1) * res[1]);
+  const std::array<AD, 4> N = shapeFunctions(xiA, etaA);
+  const auto dN = shapeDerivatives(xiA, etaA);
+
+  // Gap and the scaled surface normal m = n - w1 t1 - w2 t2, w = J^-T h (h = dz/dxi).
+  AD g = za[0];
+  for (int i = 0; i < 4; ++i) g -= N[i] * za[i + 1];
+  std::array<std::array<AD, 2>, 2> Ja;  // Ja[m][a] = d s_m / d xi_a
+  std::array<AD, 2> h;
+  for (int a = 0; a < 2; ++a) {
+    h[a] = AD(0.0);
+    for (int m = 0; m < 2; ++m) Ja[m][a] = AD(0.0);
+    for (int i = 0; i < 4; ++i) {
+      h[a] += dN[a][i] * za[i + 1];
+      for (int m = 0; m < 2; ++m) Ja[m][a] += dN[a][i] * sa[i + 1][m];
+    }
+  }
+  const AD det = Ja[0][0] * Ja[1][1] - Ja[0][1] * Ja[1][0];
+  const AD w0 = (Ja[1][1] * h[0] - Ja[1][0] * h[1]) / det;
+  const AD w1 = (-Ja[0][1] * h[0] + Ja[0][0] * h[1]) / det;
+  Vec3 m;
+  for (int d = 0; d < 3; ++d) m[d] = frame_.n(d) - w0 * frame_.t1(d) - w1 * frame_.t2(d);
+
+  // Relative velocity of k with respect to the target point p.
+  Vec3 vrel;
+  for (int d = 0; d < 3; ++d) {
+    vrel[d] = va[0][d];
+    for (int i = 0; i < 4; ++i) vrel[d] -= N[i] * va[i + 1][d];
+  }
+  const AD gdot = m[0] * vrel[0] + m[1] * vrel[1] + m[2] * vrel[2];  // = dg/dt exactly
+  const AD Nn = normal_.force(g, gdot);
+  t.gap = g.value();
+  // Dashpot power: (N - spring force) times the approach rate -gdot; when N is clipped this is
+  // the released spring energy, so the energy balance stays closed.
+  t.dashpotPower = (Nn.value() + normal_.stiffness() * g.value()) * (-gdot.value());
+  if (!(Nn.value() > 0.0)) {  // the contact would pull: no force (see NormalLaw)
+    finishOpen(g.value(), true);
+    t.projXi = *xi;
+    finishAccumulators();
+    return Status::Ok;
+  }
+
+  std::array<AD, 2> Ft{AD(0.0), AD(0.0)};
+  t.status = ContactStatus::Slide;  // frictionless contact slides freely
+  t.stickValid = false;
+  if (friction_.active()) {
+    const bool wasInContact = committed_.status != ContactStatus::Open && committed_.stickValid;
+    const Eigen::Vector2d xiS =
+        wasInContact ? committed_.stickXi : (committed_.projValid ? committed_.projXi : *xi);
+    const auto Ns = shapeFunctions(xiS.x(), xiS.y());
+    std::array<AD, 2> d, vt;
+    for (int a = 0; a < 2; ++a) {
+      d[a] = sa[0][a];
+      for (int i = 0; i < 4; ++i) d[a] -= Ns[i] * sa[i + 1][a];
+    }
+    vt[0] = dot(frame_.t1, vrel);
+    vt[1] = dot(frame_.t2, vrel);
+    const auto r = friction_.returnMap(d, Nn, vt, committed_.status == ContactStatus::Slide);
+    Ft = r.force;
+    t.status = r.sliding ? ContactStatus::Slide : ContactStatus::Stick;
+    const Eigen::Vector2d dTrial(d[0].value(), d[1].value());
+    if (r.sliding) {
+      // New stick point: the target point whose in-plane position is s_k - d_after.
+      const auto moved = inverseBilinear(sq, s[0] - r.elasticAfter, 1e-12 * frame_.size);
+      t.stickXi = moved ? *moved : *xi;
+      t.plasticSlip += dTrial - r.elasticAfter;
+      t.slipLength += r.plasticSlip;
+      t.frictionEnergy += Eigen::Vector2d(Ft[0].value(), Ft[1].value()).norm() * r.plasticSlip;
+    } else {
+      t.stickXi = xiS;
+      t.dashpotPower += friction_.damping() * (vt[0].value() * vt[0].value() +
+                                               vt[1].value() * vt[1].value());
+    }
+    t.stickValid = true;
+  }
+
+  // Force on the contactor R = N m + F1 t1 + F2 t2; internal forces f_k = -R, f_i = N_i R.
+  Vec3 R;
+  for (int d = 0; d < 3; ++d) R[d] = Nn * m[d] + Ft[0] * frame_.t1(d) + Ft[1] * frame_.t2(d);
+  this->f_.setZero();
+  this->k_.setZero();
+  this->c_.setZero();
+  forcesZero_ = false;
+  for (int j = 0; j < 5; ++j)
+    for (int d = 0; d < 3; ++d) {
+      const AD fjd = j == 0 ? AD(-R[d]) : AD(N[j - 1] * R[d]);
+      const int row = j * Ndf + d;
+      this->f_(row) = fjd.value();
+      for (int jj = 0; jj < 5; ++jj)
+        for (int dd = 0; dd < 3; ++dd) {
+          this->k_(row, jj * Ndf + dd) = fjd.derivatives()(3 * jj + dd);
+          this->c_(row, jj * Ndf + dd) = fjd.derivatives()(kTrans + 3 * jj + dd);
+        }
+    }
+  t.force = Eigen::Vector3d(Nn.value(), Ft[0].value(), Ft[1].value());
+  t.projXi = *xi;
+  t.projValid = true;
+  finishAccumulators();
+  return Status::Ok;
+}
+
+template <int Ndf>
+std::optional<Eigen::VectorXd> NodeToSurfaceContact3d<Ndf>::response(
+    std::span<const std::string> args) const {
+  if (args.size() != 1) return Base::response(args);
+  const std::string& name = args[0];
+  const NodeToSurfaceState& s = trial_;
+  if (name == "contactForce") return Eigen::VectorXd(s.force);
+  if (name == "gap") return Eigen::VectorXd::Constant(1, s.gap);
+  if (name == "status") return Eigen::VectorXd::Constant(1, static_cast<double>(s.status));
+  if (name == "slip") return Eigen::Vector3d(s.slipLength, s.plasticSlip(0), s.plasticSlip(1)).eval();
+  if (name == "dissipatedEnergy")
+    return Eigen::Vector3d(s.frictionEnergy + s.dampingEnergy, s.frictionEnergy, s.dampingEnergy)
+        .eval();
+  if (name == "impulse") return Eigen::VectorXd(s.impulse);
+  return Base::response(args);
+}
+
+template <int Ndf>
+std::string NodeToSurfaceContact3d<Ndf>::describe() const {
+  std::ostringstream out;
+  out << Base::describe() << " K " << params_.K << " e " << params_.e << " et " << params_.et
+      << " mu_s " << params_.muS << " mu_k " << params_.muK << " C " << normal_.damping()
+      << " Ct " << friction_.damping() << " search " << params_.search << " normal ("
+      << frame_.n.transpose() << ")";
+  return out.str();
+}
+
+template class NodeToSurfaceContact3d<3>;
+template class NodeToSurfaceContact3d<6>;
+
+}  // namespace dabs::contact

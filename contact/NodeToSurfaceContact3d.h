@@ -1,0 +1,135 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include <Eigen/Core>
+#include <array>
+#include <limits>
+
+#include "contact/ContactGeometry.h"
+#include "contact/ContactSearch.h"
+#include "contact/CoulombFriction.h"
+#include "contact/NormalLaw.h"
+#include "elements/FixedSizeElement.h"
+
+namespace dabs::contact {
+
+/// Contact status reported by the `status` response.
+enum class ContactStatus : int { Open = 0, Stick = 1, Slide = 2 };
+
+/// Parameters of a node-to-surface pair (Tcl: `element nodeToSurface tag k a b c d -K K ?-e e?
+/// ?-et et? ?-mu_s mus? ?-mu_k muk? ?-masses M1 M2? ?-search dist?`).
+struct NodeToSurfaceParams {
+  double K = 0.0;    ///< normal (and tangential) penalty stiffness, EA/L of the contactor body
+  double e = 1.0;    ///< normal restitution in [0, 1]
+  double et = 1.0;   ///< tangential restitution in [0, 1]
+  double muS = 0.0;  ///< static friction coefficient
+  double muK = 0.0;  ///< kinetic friction coefficient (<= muS)
+  double M1 = 0.0;   ///< masses of the two bodies, for the dashpots (needed when e < 1 or et < 1)
+  double M2 = 0.0;
+  double search = std::numeric_limits<double>::infinity();  ///< search distance (> 0)
+  /// Throws InputError{field, reason} (fields as in the Tcl command: K, e, et, mu_s, mu_k, M1, M2,
+  /// search).
+  void validate() const;
+};
+
+/// Everything that changes with the trial (one struct: commit and revert are one assignment).
+/// Local components are in the fixed surface frame (n, t1, t2) of ContactGeometry.h.
+struct NodeToSurfaceState {
+  ContactStatus status = ContactStatus::Open;
+  Eigen::Vector2d stickXi = Eigen::Vector2d::Zero();  ///< stick point, target parametric coords
+  bool stickValid = false;                            ///< stickXi holds a stick point
+  Eigen::Vector2d projXi = Eigen::Vector2d::Zero();   ///< projection of the contactor
+  bool projValid = false;                             ///< projXi computed and on the quad
+  double gap = std::numeric_limits<double>::infinity();  ///< g (> 0 open); beyond the search
+                                                          ///< distance: a lower bound of it
+  Eigen::Vector3d force = Eigen::Vector3d::Zero();    ///< contact force on the contactor: normal
+                                                      ///< N (compression > 0), tangential t1, t2
+  double dashpotPower = 0.0;                          ///< power dissipated by the dashpots (>= 0)
+  double frictionEnergy = 0.0;                        ///< accumulated friction work (>= 0)
+  double dampingEnergy = 0.0;                         ///< accumulated dashpot work (trapezoid rule)
+  Eigen::Vector2d plasticSlip = Eigen::Vector2d::Zero();  ///< accumulated slip vector (t1, t2)
+  double slipLength = 0.0;                            ///< accumulated slip path length
+  Eigen::Vector3d impulse = Eigen::Vector3d::Zero();  ///< time integral of `force` (trapezoid)
+};
+
+/// Point-to-surface contact with friction after Zhu, Abe and Fujino (2002, "Modelling
+/// three-dimensional non-linear seismic performance of elevated bridges with emphasis on pounding
+/// of girders", EESD 31:1891-1913): a contactor node k against a target quad a, b, c, d.
+///
+/// Model. While k penetrates the quad (gap g < 0, projection on the quad), the normal force is
+/// N = max(0, -K g - C gdot) (NormalLaw: penalty spring plus restitution dashpot, never pulling)
+/// and the tangential force follows CoulombFriction (spring Kt = K to a stick point kept in the
+/// state plus a tangential dashpot, the sum bounded by the static/kinetic cone). The force on k is
+/// R = N m + F1 t1 + F2 t2, where m = dg/dx_k = n - grad_s(z_surface) is the normal of the current
+/// surface scaled so that m.n = 1 (m = n for a face that stays parallel to its reference plane);
+/// the target nodes receive -N_i(p) R, the bilinear shape functions at the projection p (static
+/// equilibrium by linear interpolation at p). The frictionless, undamped part is the gradient of
+/// K g^2 / 2, so its tangent is symmetric.
+///
+/// Assumptions and conventions:
+/// - Small rotations of the target: the surface frame is fixed at the reference geometry
+///   (ContactGeometry.h) and projections are taken along n. Translations may be large; a
+///   contactor sliding past an edge of the quad leaves contact (zero force).
+/// - No tension: N is clipped at zero, so the effective restitution exceeds e
+///   (NormalLaw::effectiveRestitution).
+/// - A new contact places the stick point at the contactor's projection in the last committed
+///   state, so the first trial already has tangential stiffness.
+/// - Only translations carry contact forces (dofs 1-3 of each node); with ndf 6 the rotations get
+///   zero force and stiffness.
+/// - Beyond the search distance the update costs one bounding-sphere test and adds nothing.
+///
+/// The tangent is exact (forward-mode automatic differentiation of the force, including the moving
+/// load point and the return map); it is non-symmetric when friction or a dashpot is on.
+/// dampingTangent() holds d(force)/d(velocity) of the dashpots and of the velocity-dependent N.
+template <int Ndf>
+class NodeToSurfaceContact3d : public elements::FixedSizeElement<5, Ndf> {
+  static_assert(Ndf >= 3, "contact needs three translational dofs per node");
+  using Base = elements::FixedSizeElement<5, Ndf>;
+
+ public:
+  /// `params` must be validated. Node order: contactor, then a, b, c, d.
+  NodeToSurfaceContact3d(int tag, int contactor, const std::array<int, 4>& target,
+                         const NodeToSurfaceParams& params);
+
+  std::string_view typeName() const override { return "nodeToSurface"; }
+  /// Builds the surface frame; throws InputError for a degenerate quad or when the outward normal
+  /// (b - a) x (d - a) points away from the contactor's side.
+  void initialize(const elements::NodalCoordinates& x) override;
+  [[nodiscard]] Status update(const elements::Kinematics& trial) override;
+
+  bool hasNonSymmetricTangent() const override;
+  bool rayleighByDefault() const override { return false; }
+
+  void commitState() override { committed_ = trial_; }
+  void revertToLastCommit() override { trial_ = committed_; }
+  void revertToStart() override;
+
+  /// force | contactForce (N, t1, t2) | gap | status | slip (length, t1, t2) |
+  /// dissipatedEnergy (total, friction, dashpots) | impulse (N, t1, t2).
+  std::optional<Eigen::VectorXd> response(std::span<const std::string> args) const override;
+  std::string describe() const override;
+
+  const NodeToSurfaceState& trialState() const noexcept { return trial_; }
+  const NodeToSurfaceState& committedState() const noexcept { return committed_; }
+  const SurfaceFrame& frame() const noexcept { return frame_; }
+  const NodeToSurfaceParams& params() const noexcept { return params_; }
+
+ private:
+  void clearForces();
+
+  NodeToSurfaceParams params_;
+  NormalLaw normal_;
+  CoulombFriction friction_;
+  ContactSearch search_;
+  SurfaceFrame frame_;
+  std::array<Eigen::Vector3d, 5> X_{};  ///< reference coordinates (k, a, b, c, d)
+  Eigen::Vector3d origin_ = Eigen::Vector3d::Zero();  ///< reference centroid of the quad
+  bool forcesZero_ = true;
+  NodeToSurfaceState trial_{};
+  NodeToSurfaceState committed_{};
+};
+
+extern template class NodeToSurfaceContact3d<3>;
+extern template class NodeToSurfaceContact3d<6>;
+
+}  // namespace dabs::contact
