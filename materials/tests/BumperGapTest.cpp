@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "materials/InputError.h"
+#include "materials/tests/MaterialContract.h"
 
 namespace dabs::materials {
 namespace {
@@ -90,4 +91,22 @@ TEST(BumperGapTest, BadInputThrows) {
 }
 
 }  // namespace
+
+namespace testing {
+
+// The shared material contract (MaterialContract.h) on a cyclic path through the clearance in
+// both directions and well past yield.
+struct BumperContractCase {
+  static std::unique_ptr<UniaxialMaterial> make() {
+    return std::make_unique<BumperGap>(1, GapSpringParams{250.0, 0.02, 5.0, 0.05});
+  }
+  static std::vector<double> path() { return testing::cyclicPath(strainScale()); }
+  static double strainScale() { return 0.02 + 5.0 / 250.0; }
+  static constexpr bool kRateDependent = false;
+};
+using BumperContractCases = ::testing::Types<BumperContractCase>;
+INSTANTIATE_TYPED_TEST_SUITE_P(Bumper, MaterialContract, BumperContractCases);
+
+}  // namespace testing
+
 }  // namespace dabs::materials

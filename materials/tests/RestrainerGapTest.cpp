@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "materials/InputError.h"
+#include "materials/tests/MaterialContract.h"
 
 namespace dabs::materials {
 namespace {
@@ -130,4 +131,22 @@ TEST(RestrainerGapTest, ZeroGapEngagesAtFirstOpening) {
 }
 
 }  // namespace
+
+namespace testing {
+
+// The shared material contract (MaterialContract.h) on a cyclic path through the clearance in
+// both directions and well past yield.
+struct RestrainerContractCase {
+  static std::unique_ptr<UniaxialMaterial> make() {
+    return std::make_unique<RestrainerGap>(1, GapSpringParams{100.0, 0.05, 2.0, 0.1});
+  }
+  static std::vector<double> path() { return testing::cyclicPath(strainScale()); }
+  static double strainScale() { return 0.05 + 2.0 / 100.0; }
+  static constexpr bool kRateDependent = false;
+};
+using RestrainerContractCases = ::testing::Types<RestrainerContractCase>;
+INSTANTIATE_TYPED_TEST_SUITE_P(Restrainer, MaterialContract, RestrainerContractCases);
+
+}  // namespace testing
+
 }  // namespace dabs::materials
