@@ -1,0 +1,87 @@
+// SPDX-License-Identifier: MIT
+#include "elements/beam/DispBeamColumn.h"
+
+namespace dabs::elements {
+
+template <int Ndm>
+void DispBeamColumn<Ndm>::initialize(const NodalCoordinates& x) {
+  this->initializeGeometry(x);
+  const double length = this->transf_->initialLength();
+  bmat_.clear();
+  for (const auto& p : this->points_)
+    bmat_.push_back(deformationInterpolation<Super::kBasic>(p.section->type(), p.xi, length));
+  (void)formState(true);
+  this->k0_ = this->transf_->initialGlobalStiffness(kb_);
+  this->uTrial_.setZero();
+  this->uCommitted_.setZero();
+  (void)formState(false);
+}
+
+template <int Ndm>
+Status DispBeamColumn<Ndm>::formState(bool initial) {
+  const double length = this->transf_->initialLength();
+  if (!initial) this->transf_->update(this->uTrial_);
+  const Basic& v = this->transf_->basicDeformation();
+  Status status = Status::Ok;
+  this->q_.setZero();
+  kb_.setZero();
+  for (std::size_t i = 0; i < this->points_.size(); ++i) {
+    auto& sec = *this->points_[i].section;
+    const auto& b = bmat_[i];
+    const double wl = this->points_[i].weight * length;
+    if (initial) {
+      const SectionMatrix ks = sec.getInitialTangent();
+      kb_ += wl * b.transpose() * ks * b;
+      continue;
+    }
+    const SectionVector e = b * v;
+    const Status s = sec.setTrialDeformation(e);
+    if (!ok(s)) status = s;
+    const SectionVector sr = sec.getStressResultant();
+    const SectionMatrix ks = sec.getSectionTangent();
+    this->q_ += wl * b.transpose() * sr;
+    kb_ += wl * b.transpose() * ks * b;
+  }
+  if (!initial) {
+    this->f_ = this->transf_->globalForce(this->q_);
+    this->k_ = this->transf_->globalStiffness(kb_, this->q_);
+  }
+  return status;
+}
+
+template <int Ndm>
+Status DispBeamColumn<Ndm>::update(const Kinematics& trial) {
+  this->uTrial_ = trial.u;
+  const Status s = formState(false);
+  if (!ok(s)) return s;
+  return this->f_.allFinite() ? Status::Ok : Status::NonFinite;
+}
+
+template <int Ndm>
+void DispBeamColumn<Ndm>::commitState() {
+  this->transf_->commitState();
+  for (auto& p : this->points_) p.section->commitState();
+  this->uCommitted_ = this->uTrial_;
+}
+
+template <int Ndm>
+void DispBeamColumn<Ndm>::revertToLastCommit() {
+  this->transf_->revertToLastCommit();
+  for (auto& p : this->points_) p.section->revertToLastCommit();
+  this->uTrial_ = this->uCommitted_;
+  (void)formState(false);
+}
+
+template <int Ndm>
+void DispBeamColumn<Ndm>::revertToStart() {
+  this->transf_->revertToStart();
+  for (auto& p : this->points_) p.section->revertToStart();
+  this->uTrial_.setZero();
+  this->uCommitted_.setZero();
+  (void)formState(false);
+}
+
+template class DispBeamColumn<2>;
+template class DispBeamColumn<3>;
+
+}  // namespace dabs::elements

@@ -1,0 +1,38 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include "elements/beam/SectionBeamColumn.h"
+
+namespace dabs::elements {
+
+/// Displacement-based beam-column (`element dispBeamColumn`): section deformations interpolated
+/// from the basic deformations (linear axial strain and curvature, Hermitian cubic transverse
+/// displacement), q = sum w L B^T s and kb = sum w L B^T ks B over the integration points (the
+/// formulation of OpenSees/OpenSees:SRC/element/dispBeamColumn/DispBeamColumn3d.cpp). Needs
+/// several elements per member when the curvature is not linear.
+template <int Ndm>
+class DispBeamColumn final : public SectionBeamColumn<Ndm> {
+ public:
+  using Super = SectionBeamColumn<Ndm>;
+  using typename Super::Basic;
+  using typename Super::BasicMatrix;
+  using typename Super::Vector;
+  using Super::Super;
+
+  std::string_view typeName() const override { return "dispBeamColumn"; }
+  void initialize(const NodalCoordinates& x) override;
+  [[nodiscard]] Status update(const Kinematics& trial) override;
+  void commitState() override;
+  void revertToLastCommit() override;
+  void revertToStart() override;
+
+ private:
+  Status formState(bool initial);
+  std::vector<SectionBasicMatrix<Super::kBasic>> bmat_;
+  BasicMatrix kb_ = BasicMatrix::Zero();
+};
+
+using DispBeamColumn2d = DispBeamColumn<2>;
+using DispBeamColumn3d = DispBeamColumn<3>;
+
+}  // namespace dabs::elements

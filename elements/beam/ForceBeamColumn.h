@@ -1,0 +1,71 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include <array>
+
+#include "elements/beam/SectionBeamColumn.h"
+
+namespace dabs::elements {
+
+/// Force-based (flexibility) beam-column (`element forceBeamColumn`): section forces are exact
+/// equilibrium interpolations s = b(x) q of the basic forces, so one element reproduces any
+/// linear-moment member (Spacone, Filippou & Taucer 1996, Earthquake Eng. Struct. Dyn. 25(7);
+/// OpenSees/OpenSees:SRC/element/forceBeamColumn/ForceBeamColumn3d.cpp). Element state
+/// determination iterates on q until the compatible section deformations integrate to the trial
+/// basic deformations (Neuenhofer & Filippou 1997, J. Struct. Eng. 123(7), the "iterative"
+/// scheme), starting from the committed state; if maxIter iterations do not converge, the
+/// increment is split into 4 and then 16 sub-increments; if those fail too, update() returns
+/// Status::NotConverged (never loops forever).
+template <int Ndm>
+class ForceBeamColumn final : public SectionBeamColumn<Ndm> {
+ public:
+  using Super = SectionBeamColumn<Ndm>;
+  using typename Super::Basic;
+  using typename Super::BasicMatrix;
+  using typename Super::Vector;
+  static constexpr int kBasic = Super::kBasic;
+
+  /// maxIter >= 1 and tol > 0 (OpenSees defaults 10 and 1e-12); tol is compared with the
+  /// energy norm |dv . dq| of the last correction, relative to max(1, |v . q|).
+  ForceBeamColumn(int tag, int nodeI, int nodeJ, std::vector<BeamIntegrationPoint> points,
+                  std::unique_ptr<typename Super::Transf> transf, double massPerLength,
+                  int maxIter = 10, double tol = 1e-12)
+      : Super(tag, nodeI, nodeJ, std::move(points), std::move(transf), massPerLength),
+        maxIter_(maxIter), tol_(tol) {}
+
+  std::string_view typeName() const override { return "forceBeamColumn"; }
+  void initialize(const NodalCoordinates& x) override;
+  [[nodiscard]] Status update(const Kinematics& trial) override;
+  void commitState() override;
+  void revertToLastCommit() override;
+  void revertToStart() override;
+  /// Adds plasticDeformation (v - fe q with the initial section flexibilities) to the common
+  /// responses.
+  std::optional<Eigen::VectorXd> response(std::span<const std::string> args) const override;
+
+ private:
+  static constexpr int kMaxPoints = 20;
+  /// Element state that the iterations change: basic forces, flexibility, section deformations,
+  /// resisting forces and flexibilities at every point.
+  struct State {
+    Basic q = Basic::Zero();
+    Basic v = Basic::Zero();
+    BasicMatrix kb = BasicMatrix::Zero();
+    std::array<SectionVector, kMaxPoints> e, sr;
+    std::array<SectionMatrix, kMaxPoints> fs;
+  };
+  Status iterate(State& s, const Basic& target) const;
+  Status solve(const Basic& target);
+  void finish();
+
+  int maxIter_;
+  double tol_;
+  std::vector<SectionBasicMatrix<kBasic>> bmat_;
+  BasicMatrix fe_ = BasicMatrix::Zero();  ///< initial (elastic) flexibility
+  State trial_, committed_, work_;
+};
+
+using ForceBeamColumn2d = ForceBeamColumn<2>;
+using ForceBeamColumn3d = ForceBeamColumn<3>;
+
+}  // namespace dabs::elements

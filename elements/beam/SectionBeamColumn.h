@@ -1,0 +1,103 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "elements/FixedSizeElement.h"
+#include "elements/beam/BeamColumnTraits.h"
+
+namespace dabs::elements {
+
+/// One integration point of a section-based beam-column.
+struct BeamIntegrationPoint {
+  std::unique_ptr<materials::section::SectionForceDeformation> section;
+  double xi = 0.0;      ///< location in [0, 1]
+  double weight = 0.0;  ///< weight (sum 1)
+};
+
+/// Common part of forceBeamColumn and dispBeamColumn: transformation, integration points,
+/// lumped mass and the responses that do not depend on the formulation.
+template <int Ndm>
+class SectionBeamColumn : public FixedSizeElement<2, BeamColumnTraits<Ndm>::kDofPerNode> {
+ public:
+  using Traits = BeamColumnTraits<Ndm>;
+  using Transf = typename Traits::Transf;
+  using Basic = typename Transf::Basic;
+  using BasicMatrix = typename Transf::BasicMatrix;
+  using Base = FixedSizeElement<2, Traits::kDofPerNode>;
+  using typename Base::Vector;
+  using typename Base::Matrix;
+  static constexpr int kBasic = Traits::kBasic;
+
+  /// `points` hold section clones with their locations and weights; `massPerLength` >= 0.
+  SectionBeamColumn(int tag, int nodeI, int nodeJ, std::vector<BeamIntegrationPoint> points,
+                    std::unique_ptr<Transf> transf, double massPerLength)
+      : Base(tag, {nodeI, nodeJ}), points_(std::move(points)), transf_(std::move(transf)),
+        massPerLength_(massPerLength) {}
+
+  /// Basic forces at the last update.
+  const Basic& basicForce() const noexcept { return q_; }
+  const Transf& transformation() const noexcept { return *transf_; }
+  int numSections() const noexcept { return static_cast<int>(points_.size()); }
+  const materials::section::SectionForceDeformation& section(int i) const {
+    return *points_[i].section;
+  }
+
+  /// globalForce, localForce, basicForce, basicDeformation, integrationPoints, and
+  /// `section i ...` (1-based i) forwarded to the section.
+  std::optional<Eigen::VectorXd> response(std::span<const std::string> args) const override {
+    if (args.empty()) return std::nullopt;
+    const std::string& name = args[0];
+    if (name == "force" || name == "forces" || name == "globalForce" || name == "globalForces")
+      return Eigen::VectorXd(this->f_);
+    if (name == "localForce" || name == "localForces")
+      return Eigen::VectorXd(transf_->localForce(q_));
+    if (name == "basicForce" || name == "basicForces") return Eigen::VectorXd(q_);
+    if (name == "basicDeformation" || name == "basicDeformations" || name == "deformations")
+      return Eigen::VectorXd(transf_->basicDeformation());
+    if (name == "integrationPoints") {
+      Eigen::VectorXd x(numSections());
+      for (int i = 0; i < numSections(); ++i) x(i) = points_[i].xi * transf_->initialLength();
+      return x;
+    }
+    if (name == "integrationWeights") {
+      Eigen::VectorXd w(numSections());
+      for (int i = 0; i < numSections(); ++i) w(i) = points_[i].weight * transf_->initialLength();
+      return w;
+    }
+    if (name == "section" && args.size() >= 3) {
+      int i = 0;
+      try {
+        i = std::stoi(args[1]);
+      } catch (...) {
+        return std::nullopt;
+      }
+      if (i < 1 || i > numSections()) return std::nullopt;
+      return points_[i - 1].section->response(args.subspan(2));
+    }
+    return std::nullopt;
+  }
+
+ protected:
+  /// Sets the transformation, lumped mass and point data; throws InputError for bad geometry.
+  void initializeGeometry(const NodalCoordinates& x) {
+    if (x.size() != 2) throw InputError("element", "needs 2 nodes");
+    transf_->initialize(x[0], x[1]);
+    this->m_.setZero();
+    const double half = 0.5 * massPerLength_ * transf_->initialLength();
+    for (int n = 0; n < 2; ++n)
+      for (int d = 0; d < Ndm; ++d)
+        this->m_(n * Traits::kDofPerNode + d, n * Traits::kDofPerNode + d) = half;
+  }
+
+  std::vector<BeamIntegrationPoint> points_;
+  std::unique_ptr<Transf> transf_;
+  double massPerLength_ = 0.0;
+  Basic q_ = Basic::Zero();
+  Vector uTrial_ = Vector::Zero();
+  Vector uCommitted_ = Vector::Zero();
+};
+
+}  // namespace dabs::elements

@@ -1,0 +1,70 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include <Eigen/Core>
+#include <memory>
+#include <vector>
+
+#include "materials/UniaxialMaterial.h"
+#include "materials/section/SectionForceDeformation.h"
+
+namespace dabs::materials::section {
+
+/// Fiber section (`section Fiber tag ?-GJ GJ? {...}`): plane sections remain plane, each fiber a
+/// uniaxial material at (y, z) with area A (OpenSees/OpenSees:SRC/material/section/
+/// FiberSection2d.cpp and FiberSection3d.cpp).
+///  - 2D: resultants [P, Mz], deformations [eps, kz], fiber strain eps - y kz.
+///  - 3D: resultants [P, Mz, My, T], deformations [eps, kz, ky, twist], fiber strain
+///    eps - y kz + z ky, and an uncoupled linear torsion T = GJ twist.
+/// Fiber data are stored contiguously (y, z, area arrays); the section owns its materials' clones.
+template <int Ndm>
+class FiberSection final : public SectionForceDeformation {
+ public:
+  static constexpr int kOrder = Ndm == 2 ? 2 : 4;
+  struct Fiber {
+    double y = 0.0, z = 0.0, area = 0.0;
+    const UniaxialMaterial* material = nullptr;  ///< prototype, cloned by the constructor
+  };
+
+  /// `torsionStiffness` (GJ) is used in 3D only. Throws InputError when there are no fibers or a
+  /// fiber has a nonpositive area.
+  FiberSection(int tag, const std::vector<Fiber>& fibers, double torsionStiffness = 0.0);
+  FiberSection(const FiberSection& other);
+
+  int order() const override { return kOrder; }
+  std::span<const SectionCode> type() const override;
+  [[nodiscard]] Status setTrialDeformation(const Eigen::Ref<const Eigen::VectorXd>& e) override;
+  Eigen::Ref<const Eigen::VectorXd> getDeformation() const override { return e_; }
+  Eigen::Ref<const Eigen::VectorXd> getStressResultant() const override { return s_; }
+  Eigen::Ref<const Eigen::MatrixXd> getSectionTangent() const override { return k_; }
+  Eigen::Ref<const Eigen::MatrixXd> getInitialTangent() const override { return k0_; }
+  void commitState() override;
+  void revertToLastCommit() override;
+  void revertToStart() override;
+  std::unique_ptr<SectionForceDeformation> clone() const override {
+    return std::make_unique<FiberSection>(*this);
+  }
+  /// {"force"}, {"deformation"}, {"fiber", y, z, ?matTag?, "stressStrain"} (nearest fiber,
+  /// optionally among those of material matTag: [stress, strain]).
+  std::optional<Eigen::VectorXd> response(std::span<const std::string> args) const override;
+
+  int numFibers() const noexcept { return static_cast<int>(area_.size()); }
+  double fiberY(int i) const { return y_[i]; }
+  double fiberZ(int i) const { return z_[i]; }
+  double fiberArea(int i) const { return area_[i]; }
+  const UniaxialMaterial& fiberMaterial(int i) const { return *mats_[i]; }
+
+ private:
+  void sumFibers(bool initial);  // s_, k_ (or k0_) from the fibers' trial state
+
+  std::vector<double> y_, z_, area_;
+  std::vector<std::unique_ptr<UniaxialMaterial>> mats_;
+  double gj_ = 0.0;
+  Eigen::VectorXd e_, eCommitted_, s_;
+  Eigen::MatrixXd k_, k0_;
+};
+
+using FiberSection2d = FiberSection<2>;
+using FiberSection3d = FiberSection<3>;
+
+}  // namespace dabs::materials::section
