@@ -1,9 +1,112 @@
 // SPDX-License-Identifier: MIT
+// Tcl parsers for the bi-axial rubber bearing (issue 4): the new command family `biaxialMaterial`
+// (no OpenSees counterpart; OpenSees' bearings take uniaxial materials per direction and cannot
+// couple the two shear directions) and `element yoshidaBearing`.
+#include <array>
+#include <string>
+
+#include "elements/link/YoshidaBearing3d.h"
+#include "materials/InputError.h"
+#include "materials/bearing/YoshidaBearingMaterial.h"
 #include "tcl/commands/Registry.h"
 
 namespace dabs::tcl {
 
-std::span<const CommandEntry> bearingCommands() { return {}; }
-std::span<const ElementEntry> bearingElementParsers() { return {}; }
+namespace {
+
+constexpr const char* kBiaxialUsage = "biaxialMaterial type tag ...";
+constexpr const char* kYoshidaUsage =
+    "biaxialMaterial Yoshida tag Y0 U0 n alpha0 beta q gamma ?-maxwell k eta?";
+constexpr const char* kBearingUsage =
+    "element yoshidaBearing tag iNode jNode matTag -Tr Tr -Kv Kv ?-Kt Kt? ?-Kr Kr? "
+    "?-orient x1 x2 x3 y1 y2 y3? ?-mass m? ?-limits design failure? ?-afterFailure keep|release?";
+
+// biaxialMaterial Yoshida tag Y0 U0 n alpha0 beta q gamma ?-maxwell k eta?
+std::unique_ptr<materials::BiaxialMaterial> parseYoshida(ArgReader& args, int tag) {
+  materials::YoshidaBearingMaterial::Params p;
+  p.Y0 = args.real("Y0");
+  p.U0 = args.real("U0");
+  p.n = args.real("n");
+  p.alpha0 = args.real("alpha0");
+  p.beta = args.real("beta");
+  p.q = args.real("q");
+  p.gamma = args.real("gamma");
+  if (auto maxwell = args.optionReals("-maxwell", 2)) {
+    p.k = (*maxwell)[0];
+    p.eta = (*maxwell)[1];
+  }
+  args.finish();
+  p.validate();
+  return std::make_unique<materials::YoshidaBearingMaterial>(tag, p);
+}
+
+// biaxialMaterial type tag ...: dispatch on the type word, as `uniaxialMaterial` does.
+void biaxialMaterialCommand(Runtime& rt, ArgReader& args) {
+  rt.requireModel("biaxialMaterial");
+  args.setUsage(kBiaxialUsage);
+  const std::string type = args.word("type");
+  if (type != "Yoshida")
+    args.fail(args.lastPosition(), "type", "unknown biaxialMaterial \"" + type + "\" (expected Yoshida)");
+  args.setUsage(kYoshidaUsage);
+  args.setContext("biaxialMaterial " + type);
+  const int tag = readNewTag(args, rt.builder.biaxial, "biaxialMaterial");
+  auto material = parseYoshida(args, tag);
+  rt.builder.biaxial[tag] = std::move(material);
+  Tcl_SetObjResult(rt.interp, Tcl_NewIntObj(tag));
+}
+
+// element yoshidaBearing tag iNode jNode matTag -Tr Tr -Kv Kv ?-Kt Kt? ?-Kr Kr?
+//   ?-orient x1 x2 x3 y1 y2 y3? ?-mass m? ?-limits design failure? ?-afterFailure keep|release?
+std::unique_ptr<elements::Element> parseYoshidaBearing(Runtime& rt, ArgReader& args, int tag) {
+  using elements::YoshidaBearing3d;
+  if (rt.builder.ndm != 3) args.fail("needs a 3D model with 6 dofs per node (model basic -ndm 3 -ndf 6)");
+  const int iNode = args.integer("iNode");
+  const int jNode = args.integer("jNode");
+  const int matTag = args.integer("matTag");
+  YoshidaBearing3d::Params p;
+  const auto tr = args.optionalOption("-Tr");
+  const auto kv = args.optionalOption("-Kv");
+  p.Kt = args.option("-Kt", 0.0);
+  p.Kr = args.option("-Kr", 0.0);
+  if (auto orient = args.optionReals("-orient", 6)) {
+    const auto& v = *orient;
+    p.orientX = Eigen::Vector3d(v[0], v[1], v[2]);
+    p.orientY = Eigen::Vector3d(v[3], v[4], v[5]);
+  }
+  p.mass = args.option("-mass", 0.0);
+  if (auto limits = args.optionReals("-limits", 2)) {
+    p.designLimit = (*limits)[0];
+    p.failureLimit = (*limits)[1];
+  }
+  if (auto after = args.optionalWordOption("-afterFailure")) {
+    if (*after == "keep")
+      p.afterFailure = YoshidaBearing3d::AfterFailure::Keep;
+    else if (*after == "release")
+      p.afterFailure = YoshidaBearing3d::AfterFailure::Release;
+    else
+      args.fail("-afterFailure expects keep or release, got \"" + *after + "\"");
+  }
+  args.finish();
+  if (!tr) args.fail("-Tr (total rubber thickness) is required");
+  if (!kv) args.fail("-Kv (axial stiffness) is required");
+  p.Tr = *tr;
+  p.Kv = *kv;
+  p.validate();
+  const materials::BiaxialMaterial& material = rt.builder.biaxialMaterial(matTag);
+  return std::make_unique<YoshidaBearing3d>(tag, iNode, jNode, material, p);
+}
+
+constexpr std::array kBearingCommands{
+    CommandEntry{"biaxialMaterial", kYoshidaUsage, biaxialMaterialCommand},
+};
+
+constexpr std::array kBearingElements{
+    ElementEntry{"yoshidaBearing", kBearingUsage, parseYoshidaBearing},
+};
+
+}  // namespace
+
+std::span<const CommandEntry> bearingCommands() { return kBearingCommands; }
+std::span<const ElementEntry> bearingElementParsers() { return kBearingElements; }
 
 }  // namespace dabs::tcl

@@ -1,0 +1,201 @@
+// SPDX-License-Identifier: MIT
+#include "elements/link/YoshidaBearing3d.h"
+
+#include <Eigen/Geometry>
+#include <cassert>
+#include <cmath>
+#include <sstream>
+
+namespace dabs::elements {
+
+namespace {
+
+constexpr double kCoincident = 1e-12;  // node distance (relative) below which nodes coincide
+constexpr double kParallel = 1e-8;     // |a x b| / (|a||b|) below which vectors are parallel
+constexpr double kLimitRounding = 1e-12;  // a strain within this relative distance counts as at the limit
+
+void requireFinite(double v, const char* field) {
+  if (!std::isfinite(v)) throw InputError(field, "must be a finite number");
+}
+
+bool reached(double strain, double limit) { return strain >= limit * (1.0 - kLimitRounding); }
+
+}  // namespace
+
+void YoshidaBearing3d::Params::validate() const {
+  requireFinite(Tr, "Tr");
+  requireFinite(Kv, "Kv");
+  requireFinite(Kt, "Kt");
+  requireFinite(Kr, "Kr");
+  requireFinite(mass, "mass");
+  requireFinite(designLimit, "design");
+  requireFinite(failureLimit, "failure");
+  if (Tr <= 0.0) throw InputError("Tr", "must be positive");
+  if (Kv <= 0.0) throw InputError("Kv", "must be positive");
+  if (Kt < 0.0) throw InputError("Kt", "must not be negative");
+  if (Kr < 0.0) throw InputError("Kr", "must not be negative");
+  if (mass < 0.0) throw InputError("mass", "must not be negative");
+  if (designLimit <= 0.0) throw InputError("design", "must be positive");
+  if (failureLimit < designLimit) throw InputError("failure", "must not be below the design limit");
+  if (orientX.has_value() != orientY.has_value())
+    throw InputError("orient", "needs both the x and the y vector");
+  if (orientX) {
+    if (!orientX->allFinite() || !orientY->allFinite())
+      throw InputError("orient", "vectors must be finite");
+    const double nx = orientX->norm(), ny = orientY->norm();
+    if (nx == 0.0) throw InputError("orient", "x vector must not be zero");
+    if (ny == 0.0) throw InputError("orient", "y vector must not be zero");
+    if (orientX->cross(*orientY).norm() <= kParallel * nx * ny)
+      throw InputError("orient", "y vector must not be parallel to the x vector");
+  }
+}
+
+YoshidaBearing3d::YoshidaBearing3d(int tag, int iNode, int jNode,
+                                   const materials::BiaxialMaterial& material, const Params& p)
+    : FixedSizeElement(tag, {iNode, jNode}), material_(material.clone()), p_(p) {
+  assert(p.Tr > 0.0 && p.Kv > 0.0);
+  for (int node = 0; node < 2; ++node)
+    for (int d = 0; d < 3; ++d) m_(6 * node + d, 6 * node + d) = 0.5 * p.mass;
+}
+
+void YoshidaBearing3d::initialize(const NodalCoordinates& x) {
+  if (x.size() != 2) throw InputError("nodes", "a yoshidaBearing needs 2 nodes");
+  const Eigen::Vector3d axis = x[1] - x[0];
+  const double scale = std::max({1.0, x[0].norm(), x[1].norm()});
+  length_ = axis.norm();
+  Eigen::Vector3d ex;
+  if (length_ > kCoincident * scale) {
+    ex = axis / length_;
+    if (p_.orientX && ex.cross(*p_.orientX).norm() + std::max(0.0, -ex.dot(*p_.orientX)) >
+                          kParallel * p_.orientX->norm())
+      throw InputError("orient", "x vector must point from iNode to jNode for nodes apart");
+  } else {
+    length_ = 0.0;
+    ex = p_.orientX ? Eigen::Vector3d(p_.orientX->normalized()) : Eigen::Vector3d::UnitZ();
+  }
+  Eigen::Vector3d y = p_.orientY ? *p_.orientY : Eigen::Vector3d::UnitX();
+  if (!p_.orientY && ex.cross(y).norm() <= kParallel) y = Eigen::Vector3d::UnitY();
+  y -= y.dot(ex) * ex;
+  if (y.norm() <= kParallel * (p_.orientY ? p_.orientY->norm() : 1.0))
+    throw InputError("orient", "y vector must not be parallel to the bearing axis");
+  const Eigen::Vector3d ey = y.normalized();
+  const Eigen::Vector3d ez = ex.cross(ey);
+  axes_.row(0) = ex.transpose();
+  axes_.row(1) = ey.transpose();
+  axes_.row(2) = ez.transpose();
+
+  // Local compatibility matrix (see the class comment), local dofs [u_i th_i u_j th_j].
+  Eigen::Matrix<double, 6, kNumDof> bl = Eigen::Matrix<double, 6, kNumDof>::Zero();
+  const double h = 0.5 * length_;
+  bl(0, 0) = -1.0, bl(0, 6) = 1.0;
+  bl(1, 1) = -1.0, bl(1, 7) = 1.0, bl(1, 5) = -h, bl(1, 11) = -h;
+  bl(2, 2) = -1.0, bl(2, 8) = 1.0, bl(2, 4) = h, bl(2, 10) = h;
+  bl(3, 3) = -1.0, bl(3, 9) = 1.0;
+  bl(4, 4) = -1.0, bl(4, 10) = 1.0;
+  bl(5, 5) = -1.0, bl(5, 11) = 1.0;
+  for (int blk = 0; blk < 4; ++blk) b_.middleCols<3>(3 * blk) = bl.middleCols<3>(3 * blk) * axes_;
+
+  revertToStart();
+  k0_ = k_;
+}
+
+Status YoshidaBearing3d::update(const Kinematics& trial) {
+  if (!trial.u.allFinite()) return Status::NonFinite;
+  State& t = trial_;
+  t = committed_;
+  t.deformation.noalias() = b_ * trial.u;
+  Eigen::Vector2d rate = Eigen::Vector2d::Zero();
+  if (trial.v.size() == kNumDof) rate = (b_.middleRows<2>(1) * trial.v);
+  const Eigen::Vector2d u = t.deformation.segment<2>(1);
+
+  BasicMatrix kb = BasicMatrix::Zero();
+  kb(0, 0) = p_.Kv;
+  kb(3, 3) = p_.Kt;
+  kb(4, 4) = p_.Kr;
+  kb(5, 5) = p_.Kr;
+  Basic q = kb * t.deformation;
+  if (!released()) {
+    const Status s = material_->setTrialStrain(u, rate, trial.dt);
+    if (!ok(s)) return s;
+    q.segment<2>(1) = material_->getStress();
+    kb.block<2, 2>(1, 1) = material_->getTangent();
+  }
+  t.basicForce = q;
+
+  // Damage by shear strain in any direction of the shear plane.
+  t.shearStrain = u.norm() / p_.Tr;
+  t.maxShearStrain = std::max(committed_.maxShearStrain, t.shearStrain);
+  if (!committed_.failed && reached(t.shearStrain, p_.failureLimit)) {
+    t.failed = true;
+    t.failureTime = trial.time;
+  }
+  assemble(q, kb);
+  return Status::Ok;
+}
+
+void YoshidaBearing3d::assemble(const Basic& q, const BasicMatrix& kb) {
+  f_.noalias() = b_.transpose() * q;
+  k_.noalias() = b_.transpose() * kb * b_;
+}
+
+void YoshidaBearing3d::commitState() {
+  material_->commitState();
+  committed_ = trial_;
+}
+
+void YoshidaBearing3d::revertToLastCommit() {
+  material_->revertToLastCommit();
+  trial_ = committed_;
+}
+
+void YoshidaBearing3d::revertToStart() {
+  material_->revertToStart();
+  trial_ = committed_ = State{};
+  BasicMatrix kb = BasicMatrix::Zero();
+  kb(0, 0) = p_.Kv;
+  kb(3, 3) = p_.Kt;
+  kb(4, 4) = p_.Kr;
+  kb(5, 5) = p_.Kr;
+  kb.block<2, 2>(1, 1) = material_->getInitialTangent();
+  assemble(Basic::Zero(), kb);
+}
+
+int YoshidaBearing3d::damage() const noexcept {
+  if (trial_.failed) return 2;
+  return reached(trial_.maxShearStrain, p_.designLimit) ? 1 : 0;
+}
+
+std::optional<Eigen::VectorXd> YoshidaBearing3d::response(std::span<const std::string> args) const {
+  if (args.size() != 1) return std::nullopt;
+  const std::string& name = args[0];
+  auto scalar = [](double v) { return Eigen::VectorXd::Constant(1, v); };
+  if (name == "force" || name == "forces" || name == "globalForce" || name == "globalForces")
+    return Eigen::VectorXd(f_);
+  if (name == "localForce" || name == "localForces") {
+    Eigen::VectorXd fl(kNumDof);
+    for (int blk = 0; blk < 4; ++blk) fl.segment<3>(3 * blk) = axes_ * f_.segment<3>(3 * blk);
+    return fl;
+  }
+  if (name == "basicForce" || name == "basicForces") return Eigen::VectorXd(trial_.basicForce);
+  if (name == "deformation" || name == "deformations" || name == "basicDeformation")
+    return Eigen::VectorXd(trial_.deformation);
+  if (name == "shearStrain") return scalar(trial_.shearStrain);
+  if (name == "maxShearStrain") return scalar(trial_.maxShearStrain);
+  if (name == "damage") return scalar(damage());
+  if (name == "failureTime") return scalar(trial_.failureTime);
+  if (name == "hystereticForce" || name == "viscousForce" || name == "backForce" ||
+      name == "dissipatedEnergy")
+    return material_->response(name);
+  return std::nullopt;
+}
+
+std::string YoshidaBearing3d::describe() const {
+  std::ostringstream out;
+  out << Element::describe() << " material " << material_->tag() << " Tr " << p_.Tr << " Kv "
+      << p_.Kv << " Kt " << p_.Kt << " Kr " << p_.Kr << " mass " << p_.mass << " limits "
+      << p_.designLimit << " " << p_.failureLimit << " afterFailure "
+      << (p_.afterFailure == AfterFailure::Keep ? "keep" : "release") << " damage " << damage();
+  return out.str();
+}
+
+}  // namespace dabs::elements
