@@ -35,6 +35,9 @@ struct Runtime {
   std::unique_ptr<materials::UniaxialMaterial> testMaterial;
   /// Set while a `section Fiber` body runs (an RAII guard clears it); null otherwise.
   FiberSectionUnderConstruction* currentFiberSection = nullptr;
+  /// Pattern that `load`, `sp`, `groundMotion` and `imposedMotion` add to (the last one defined,
+  /// as in OpenSees); -1 when none.
+  int currentPattern = -1;
   /// Bindings handed to Tcl as ClientData, owned here.
   std::vector<std::unique_ptr<struct CommandBinding>> bindings;
 

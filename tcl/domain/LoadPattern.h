@@ -101,8 +101,8 @@ class GroundMotion {
   std::shared_ptr<const TimeSeries> accel_, vel_, disp_;
   double fact_;
   double step_ = 0.0;                 // sampling interval of the integrated histories
-  std::vector<double> velSamples_;    // integrated velocity at k*step_ (when no vel series)
-  std::vector<double> dispSamples_;   // integrated displacement at k*step_ (when no disp series)
+  mutable std::vector<double> velSamples_;   // integrated velocity at k*step_ (no vel series)
+  mutable std::vector<double> dispSamples_;  // integrated displacement at k*step_ (no disp series)
 };
 
 /// `pattern MultipleSupport`: each support dof follows its own ground motion (imposedMotion).

@@ -1,0 +1,112 @@
+// SPDX-License-Identifier: MIT
+#include "elements/link/Truss.h"
+
+#include <string>
+
+#include "materials/InputError.h"
+
+namespace dabs::elements {
+
+void Truss::Params::validate() const {
+  if (nodes.size() != 2) throw InputError("nodes", "needs two nodes");
+  if (!(area > 0.0)) throw InputError("A", "must be positive");
+  if (rho < 0.0) throw InputError("-rho", "must not be negative");
+  if (ndm < 1 || ndm > 3) throw InputError("ndm", "must be 1, 2 or 3");
+  if (ndf < ndm) throw InputError("nodes", "need at least " + std::to_string(ndm) + " dofs for a truss in " +
+                                               std::to_string(ndm) + "D");
+}
+
+Truss::Truss(int tag, Params params, std::unique_ptr<materials::UniaxialMaterial> material)
+    : Element(tag), params_(std::move(params)), material_(std::move(material)) {
+  const int n = numDof();
+  b_ = f_ = Eigen::VectorXd::Zero(n);
+  k_ = k0_ = kc_ = c_ = m_ = Eigen::MatrixXd::Zero(n, n);
+}
+
+void Truss::initialize(const NodalCoordinates& x) {
+  const Eigen::Vector3d d = x[1] - x[0];
+  length_ = d.norm();
+  if (length_ == 0.0) throw InputError("nodes", "coincide: a truss needs a length");
+  const Eigen::Vector3d c = d / length_;
+  const int ndf = params_.ndf;
+  b_.setZero();
+  for (int i = 0; i < params_.ndm; ++i) {
+    b_(i) = -c(i) / length_;
+    b_(ndf + i) = c(i) / length_;
+  }
+  const double totalMass = params_.rho * length_;
+  m_.setZero();
+  for (int i = 0; i < params_.ndm; ++i) {
+    if (params_.consistentMass) {
+      m_(i, i) = m_(ndf + i, ndf + i) = totalMass / 3.0;
+      m_(i, ndf + i) = m_(ndf + i, i) = totalMass / 6.0;
+    } else {
+      m_(i, i) = m_(ndf + i, ndf + i) = totalMass / 2.0;
+    }
+  }
+  const double ea = params_.area * length_;  // K = A L E b b^T since b carries 1/L
+  k0_ = (ea * material_->getInitialTangent()) * b_ * b_.transpose();
+  assemble();
+  kc_ = k_;
+}
+
+void Truss::assemble() {
+  const double al = params_.area * length_;
+  f_ = (al * material_->getStress()) * b_;
+  k_ = (al * material_->getTangent()) * b_ * b_.transpose();
+  c_ = (al * material_->getDampTangent()) * b_ * b_.transpose();
+}
+
+Status Truss::update(const Kinematics& trial) {
+  const Status s = material_->setTrialStrain(b_.dot(trial.u), b_.dot(trial.v));
+  if (!ok(s)) return s;
+  assemble();
+  return Status::Ok;
+}
+
+void Truss::commitState() {
+  material_->commitState();
+  kc_ = k_;
+}
+
+void Truss::revertToLastCommit() {
+  material_->revertToLastCommit();
+  assemble();
+}
+
+void Truss::revertToStart() {
+  material_->revertToStart();
+  assemble();
+  kc_ = k_;
+}
+
+std::optional<Eigen::VectorXd> Truss::response(std::span<const std::string> args) const {
+  if (args.empty()) return std::nullopt;
+  const std::string& name = args[0];
+  const double axial = params_.area * material_->getStress();
+  if (name == "force" || name == "forces" || name == "globalForce" || name == "globalForces")
+    return Eigen::VectorXd(f_);
+  if (name == "axialForce" || name == "basicForce" || name == "basicForces")
+    return Eigen::VectorXd::Constant(1, axial);
+  if (name == "localForce" || name == "localForces") {
+    Eigen::VectorXd out = Eigen::VectorXd::Zero(numDof());
+    out(0) = -axial;
+    out(params_.ndf) = axial;
+    return out;
+  }
+  if (name == "deformation" || name == "deformations" || name == "basicDeformation" ||
+      name == "basicDeformations")
+    return Eigen::VectorXd::Constant(1, length_ * material_->getStrain());
+  if (name == "material" && args.size() >= 2) {
+    if (args.back() == "stress") return Eigen::VectorXd::Constant(1, material_->getStress());
+    if (args.back() == "strain") return Eigen::VectorXd::Constant(1, material_->getStrain());
+    if (args.back() == "stressStrain") {
+      Eigen::VectorXd out(2);
+      out << material_->getStress(), material_->getStrain();
+      return out;
+    }
+  }
+  return std::nullopt;
+}
+
+}  // namespace dabs::elements

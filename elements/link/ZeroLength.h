@@ -1,0 +1,61 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include <Eigen/Core>
+#include <memory>
+#include <vector>
+
+#include "elements/Element.h"
+#include "materials/UniaxialMaterial.h"
+
+namespace dabs::elements {
+
+/// Zero-length element (`element zeroLength tag i j -mat m.. -dir d.. ?-orient x1 x2 x3 yp1 yp2
+/// yp3? ?-doRayleigh 0|1?`): uniaxial materials acting on the relative displacement of two nodes
+/// along local axes (dirs 1-3) or about them (dirs 4-6). Local x is given by -orient, y lies in
+/// the plane of x and yp, z = x cross yp (OpenSees/OpenSees:SRC/element/zeroLength/ZeroLength.cpp).
+/// Deformation e_k = t_k . u with t_k = [-a_k, a_k] over the chosen dofs of nodes i and j.
+class ZeroLength final : public Element {
+ public:
+  struct Params {
+    std::vector<int> nodes;  ///< i, j
+    int ndm = 3;
+    int ndf = 6;
+    std::vector<int> dirs;   ///< 1..6 as in the command
+    Eigen::Vector3d x{1.0, 0.0, 0.0};
+    Eigen::Vector3d yp{0.0, 1.0, 0.0};
+    bool doRayleigh = false;
+    /// Throws InputError for dirs the model's ndm/ndf cannot carry or a degenerate orientation.
+    void validate(std::size_t numMaterials) const;
+  };
+
+  ZeroLength(int tag, Params params, std::vector<std::unique_ptr<materials::UniaxialMaterial>> mats);
+
+  std::string_view typeName() const override { return "zeroLength"; }
+  const std::vector<int>& nodeTags() const override { return params_.nodes; }
+  int numDof() const override { return 2 * params_.ndf; }
+  int dofPerNode() const override { return params_.ndf; }
+  void initialize(const NodalCoordinates& x) override;
+  Status update(const Kinematics& trial) override;
+  Eigen::Ref<const Eigen::VectorXd> resistingForce() const override { return f_; }
+  Eigen::Ref<const Eigen::MatrixXd> tangentStiff() const override { return k_; }
+  Eigen::Ref<const Eigen::MatrixXd> initialStiff() const override { return k0_; }
+  Eigen::Ref<const Eigen::MatrixXd> committedStiff() const override { return kc_; }
+  Eigen::Ref<const Eigen::MatrixXd> dampingTangent() const override { return c_; }
+  Eigen::Ref<const Eigen::MatrixXd> mass() const override { return m_; }
+  bool rayleighByDefault() const override { return params_.doRayleigh; }
+  void commitState() override;
+  void revertToLastCommit() override;
+  void revertToStart() override;
+  std::optional<Eigen::VectorXd> response(std::span<const std::string> args) const override;
+
+ private:
+  void assemble();
+  Params params_;
+  std::vector<std::unique_ptr<materials::UniaxialMaterial>> materials_;
+  Eigen::MatrixXd t_;  ///< one row per material: d(deformation)/d(u)
+  Eigen::VectorXd f_;
+  Eigen::MatrixXd k_, k0_, kc_, c_, m_;
+};
+
+}  // namespace dabs::elements

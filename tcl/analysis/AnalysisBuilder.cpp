@@ -1,0 +1,214 @@
+// SPDX-License-Identifier: MIT
+#include "tcl/analysis/AnalysisBuilder.h"
+
+#include <cmath>
+
+#include "materials/InputError.h"
+#include "tcl/analysis/GeneralizedAlpha.h"
+#include "tcl/analysis/LoadControl.h"
+#include "tcl/analysis/NewtonRaphson.h"
+
+namespace dabs::analysis {
+
+namespace {
+// Defaults OpenSees uses when a component is missing at `analysis` time.
+constexpr double kDefaultTestTolerance = 1e-6;
+constexpr int kDefaultTestIterations = 25;
+// Up to this many equations an eigen problem is solved densely.
+constexpr int kDenseEigenLimit = 600;
+}  // namespace
+
+AnalysisBuilder::AnalysisBuilder(domain::Domain& domain) : domain_(domain) {}
+AnalysisBuilder::~AnalysisBuilder() = default;
+
+void AnalysisBuilder::setConstraints(ConstraintKind kind, double alphaSP, double alphaMP) {
+  constraints_ = kind;
+  alphaSP_ = alphaSP;
+  alphaMP_ = alphaMP;
+  model_.reset();
+}
+void AnalysisBuilder::setNumberer(NumbererKind kind) {
+  numberer_ = kind;
+  model_.reset();
+}
+void AnalysisBuilder::setSystem(SolverKind kind) {
+  solver_ = kind;
+  model_.reset();
+}
+void AnalysisBuilder::setTest(std::unique_ptr<ConvergenceTest> test) { test_ = std::move(test); }
+void AnalysisBuilder::setAlgorithm(std::unique_ptr<SolutionAlgorithm> algorithm) {
+  algorithm_ = std::move(algorithm);
+}
+void AnalysisBuilder::setIntegrator(std::unique_ptr<Integrator> integrator) {
+  const bool transient = integrator->transient();
+  (transient ? transientIntegrator_ : staticIntegrator_) = std::move(integrator);
+  if (kind_ != Kind::None && transient == (kind_ == Kind::Transient)) {
+    integrator_ = transient ? transientIntegrator_.get() : staticIntegrator_.get();
+    integratorSeeded_ = false;
+  }
+}
+
+void AnalysisBuilder::setAnalysis(Kind kind, int numSubLevels, int numSubSteps) {
+  kind_ = kind;
+  numSubLevels_ = numSubLevels;
+  numSubSteps_ = numSubSteps;
+  if (kind == Kind::Transient && !transientIntegrator_)
+    transientIntegrator_ = std::make_unique<GeneralizedAlpha>(1.0, 1.0, 0.5, 0.25);
+  if (kind == Kind::Static && !staticIntegrator_)
+    staticIntegrator_ = std::make_unique<LoadControl>(1.0, 1, 1.0, 1.0);
+  integrator_ = kind == Kind::Transient ? transientIntegrator_.get() : staticIntegrator_.get();
+  integratorSeeded_ = false;
+  if (!algorithm_) algorithm_ = std::make_unique<NewtonRaphson>(NewtonRaphson::Tangent::Current, false);
+  if (!test_)
+    test_ = std::make_unique<ConvergenceTest>(ConvergenceTest::Kind::NormUnbalance,
+                                              kDefaultTestTolerance, kDefaultTestIterations);
+}
+
+void AnalysisBuilder::wipe() {
+  test_.reset();
+  algorithm_.reset();
+  staticIntegrator_.reset();
+  transientIntegrator_.reset();
+  integrator_ = nullptr;
+  system_.reset();
+  model_.reset();
+  kind_ = Kind::None;
+  constraints_ = ConstraintKind::Plain;
+  numberer_ = NumbererKind::RCM;
+  solver_ = SolverKind::SparseLU;
+  numSubLevels_ = 0;
+  numSubSteps_ = 10;
+  integratorSeeded_ = false;
+}
+
+void AnalysisBuilder::ensureModel() {
+  if (domain_.nodes().empty()) throw InputError("model", "has no nodes; define the model before analysing it");
+  if (!model_ || model_->stale()) {
+    auto model = std::make_unique<AnalysisModel>(domain_, constraints_, numberer_, alphaSP_, alphaMP_);
+    model->build();  // throws InputError for constraints it cannot enforce; nothing changed yet
+    model_ = std::move(model);
+    system_ = std::make_unique<LinearSystem>(*model_, solver_);
+    system_->patternChanged();
+    integratorSeeded_ = false;
+    refreshModalDamping();
+  }
+  if (integrator_ && !integratorSeeded_) {
+    model_->applyLoad(domain_.committedTime());
+    integrator_->domainChanged(*system_);
+    integratorSeeded_ = true;
+  }
+}
+
+void AnalysisBuilder::refreshModalDamping() {
+  const auto& zeta = domain_.modalDamping;
+  if (zeta.empty() || domain_.eigenvalues.empty()) return;
+  const int modes = static_cast<int>(domain_.eigenvalues.size());
+  const int neq = model_->numEquations();
+  Eigen::MatrixXd phi = Eigen::MatrixXd::Zero(neq, modes);
+  for (const auto& [tag, node] : domain_.nodes()) {
+    if (node.eigenvectors.cols() != modes) continue;
+    for (int d = 0; d < node.ndf(); ++d) {
+      const int eq = model_->equationOf(tag, d);
+      if (eq >= 0) phi.row(eq) = node.eigenvectors.row(d);
+    }
+  }
+  const Eigen::SparseMatrix<double> M = model_->formMass();
+  Eigen::VectorXd coef(modes);
+  for (int i = 0; i < modes; ++i) {
+    const double lambda = domain_.eigenvalues[static_cast<std::size_t>(i)];
+    const double z = zeta.size() == 1 ? zeta[0] : zeta[static_cast<std::size_t>(std::min<std::size_t>(
+                                                      static_cast<std::size_t>(i), zeta.size() - 1))];
+    coef(i) = lambda > 0.0 ? 2.0 * z * std::sqrt(lambda) : 0.0;
+  }
+  model_->setModalDamping(M * phi, coef);
+}
+
+Status AnalysisBuilder::analyzeStep(double dt) {
+  Status s = integrator_->newStep(*system_, dt);
+  if (ok(s)) s = algorithm_->solveCurrentStep(*system_, *integrator_, test_.get());
+  stats_.iterations += algorithm_->iterations();
+  if (ok(s)) s = integrator_->commit(*system_);
+  if (!ok(s)) {
+    domain_.revertToLastCommit();
+    integrator_->revertToLastStep();
+    model_->applyLoad(domain_.committedTime());
+    return s;
+  }
+  ++stats_.steps;
+  return Status::Ok;
+}
+
+Status AnalysisBuilder::analyzeSubLevel(int level, double dt) {
+  // OpenSees DirectIntegrationAnalysis::analyzeSubLevel: the failed step is retried as
+  // numSubSteps smaller steps, each of which may itself be split, down to numSubLevels levels.
+  const double subDt = dt / numSubSteps_;
+  for (int i = 0; i < numSubSteps_; ++i) {
+    Status s = analyzeStep(subDt);
+    if (!ok(s)) {
+      if (level >= numSubLevels_) return s;
+      s = analyzeSubLevel(level + 1, subDt);
+      if (!ok(s)) return s;
+    }
+  }
+  return Status::Ok;
+}
+
+int AnalysisBuilder::analyze(int numSteps, double dt) {
+  if (kind_ == Kind::None)
+    throw InputError("analysis", "is not defined; give `analysis Static` or `analysis Transient` first");
+  if (kind_ == Kind::Transient && !(dt > 0.0))
+    throw InputError("dt", "must be positive for a transient analysis");
+  if (algorithm_->needsTest() && !test_) throw InputError("test", "is not defined");
+  ensureModel();
+  const long factorizationsBefore = system_->factorizations();
+  int result = 0;
+  for (int step = 0; step < numSteps; ++step) {
+    Status s = analyzeStep(dt);
+    if (!ok(s) && kind_ == Kind::Transient && numSubLevels_ > 0) {
+      ++stats_.failedSteps;
+      s = analyzeSubLevel(1, dt);
+      if (ok(s)) ++stats_.subSteppedSteps;
+    } else if (!ok(s)) {
+      ++stats_.failedSteps;
+    }
+    if (!ok(s)) {
+      result = code(s);
+      break;
+    }
+  }
+  stats_.factorizations += system_->factorizations() - factorizationsBefore;
+  domain_.flushRecorders();
+  return result;
+}
+
+EigenResult AnalysisBuilder::eigen(int numModes, bool dense) {
+  ensureModel();
+  // Bring elements to the committed state so their tangents are current.
+  Eigen::VectorXd U, V, A;
+  model_->applyLoad(domain_.committedTime());
+  model_->getResponse(U, V, A, true);
+  model_->setResponse(U, V, A);
+  EigenResult result;
+  if (!ok(model_->updateElements())) {
+    result.status = Status::Failed;
+    return result;
+  }
+  AssemblyCoefficients c;
+  const Eigen::SparseMatrix<double> K = model_->formTangent(c);
+  const Eigen::SparseMatrix<double> M = model_->formMass();
+  if (numModes > model_->numEquations()) {
+    result.status = Status::Failed;
+    return result;
+  }
+  result = (dense || model_->numEquations() <= kDenseEigenLimit) ? solveEigenDense(K, M, numModes)
+                                                                   : solveEigenSubspace(K, M, numModes);
+  if (ok(result.status)) {
+    domain_.eigenvalues.assign(result.values.data(), result.values.data() + result.values.size());
+    model_->setEigenvectors(result.vectors);
+    refreshModalDamping();
+    system_->invalidate();
+  }
+  return result;
+}
+
+}  // namespace dabs::analysis

@@ -1,0 +1,92 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include <functional>
+#include <memory>
+#include <string>
+
+#include "tcl/analysis/AnalysisModel.h"
+#include "tcl/analysis/ConvergenceTest.h"
+#include "tcl/analysis/EigenSolver.h"
+#include "tcl/analysis/Integrator.h"
+#include "tcl/analysis/LinearSystem.h"
+#include "tcl/analysis/SolutionAlgorithm.h"
+#include "tcl/domain/Domain.h"
+
+namespace dabs::analysis {
+
+/// Counters of what an analysis did, for benchmarks and reports.
+struct AnalysisStatistics {
+  long steps = 0;             ///< committed steps (sub-steps counted individually)
+  long failedSteps = 0;       ///< steps that failed at full size
+  long subSteppedSteps = 0;   ///< steps that were recovered by sub-stepping
+  long iterations = 0;        ///< algorithm iterations
+  long factorizations = 0;    ///< numeric factorisations
+};
+
+/// The analysis strategy of one interpreter (style.md section 4: one per Runtime, no globals):
+/// constraint handler, numberer, system, test, algorithm, integrator and the analysis type, and the
+/// step loop that uses them (OpenSees/OpenSees:SRC/analysis/analysis/DirectIntegrationAnalysis.cpp
+/// and StaticAnalysis.cpp). Components may be replaced between `analyze` calls; the equations are
+/// renumbered whenever the domain changed.
+class AnalysisBuilder {
+ public:
+  enum class Kind { None, Static, Transient };
+
+  explicit AnalysisBuilder(domain::Domain& domain);
+  ~AnalysisBuilder();
+
+  void setConstraints(ConstraintKind kind, double alphaSP = 0.0, double alphaMP = 0.0);
+  void setNumberer(NumbererKind kind);
+  void setSystem(SolverKind kind);
+  void setTest(std::unique_ptr<ConvergenceTest> test);
+  void setAlgorithm(std::unique_ptr<SolutionAlgorithm> algorithm);
+  void setIntegrator(std::unique_ptr<Integrator> integrator);
+  /// Selects the analysis type and the integrator of that type (a default when none was given).
+  void setAnalysis(Kind kind, int numSubLevels = 0, int numSubSteps = 10);
+  Kind kind() const noexcept { return kind_; }
+
+  /// Runs n steps of size dt (ignored by static integrators). Returns 0 or a negative status code
+  /// of the first step that failed (even after sub-stepping); the model stays at the last
+  /// converged step. Throws InputError when the analysis cannot start (no analysis, no model).
+  int analyze(int numSteps, double dt);
+  /// Lowest eigenpairs; stores eigenvalues in the domain and eigenvectors in the nodes.
+  EigenResult eigen(int numModes, bool dense);
+
+  /// Forgets every component (wipeAnalysis); the domain is untouched.
+  void wipe();
+  /// Forces renumbering at the next analyze (after wipe, reset, domain changes).
+  void invalidate() noexcept { model_.reset(); }
+
+  const AnalysisStatistics& statistics() const noexcept { return stats_; }
+  /// Where convergence-test output goes.
+  std::function<void(const std::string&)> log;
+
+ private:
+  void ensureModel();
+  void refreshModalDamping();
+  [[nodiscard]] Status analyzeStep(double dt);
+  [[nodiscard]] Status analyzeSubLevel(int level, double dt);
+
+  domain::Domain& domain_;
+  ConstraintKind constraints_ = ConstraintKind::Plain;
+  double alphaSP_ = 0.0, alphaMP_ = 0.0;
+  NumbererKind numberer_ = NumbererKind::RCM;
+  SolverKind solver_ = SolverKind::SparseLU;
+  std::unique_ptr<ConvergenceTest> test_;
+  std::unique_ptr<SolutionAlgorithm> algorithm_;
+  // OpenSees keeps a static and a transient integrator; `analysis` picks one.
+  std::unique_ptr<Integrator> staticIntegrator_;
+  std::unique_ptr<Integrator> transientIntegrator_;
+  Integrator* integrator_ = nullptr;
+  Kind kind_ = Kind::None;
+  int numSubLevels_ = 0;
+  int numSubSteps_ = 10;
+
+  std::unique_ptr<AnalysisModel> model_;
+  std::unique_ptr<LinearSystem> system_;
+  bool integratorSeeded_ = false;
+  AnalysisStatistics stats_;
+};
+
+}  // namespace dabs::analysis

@@ -1,0 +1,561 @@
+// SPDX-License-Identifier: MIT
+#include "tcl/analysis/AnalysisModel.h"
+
+#include <algorithm>
+#include <deque>
+#include <numeric>
+#include <set>
+#include <string>
+
+#include "materials/InputError.h"
+
+namespace dabs::analysis {
+
+namespace {
+constexpr int kMaxConstraintChain = 16;  // equalDOF chains longer than this are a cycle
+}
+
+AnalysisModel::AnalysisModel(domain::Domain& domain, ConstraintKind constraints,
+                             NumbererKind numberer, double alphaSP, double alphaMP)
+    : domain_(domain), constraints_(constraints), numberer_(numberer), alphaSP_(alphaSP),
+      alphaMP_(alphaMP) {}
+
+bool AnalysisModel::nonSymmetric() const {
+  return std::any_of(elements_.begin(), elements_.end(),
+                     [](const ElementLink& l) { return l.element->hasNonSymmetricTangent(); });
+}
+
+bool AnalysisModel::allLinear() const {
+  return std::all_of(elements_.begin(), elements_.end(),
+                     [](const ElementLink& l) { return l.element->isLinear(); });
+}
+
+void AnalysisModel::build() {
+  numberEquations();
+  buildScatter();
+  builtVersion_ = domain_.modelVersion();
+}
+
+void AnalysisModel::numberEquations() {
+  // --- node order and dof indices -------------------------------------------------------
+  nodes_.clear();
+  nodeIndex_.clear();
+  int ndofTotal = 0;
+  for (auto& [tag, node] : domain_.nodes()) {
+    nodeIndex_[tag] = static_cast<int>(nodes_.size());
+    nodes_.push_back(NodeLink{&node, ndofTotal, {}, {}, domain_.nodeAlphaM(tag)});
+    ndofTotal += node.ndf();
+  }
+  auto dofIndex = [&](int nodeTag, int dof) {
+    return nodes_[static_cast<std::size_t>(nodeIndex_.at(nodeTag))].firstDof + dof;
+  };
+
+  // --- single-point constraints: fixes, pattern sp, imposed motions -------------------------
+  slots_.clear();
+  std::vector<int> slotOf(static_cast<std::size_t>(ndofTotal), -1);
+  auto addSlot = [&](int nodeTag, int dof, const char* source) {
+    const domain::Node* n = domain_.findNode(nodeTag);
+    if (n == nullptr) throw InputError(source, "refers to node " + std::to_string(nodeTag) + " which does not exist");
+    if (dof < 0 || dof >= n->ndf())
+      throw InputError(source, "dof " + std::to_string(dof + 1) + " is outside 1.." +
+                                   std::to_string(n->ndf()) + " of node " + std::to_string(nodeTag));
+    const int g = dofIndex(nodeTag, dof);
+    if (slotOf[static_cast<std::size_t>(g)] >= 0)
+      throw InputError(source, "node " + std::to_string(nodeTag) + " dof " + std::to_string(dof + 1) +
+                                   " has more than one single-point constraint (fix, sp or imposedMotion)");
+    slotOf[static_cast<std::size_t>(g)] = static_cast<int>(slots_.size());
+    slots_.push_back(Slot{nodeTag, dof});
+  };
+  for (const auto& sp : domain_.fixes()) addSlot(sp.node, sp.dof, "fix");
+  for (const auto& [ptag, p] : domain_.patterns()) {
+    if (p->kind() == domain::LoadPattern::Kind::Plain) {
+      for (const auto& sp : static_cast<const domain::PlainPattern&>(*p).prescribed)
+        addSlot(sp.node, sp.dof, "sp");
+    } else if (p->kind() == domain::LoadPattern::Kind::MultipleSupport) {
+      for (const auto& im : static_cast<const domain::MultipleSupportPattern&>(*p).imposed)
+        addSlot(im.node, im.dof, "imposedMotion");
+    }
+  }
+
+  // --- multi-point constraints -------------------------------------------------------------
+  if (constraints_ == ConstraintKind::Plain && !domain_.mps().empty())
+    throw InputError("constraints Plain",
+                     "cannot enforce equalDOF or rigidLink constraints; use constraints Transformation");
+  std::vector<int> mpOf(static_cast<std::size_t>(ndofTotal), -1);  // index into mps, row encoded
+  std::vector<int> mpRow(static_cast<std::size_t>(ndofTotal), -1);
+  const auto& mps = domain_.mps();
+  for (std::size_t m = 0; m < mps.size(); ++m) {
+    for (std::size_t r = 0; r < mps[m].constrainedDofs.size(); ++r) {
+      const int g = dofIndex(mps[m].constrainedNode, mps[m].constrainedDofs[r]);
+      if (slotOf[static_cast<std::size_t>(g)] >= 0 && constraints_ != ConstraintKind::Penalty)
+        throw InputError("equalDOF", "node " + std::to_string(mps[m].constrainedNode) + " dof " +
+                                         std::to_string(mps[m].constrainedDofs[r] + 1) +
+                                         " is both constrained and fixed");
+      mpOf[static_cast<std::size_t>(g)] = static_cast<int>(m);
+      mpRow[static_cast<std::size_t>(g)] = static_cast<int>(r);
+    }
+  }
+
+  // --- node ordering ----------------------------------------------------------------------
+  std::vector<int> order(nodes_.size());
+  std::iota(order.begin(), order.end(), 0);
+  if (numberer_ == NumbererKind::RCM && !nodes_.empty()) {
+    // Reverse Cuthill-McKee on the node graph (elements and multi-point constraints).
+    std::vector<std::set<int>> adj(nodes_.size());
+    auto link = [&](int a, int b) {
+      if (a != b) {
+        adj[static_cast<std::size_t>(a)].insert(b);
+        adj[static_cast<std::size_t>(b)].insert(a);
+      }
+    };
+    for (const auto& [etag, e] : domain_.elements()) {
+      const auto& nt = e->nodeTags();
+      for (std::size_t i = 0; i < nt.size(); ++i)
+        for (std::size_t j = i + 1; j < nt.size(); ++j) link(nodeIndex_.at(nt[i]), nodeIndex_.at(nt[j]));
+    }
+    for (const auto& mp : mps) link(nodeIndex_.at(mp.retainedNode), nodeIndex_.at(mp.constrainedNode));
+    std::vector<bool> seen(nodes_.size(), false);
+    std::vector<int> cm;
+    cm.reserve(nodes_.size());
+    while (cm.size() < nodes_.size()) {
+      int start = -1;
+      for (std::size_t i = 0; i < nodes_.size(); ++i) {
+        if (!seen[i] && (start < 0 || adj[i].size() < adj[static_cast<std::size_t>(start)].size()))
+          start = static_cast<int>(i);
+      }
+      std::deque<int> queue{start};
+      seen[static_cast<std::size_t>(start)] = true;
+      while (!queue.empty()) {
+        const int n = queue.front();
+        queue.pop_front();
+        cm.push_back(n);
+        std::vector<int> next;
+        for (int m : adj[static_cast<std::size_t>(n)])
+          if (!seen[static_cast<std::size_t>(m)]) next.push_back(m);
+        std::sort(next.begin(), next.end(), [&](int a, int b) {
+          return adj[static_cast<std::size_t>(a)].size() < adj[static_cast<std::size_t>(b)].size();
+        });
+        for (int m : next) {
+          seen[static_cast<std::size_t>(m)] = true;
+          queue.push_back(m);
+        }
+      }
+    }
+    order.assign(cm.rbegin(), cm.rend());
+  }
+
+  // --- equations --------------------------------------------------------------------------
+  dofTerms_.assign(static_cast<std::size_t>(ndofTotal), {});
+  std::vector<int> eqOf(static_cast<std::size_t>(ndofTotal), -1);
+  neq_ = 0;
+  for (int ni : order) {
+    const NodeLink& nl = nodes_[static_cast<std::size_t>(ni)];
+    for (int d = 0; d < nl.node->ndf(); ++d) {
+      const auto g = static_cast<std::size_t>(nl.firstDof + d);
+      const bool prescribed = constraints_ != ConstraintKind::Penalty && (slotOf[g] >= 0 || mpOf[g] >= 0);
+      if (!prescribed) eqOf[g] = neq_++;
+    }
+  }
+  // Terms of a dof, resolving chains of multi-point constraints.
+  std::function<std::vector<Term>(int, int)> resolve = [&](int g, int depth) -> std::vector<Term> {
+    const auto gi = static_cast<std::size_t>(g);
+    if (eqOf[gi] >= 0) return {Term{eqOf[gi], 1.0}};
+    if (slotOf[gi] >= 0) return {Term{-slotOf[gi] - 1, 1.0}};
+    if (depth > kMaxConstraintChain)
+      throw InputError("equalDOF", "constraints form a cycle or a chain longer than 16 nodes");
+    const auto& mp = mps[static_cast<std::size_t>(mpOf[gi])];
+    const int r = mpRow[gi];
+    std::vector<Term> out;
+    for (std::size_t k = 0; k < mp.retainedDofs.size(); ++k) {
+      const double c = mp.Ccr(r, static_cast<Eigen::Index>(k));
+      if (c == 0.0) continue;
+      for (const Term& t : resolve(dofIndex(mp.retainedNode, mp.retainedDofs[k]), depth + 1))
+        out.push_back(Term{t.index, c * t.coef});
+    }
+    return out;
+  };
+  for (int g = 0; g < ndofTotal; ++g) dofTerms_[static_cast<std::size_t>(g)] = resolve(g, 0);
+  eqDof_.assign(static_cast<std::size_t>(neq_), {nullptr, 0});
+  for (const NodeLink& nl : nodes_)
+    for (int d = 0; d < nl.node->ndf(); ++d) {
+      const int eq = eqOf[static_cast<std::size_t>(nl.firstDof + d)];
+      if (eq >= 0) eqDof_[static_cast<std::size_t>(eq)] = {nl.node, d};
+    }
+
+  // --- penalty rows ------------------------------------------------------------------------
+  penalties_.clear();
+  if (constraints_ == ConstraintKind::Penalty) {
+    for (int g = 0; g < ndofTotal; ++g) {
+      if (slotOf[static_cast<std::size_t>(g)] >= 0) {
+        PenaltyRow row;
+        row.eqs = {{eqOf[static_cast<std::size_t>(g)], 1.0}};
+        row.slot = slotOf[static_cast<std::size_t>(g)];
+        row.alpha = alphaSP_;
+        penalties_.push_back(row);
+      }
+    }
+    for (const auto& mp : mps) {
+      for (std::size_t r = 0; r < mp.constrainedDofs.size(); ++r) {
+        PenaltyRow row;
+        row.eqs.push_back({eqOf[static_cast<std::size_t>(dofIndex(mp.constrainedNode, mp.constrainedDofs[r]))], 1.0});
+        for (std::size_t k = 0; k < mp.retainedDofs.size(); ++k) {
+          const double c = mp.Ccr(static_cast<Eigen::Index>(r), static_cast<Eigen::Index>(k));
+          if (c != 0.0)
+            row.eqs.push_back({eqOf[static_cast<std::size_t>(dofIndex(mp.retainedNode, mp.retainedDofs[k]))], -c});
+        }
+        row.alpha = alphaMP_;
+        penalties_.push_back(row);
+      }
+    }
+  }
+}
+
+int AnalysisModel::valueIndex(int row, int col) const {
+  const int* outer = A_.outerIndexPtr();
+  const int* inner = A_.innerIndexPtr();
+  const int* begin = inner + outer[col];
+  const int* end = inner + outer[col + 1];
+  const int* it = std::lower_bound(begin, end, row);
+  return static_cast<int>(it - inner);
+}
+
+void AnalysisModel::buildScatter() {
+  // Pattern: every equation pair coupled by an element, a nodal mass, a penalty row or the diagonal.
+  std::vector<Eigen::Triplet<double>> triplets;
+  for (int i = 0; i < neq_; ++i) triplets.emplace_back(i, i, 0.0);
+  auto eqsOfDof = [&](int g, std::vector<std::pair<int, double>>& out) {
+    out.clear();
+    for (const Term& t : dofTerms_[static_cast<std::size_t>(g)])
+      if (t.index >= 0) out.emplace_back(t.index, t.coef);
+  };
+
+  elements_.clear();
+  std::vector<std::vector<std::pair<int, double>>> localEqs;
+  std::vector<std::pair<int, double>> scratch;
+  for (const auto& [etag, e] : domain_.elements()) {
+    ElementLink link;
+    link.element = e.get();
+    link.rayleigh = domain_.elementRayleigh(etag);
+    link.rayleighOn = link.rayleigh.any() && e->rayleighByDefault();
+    const int n = e->numDof();
+    link.u = link.v = link.a = link.force = Eigen::VectorXd::Zero(n);
+    link.work = Eigen::MatrixXd::Zero(n, n);
+    localEqs.assign(static_cast<std::size_t>(n), {});
+    int local = 0;
+    for (int nt : e->nodeTags()) {
+      NodeLink& nl = nodes_[static_cast<std::size_t>(nodeIndex_.at(nt))];
+      link.nodes.push_back(nl.node);
+      for (int d = 0; d < nl.node->ndf(); ++d, ++local) {
+        eqsOfDof(nl.firstDof + d, scratch);
+        localEqs[static_cast<std::size_t>(local)] = scratch;
+        for (auto [eq, c] : scratch) link.vec.push_back(VecEntry{local, eq, c});
+      }
+    }
+    for (int i = 0; i < n; ++i)
+      for (auto [ea, ca] : localEqs[static_cast<std::size_t>(i)])
+        for (int j = 0; j < n; ++j)
+          for (auto [eb, cb] : localEqs[static_cast<std::size_t>(j)]) {
+            triplets.emplace_back(ea, eb, 0.0);
+            link.mat.push_back(MatEntry{i * n + j, ea * neq_ + eb, ca * cb});  // value fixed below
+          }
+    elements_.push_back(std::move(link));
+  }
+  for (NodeLink& nl : nodes_) {
+    nl.mass.clear();
+    nl.vec.clear();
+    const int ndf = nl.node->ndf();
+    localEqs.assign(static_cast<std::size_t>(ndf), {});
+    for (int d = 0; d < ndf; ++d) {
+      eqsOfDof(nl.firstDof + d, scratch);
+      localEqs[static_cast<std::size_t>(d)] = scratch;
+      for (auto [eq, c] : scratch) nl.vec.push_back(VecEntry{d, eq, c});
+    }
+    const Eigen::MatrixXd& m = nl.node->mass();
+    for (int i = 0; i < ndf; ++i)
+      for (int j = 0; j < ndf; ++j) {
+        if (m(i, j) == 0.0) continue;
+        for (auto [ea, ca] : localEqs[static_cast<std::size_t>(i)])
+          for (auto [eb, cb] : localEqs[static_cast<std::size_t>(j)]) {
+            triplets.emplace_back(ea, eb, 0.0);
+            nl.mass.push_back(MatEntry{i * ndf + j, ea * neq_ + eb, ca * cb});
+          }
+      }
+  }
+  for (PenaltyRow& row : penalties_)
+    for (auto [ea, ca] : row.eqs)
+      for (auto [eb, cb] : row.eqs) triplets.emplace_back(ea, eb, 0.0);
+
+  A_.resize(neq_, neq_);
+  A_.setFromTriplets(triplets.begin(), triplets.end());
+  A_.makeCompressed();
+  // Replace the (row*neq+col) placeholders by value indices.
+  auto fix = [&](std::vector<MatEntry>& entries) {
+    for (MatEntry& m : entries) {
+      const int row = m.value / std::max(neq_, 1);
+      const int col = m.value % std::max(neq_, 1);
+      m.value = valueIndex(row, col);
+    }
+  };
+  for (ElementLink& l : elements_) fix(l.mat);
+  for (NodeLink& nl : nodes_) fix(nl.mass);
+  for (PenaltyRow& row : penalties_) {
+    row.valueIndex.clear();
+    for (auto [ea, ca] : row.eqs)
+      for (auto [eb, cb] : row.eqs) row.valueIndex.push_back(valueIndex(ea, eb));
+  }
+  P_ = Eigen::VectorXd::Zero(neq_);
+}
+
+double AnalysisModel::termValue(const std::vector<Term>& terms, const Eigen::VectorXd& x,
+                                int which) const {
+  double value = 0.0;
+  for (const Term& t : terms) {
+    if (t.index >= 0) {
+      value += t.coef * x(t.index);
+    } else {
+      const Slot& s = slots_[static_cast<std::size_t>(-t.index - 1)];
+      value += t.coef * (which == 0 ? s.disp : which == 1 ? s.vel : s.accel);
+    }
+  }
+  return value;
+}
+
+void AnalysisModel::applyLoad(double t) {
+  time_ = t;
+  domain_.setTime(t);
+  // Support values.
+  for (Slot& s : slots_) s.disp = s.vel = s.accel = 0.0;
+  std::map<std::pair<int, int>, Slot*> slotAt;
+  for (Slot& s : slots_) slotAt[{s.node, s.dof}] = &s;
+  for (const auto& [ptag, p] : domain_.patterns()) {
+    if (p->kind() == domain::LoadPattern::Kind::Plain) {
+      const auto& plain = static_cast<const domain::PlainPattern&>(*p);
+      const double f = plain.factor(t);
+      for (const auto& sp : plain.prescribed) {
+        Slot* s = slotAt.at({sp.node, sp.dof});
+        s->disp = sp.constant ? sp.reference : sp.reference * f;
+      }
+    } else if (p->kind() == domain::LoadPattern::Kind::MultipleSupport) {
+      const auto& ms = static_cast<const domain::MultipleSupportPattern&>(*p);
+      for (const auto& im : ms.imposed) {
+        const auto& gm = *ms.groundMotions.at(im.groundMotion);
+        Slot* s = slotAt.at({im.node, im.dof});
+        s->disp = gm.disp(t);
+        s->vel = gm.vel(t);
+        s->accel = gm.accel(t);
+      }
+    }
+  }
+  P_ = externalLoadAt(t);
+}
+
+Eigen::VectorXd AnalysisModel::externalLoadAt(double t) {
+  Eigen::VectorXd P = Eigen::VectorXd::Zero(neq_);
+  for (const auto& [ptag, p] : domain_.patterns()) {
+    if (p->kind() == domain::LoadPattern::Kind::Plain) {
+      const auto& plain = static_cast<const domain::PlainPattern&>(*p);
+      const double f = plain.factor(t);
+      for (const auto& load : plain.loads) {
+        const NodeLink& nl = nodes_[static_cast<std::size_t>(nodeIndex_.at(load.node))];
+        for (const VecEntry& v : nl.vec) P(v.eq) += v.coef * f * load.values(v.local);
+      }
+    } else if (p->kind() == domain::LoadPattern::Kind::UniformExcitation) {
+      // Effective earthquake load -M r a_g (OpenSees EarthquakePattern::applyLoad).
+      const auto& ue = static_cast<const domain::UniformExcitation&>(*p);
+      const double ag = ue.factor(t);
+      if (ag == 0.0) continue;
+      const int dir = ue.dof();
+      for (const NodeLink& nl : nodes_) {
+        const int ndf = nl.node->ndf();
+        if (dir >= ndf) continue;
+        const Eigen::VectorXd mr = nl.node->mass().col(dir);
+        for (const VecEntry& v : nl.vec) P(v.eq) -= v.coef * mr(v.local) * ag;
+      }
+      for (const ElementLink& l : elements_) {
+        const auto m = l.element->mass();
+        if (m.size() == 0 || m.isZero(0.0)) continue;
+        Eigen::VectorXd r = Eigen::VectorXd::Zero(l.element->numDof());
+        int offset = 0;
+        for (const domain::Node* n : l.nodes) {
+          if (dir < n->ndf()) r(offset + dir) = 1.0;
+          offset += n->ndf();
+        }
+        const Eigen::VectorXd mr = m * r;
+        for (const VecEntry& v : l.vec) P(v.eq) -= v.coef * mr(v.local) * ag;
+      }
+    }
+  }
+  return P;
+}
+
+void AnalysisModel::setResponse(const Eigen::VectorXd& U, const Eigen::VectorXd& V,
+                                const Eigen::VectorXd& A) {
+  for (NodeLink& nl : nodes_) {
+    domain::Node& n = *nl.node;
+    for (int d = 0; d < n.ndf(); ++d) {
+      const auto& terms = dofTerms_[static_cast<std::size_t>(nl.firstDof + d)];
+      n.disp(d) = termValue(terms, U, 0);
+      n.vel(d) = termValue(terms, V, 1);
+      n.accel(d) = termValue(terms, A, 2);
+    }
+  }
+}
+
+void AnalysisModel::getResponse(Eigen::VectorXd& U, Eigen::VectorXd& V, Eigen::VectorXd& A,
+                                bool committed) const {
+  U = V = A = Eigen::VectorXd::Zero(neq_);
+  for (const NodeLink& nl : nodes_) {
+    const domain::Node& n = *nl.node;
+    for (int d = 0; d < n.ndf(); ++d) {
+      const auto& terms = dofTerms_[static_cast<std::size_t>(nl.firstDof + d)];
+      if (terms.size() == 1 && terms[0].index >= 0 && terms[0].coef == 1.0) {
+        const int eq = terms[0].index;
+        U(eq) = committed ? n.committedDisp(d) : n.disp(d);
+        V(eq) = committed ? n.committedVel(d) : n.vel(d);
+        A(eq) = committed ? n.committedAccel(d) : n.accel(d);
+      }
+    }
+  }
+}
+
+Status AnalysisModel::updateElements() {
+  const double dt = time_ - domain_.committedTime();
+  for (ElementLink& l : elements_) {
+    int offset = 0;
+    for (const domain::Node* n : l.nodes) {
+      const int ndf = n->ndf();
+      l.u.segment(offset, ndf) = n->disp;
+      l.v.segment(offset, ndf) = n->vel;
+      l.a.segment(offset, ndf) = n->accel;
+      offset += ndf;
+    }
+    if (!l.u.allFinite() || !l.v.allFinite()) return Status::NonFinite;
+    const Status s = l.element->update(elements::Kinematics{l.u, l.v, l.a, time_, dt});
+    if (!ok(s)) return s;
+  }
+  return Status::Ok;
+}
+
+void AnalysisModel::formResidual(const AssemblyCoefficients& c, Eigen::VectorXd& B) const {
+  B = P_;
+  for (const ElementLink& l : elements_) {
+    const elements::Element& e = *l.element;
+    if (c.dynamic) {
+      Eigen::VectorXd& f = l.force;
+      f = e.resistingForce();
+      const auto m = e.mass();
+      f.noalias() += m * l.a;
+      if (l.rayleighOn) {
+        const auto& r = l.rayleigh;
+        if (r.alphaM != 0.0) f.noalias() += r.alphaM * (m * l.v);
+        if (r.betaK != 0.0) f.noalias() += r.betaK * (e.tangentStiff() * l.v);
+        if (r.betaK0 != 0.0) f.noalias() += r.betaK0 * (e.initialStiff() * l.v);
+        if (r.betaKc != 0.0) f.noalias() += r.betaKc * (e.committedStiff() * l.v);
+      }
+      for (const VecEntry& v : l.vec) B(v.eq) -= v.coef * f(v.local);
+    } else {
+      const auto f = e.resistingForce();
+      for (const VecEntry& v : l.vec) B(v.eq) -= v.coef * f(v.local);
+    }
+  }
+  if (c.dynamic) {
+    for (const NodeLink& nl : nodes_) {
+      if (nl.mass.empty()) continue;
+      const domain::Node& n = *nl.node;
+      const Eigen::VectorXd f = n.mass() * (n.accel + nl.alphaM * n.vel);
+      for (const VecEntry& v : nl.vec) B(v.eq) -= v.coef * f(v.local);
+    }
+    if (hasModalDamping()) {
+      Eigen::VectorXd V(neq_);
+      for (int eq = 0; eq < neq_; ++eq) {
+        const auto& [node, dof] = eqDof_[static_cast<std::size_t>(eq)];
+        V(eq) = node->vel(dof);
+      }
+      B.noalias() -= modalMphi_ * (modalCoefficients_.asDiagonal() * (modalMphi_.transpose() * V));
+    }
+  }
+  for (const PenaltyRow& row : penalties_) {
+    // Penalty force alpha c (g - c.u) (OpenSees PenaltySP_FE / PenaltyMP_FE).
+    double cu = 0.0;
+    for (auto [eq, coef] : row.eqs) {
+      const auto& [node, dof] = eqDof_[static_cast<std::size_t>(eq)];
+      cu += coef * node->disp(dof);
+    }
+    const double g = row.slot >= 0 ? slots_[static_cast<std::size_t>(row.slot)].disp : 0.0;
+    for (auto [eq, coef] : row.eqs) B(eq) += row.alpha * coef * (g - cu);
+  }
+}
+
+const Eigen::SparseMatrix<double>& AnalysisModel::formTangent(const AssemblyCoefficients& c) {
+  double* values = A_.valuePtr();
+  std::fill(values, values + A_.nonZeros(), 0.0);
+  for (ElementLink& l : elements_) {
+    const elements::Element& e = *l.element;
+    Eigen::MatrixXd& local = l.work;
+    const auto k = c.stiffness == StiffnessKind::Current ? e.tangentStiff() : e.initialStiff();
+    local.noalias() = c.cK * k;
+    if (c.cC != 0.0) {
+      local.noalias() += c.cC * e.dampingTangent();
+      if (l.rayleighOn) {
+        const auto& r = l.rayleigh;
+        if (r.alphaM != 0.0) local.noalias() += (c.cC * r.alphaM) * e.mass();
+        if (r.betaK != 0.0) local.noalias() += (c.cC * r.betaK) * e.tangentStiff();
+        if (r.betaK0 != 0.0) local.noalias() += (c.cC * r.betaK0) * e.initialStiff();
+        if (r.betaKc != 0.0) local.noalias() += (c.cC * r.betaKc) * e.committedStiff();
+      }
+    }
+    if (c.cM != 0.0) local.noalias() += c.cM * e.mass();
+    const int n = e.numDof();
+    for (const MatEntry& m : l.mat) values[m.value] += m.coef * local(m.local / n, m.local % n);
+  }
+  if (c.cM != 0.0 || c.cC != 0.0) {
+    for (NodeLink& nl : nodes_) {
+      const double f = c.cM + c.cC * nl.alphaM;
+      const int ndf = nl.node->ndf();
+      const Eigen::MatrixXd& m = nl.node->mass();
+      for (const MatEntry& me : nl.mass) values[me.value] += f * me.coef * m(me.local / ndf, me.local % ndf);
+    }
+  }
+  for (const PenaltyRow& row : penalties_) {
+    std::size_t idx = 0;
+    for (const auto& a : row.eqs)
+      for (const auto& b : row.eqs) values[row.valueIndex[idx++]] += c.cK * row.alpha * a.second * b.second;
+  }
+  return A_;
+}
+
+Eigen::SparseMatrix<double> AnalysisModel::formMass() {
+  AssemblyCoefficients c;
+  c.cK = 0.0;
+  c.cM = 1.0;
+  formTangent(c);
+  Eigen::SparseMatrix<double> M = A_;
+  return M;
+}
+
+int AnalysisModel::equationOf(int nodeTag, int dof) const {
+  auto it = nodeIndex_.find(nodeTag);
+  if (it == nodeIndex_.end()) return -1;
+  const NodeLink& nl = nodes_[static_cast<std::size_t>(it->second)];
+  if (dof < 0 || dof >= nl.node->ndf()) return -1;
+  const auto& terms = dofTerms_[static_cast<std::size_t>(nl.firstDof + dof)];
+  if (terms.size() == 1 && terms[0].index >= 0 && terms[0].coef == 1.0) return terms[0].index;
+  return -1;
+}
+
+void AnalysisModel::setEigenvectors(const Eigen::MatrixXd& phi) {
+  for (NodeLink& nl : nodes_) {
+    domain::Node& n = *nl.node;
+    n.eigenvectors = Eigen::MatrixXd::Zero(n.ndf(), phi.cols());
+    for (int d = 0; d < n.ndf(); ++d)
+      for (const Term& t : dofTerms_[static_cast<std::size_t>(nl.firstDof + d)])
+        if (t.index >= 0) n.eigenvectors.row(d) += t.coef * phi.row(t.index);
+  }
+}
+
+void AnalysisModel::setModalDamping(const Eigen::MatrixXd& Mphi, const Eigen::VectorXd& coefficients) {
+  modalMphi_ = Mphi;
+  modalCoefficients_ = coefficients;
+}
+
+}  // namespace dabs::analysis

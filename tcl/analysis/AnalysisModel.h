@@ -1,0 +1,166 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include <Eigen/Core>
+#include <Eigen/SparseCore>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "materials/Status.h"
+#include "tcl/domain/Domain.h"
+
+namespace dabs::analysis {
+
+/// How constraints turn node dofs into equations (the `constraints` command).
+enum class ConstraintKind { Plain, Transformation, Penalty };
+/// Equation ordering (the `numberer` command). The sparse solvers reorder again (AMD/COLAMD), so
+/// the choice changes only the equation numbers, never the results.
+enum class NumbererKind { Plain, RCM };
+
+/// Which stiffness the tangent uses.
+enum class StiffnessKind { Current, Initial };
+
+/// Coefficients of one assembly: A = cK K + cC C + cM M and whether inertia and damping forces
+/// enter the residual (transient) or not (static).
+struct AssemblyCoefficients {
+  double cK = 1.0;
+  double cC = 0.0;
+  double cM = 0.0;
+  StiffnessKind stiffness = StiffnessKind::Current;
+  bool dynamic = false;
+};
+
+/// The equations of a domain: numbers the free dofs, keeps each element's scatter indices into the
+/// sparse matrix's value array (so assembly is an indexed add), writes trial responses to nodes,
+/// and assembles the residual and tangent. Plays the role of OpenSees' AnalysisModel plus its
+/// constraint handler and DOF numberer (OpenSees/OpenSees:SRC/analysis/model/AnalysisModel.cpp).
+///
+/// A node dof is either an equation or prescribed. A prescribed dof's value is a combination of
+/// equations and prescribed "slots" (support values from fix, sp and imposedMotion), which covers
+/// equalDOF and rigidLink under the Transformation handler. Under the Penalty handler every dof is
+/// an equation and constraints add alpha C^T C to the stiffness.
+class AnalysisModel {
+ public:
+  AnalysisModel(domain::Domain& domain, ConstraintKind constraints, NumbererKind numberer,
+                double alphaSP = 0.0, double alphaMP = 0.0);
+
+  /// Numbers the equations and builds the sparse pattern for the domain as it is now. Throws
+  /// InputError for constraints this handler cannot enforce.
+  void build();
+  /// True when the domain changed since build().
+  bool stale() const noexcept { return builtVersion_ != domain_.modelVersion(); }
+
+  int numEquations() const noexcept { return neq_; }
+  /// Sparse matrix with the pattern of every possible coupling (values zero after build).
+  const Eigen::SparseMatrix<double>& pattern() const noexcept { return A_; }
+  /// True when some element declares a non-symmetric tangent.
+  bool nonSymmetric() const;
+  /// True when every element is linear, so the tangent never changes between assemblies.
+  bool allLinear() const;
+
+  /// Sets the time, support values (fix, sp, imposed motion) and external loads at time t.
+  void applyLoad(double t);
+  /// External load vector (equation space) of the last applyLoad.
+  const Eigen::VectorXd& externalLoad() const noexcept { return P_; }
+  /// External load vector at time t without changing the state (for reference loads).
+  Eigen::VectorXd externalLoadAt(double t);
+
+  /// Writes U, V, A (equation space) to the nodes' trial response; prescribed dofs take their
+  /// support values.
+  void setResponse(const Eigen::VectorXd& U, const Eigen::VectorXd& V, const Eigen::VectorXd& A);
+  /// Reads the nodes' committed (or trial) response into equation space.
+  void getResponse(Eigen::VectorXd& U, Eigen::VectorXd& V, Eigen::VectorXd& A, bool committed) const;
+  /// Updates every element from its nodes' trial response.
+  [[nodiscard]] Status updateElements();
+
+  /// Residual B = P - F_int (- inertia - damping when dynamic).
+  void formResidual(const AssemblyCoefficients& c, Eigen::VectorXd& B) const;
+  /// Tangent A = cK K + cC C + cM M; returns the matrix (pattern fixed at build).
+  const Eigen::SparseMatrix<double>& formTangent(const AssemblyCoefficients& c);
+  /// Mass matrix (elements and nodes) in equation space.
+  Eigen::SparseMatrix<double> formMass();
+  /// Equation of (node, dof), or -1 when the dof is prescribed.
+  int equationOf(int nodeTag, int dof) const;
+  /// Mass-orthonormal eigenvectors in equation space to node eigenvectors.
+  void setEigenvectors(const Eigen::MatrixXd& phi);
+
+  /// Modal damping (modalDamping): C_modal = sum_i 2 zeta_i omega_i (M phi_i)(M phi_i)^T.
+  void setModalDamping(const Eigen::MatrixXd& Mphi, const Eigen::VectorXd& coefficients);
+  bool hasModalDamping() const noexcept { return modalCoefficients_.size() > 0; }
+  const Eigen::MatrixXd& modalBasis() const noexcept { return modalMphi_; }
+  const Eigen::VectorXd& modalCoefficients() const noexcept { return modalCoefficients_; }
+
+  domain::Domain& domain() noexcept { return domain_; }
+
+ private:
+  struct Term {
+    int index;    // >= 0: equation; < 0: prescribed slot -index-1
+    double coef;
+  };
+  struct Slot {
+    int node = 0, dof = 0;
+    double disp = 0.0, vel = 0.0, accel = 0.0;
+  };
+  struct VecEntry {
+    int local;
+    int eq;
+    double coef;
+  };
+  struct MatEntry {
+    int local;  // row-major index i*n+j into the element matrix
+    int value;  // index into A_.valuePtr()
+    double coef;
+  };
+  struct ElementLink {
+    elements::Element* element;
+    std::vector<domain::Node*> nodes;
+    std::vector<VecEntry> vec;
+    std::vector<MatEntry> mat;
+    domain::RayleighFactors rayleigh;
+    bool rayleighOn = false;
+    Eigen::VectorXd u, v, a;          // gather buffers
+    mutable Eigen::VectorXd force;    // residual work buffer
+    Eigen::MatrixXd work;             // tangent work buffer
+  };
+  struct NodeLink {
+    domain::Node* node;
+    int firstDof;                 // index of the node's dof 0 in dofTerms
+    std::vector<MatEntry> mass;   // nodal mass scatter (local = i*ndf+j)
+    std::vector<VecEntry> vec;
+    double alphaM = 0.0;
+  };
+  struct PenaltyRow {
+    std::vector<std::pair<int, double>> eqs;  // equation, coefficient
+    int slot = -1;                            // prescribed value g (or -1 for 0)
+    double alpha = 0.0;
+    std::vector<int> valueIndex;              // A_ value index of eqs[i] x eqs[j], row-major
+  };
+
+  void numberEquations();
+  void buildScatter();
+  int valueIndex(int row, int col) const;
+  double termValue(const std::vector<Term>& terms, const Eigen::VectorXd& x, int which) const;
+
+  domain::Domain& domain_;
+  ConstraintKind constraints_;
+  NumbererKind numberer_;
+  double alphaSP_, alphaMP_;
+  long builtVersion_ = -1;
+  int neq_ = 0;
+  double time_ = 0.0;
+
+  std::vector<std::vector<Term>> dofTerms_;  // per node dof: combination of equations and slots
+  std::vector<Slot> slots_;
+  std::vector<NodeLink> nodes_;
+  std::vector<ElementLink> elements_;
+  std::vector<PenaltyRow> penalties_;
+  std::map<int, int> nodeIndex_;             // node tag -> index in nodes_
+  std::vector<std::pair<domain::Node*, int>> eqDof_;  // node and dof of each equation
+  Eigen::SparseMatrix<double> A_;
+  Eigen::VectorXd P_;
+  Eigen::MatrixXd modalMphi_;
+  Eigen::VectorXd modalCoefficients_;
+};
+
+}  // namespace dabs::analysis

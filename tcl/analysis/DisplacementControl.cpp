@@ -1,0 +1,88 @@
+// SPDX-License-Identifier: MIT
+#include "tcl/analysis/DisplacementControl.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace dabs::analysis {
+
+DisplacementControl::DisplacementControl(int node, int dof, double incr, int Jd, double dUmin,
+                                         double dUmax, bool initialTangent)
+    : node_(node), dof_(dof), incr_(incr), Jd_(Jd), dUmin_(dUmin), dUmax_(dUmax),
+      initialTangent_(initialTangent), iterationsLastStep_(Jd) {}
+
+void DisplacementControl::domainChanged(LinearSystem& system) {
+  Integrator::domainChanged(system);
+  V_.setZero();
+  A_.setZero();
+  Ucommitted_ = U_;
+  AnalysisModel& model = system.model();
+  equation_ = model.equationOf(node_, dof_);
+  // Reference load: unbalance at lambda_c + 1 with the committed state (OpenSees
+  // DisplacementControl::domainChanged), which for an equilibrated state is the load pattern.
+  lambda_ = model.domain().committedTime();
+  model.applyLoad(lambda_ + 1.0);
+  if (ok(push(system))) {
+    system.formResidual(coefficients(StiffnessKind::Current));
+    phat_ = system.B;
+  } else {
+    phat_ = Eigen::VectorXd::Zero(model.numEquations());
+  }
+  model.applyLoad(lambda_);
+}
+
+Status DisplacementControl::newStep(LinearSystem& system, double /*dt*/) {
+  if (equation_ < 0 || phat_.size() == 0 || phat_.isZero(0.0)) return Status::Failed;
+  if (iterationsLastStep_ > 0) incr_ *= static_cast<double>(Jd_) / iterationsLastStep_;
+  const double lo = std::min(dUmin_, dUmax_), hi = std::max(dUmin_, dUmax_);
+  incr_ = std::clamp(incr_, lo, hi);
+  iterationsLastStep_ = 0;
+  AnalysisModel& model = system.model();
+  lambda_ = model.domain().committedTime();
+  const Status st = system.formTangent(coefficients(initialTangent_ ? StiffnessKind::Initial
+                                                                    : StiffnessKind::Current));
+  if (!ok(st)) return st;
+  const Status ss = system.solve(phat_, dUhat_);
+  if (!ok(ss)) return ss;
+  dUahat_ = dUhat_(equation_);
+  if (dUahat_ == 0.0 || !std::isfinite(dUahat_)) return Status::Singular;
+  const double dLambda = incr_ / dUahat_;
+  lambda_ += dLambda;
+  U_ += dLambda * dUhat_;
+  model.applyLoad(lambda_);
+  return push(system);
+}
+
+Status DisplacementControl::update(LinearSystem& system, const Eigen::VectorXd& dx) {
+  if (equation_ < 0) return Status::Failed;
+  const Status ss = system.solve(phat_, dUhat_);
+  if (!ok(ss)) return ss;
+  dUahat_ = dUhat_(equation_);
+  if (dUahat_ == 0.0 || !std::isfinite(dUahat_)) return Status::Singular;
+  const double dLambda = -dx(equation_) / dUahat_;
+  deltaU_ = dx + dLambda * dUhat_;
+  U_ += deltaU_;
+  lambda_ += dLambda;
+  system.model().applyLoad(lambda_);
+  system.X = deltaU_;  // tests see the corrected increment, as in OpenSees
+  ++iterationsLastStep_;
+  return push(system);
+}
+
+AssemblyCoefficients DisplacementControl::coefficients(StiffnessKind k) const {
+  AssemblyCoefficients c;
+  c.stiffness = k;
+  return c;
+}
+
+Status DisplacementControl::commit(LinearSystem& system) {
+  Ucommitted_ = U_;
+  return Integrator::commit(system);
+}
+
+void DisplacementControl::setStepSize(double incr) {
+  incr_ = incr;
+  iterationsLastStep_ = Jd_;
+}
+
+}  // namespace dabs::analysis

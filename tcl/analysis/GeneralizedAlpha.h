@@ -1,0 +1,33 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include "tcl/analysis/Integrator.h"
+
+namespace dabs::analysis {
+
+/// Generalized-alpha time stepping (Chung and Hulbert 1993) in OpenSees' convention, where the
+/// alphas weight the NEW state: M a_{n+alphaM} + C v_{n+alphaF} + R(u_{n+alphaF}) = P(t_n + alphaF dt)
+/// with Newmark's update for u, v, a. Newmark is alphaM = alphaF = 1; HHT (Hilber, Hughes and
+/// Taylor 1977) is alphaM = 1, alphaF = alpha (OpenSees/OpenSees:SRC/analysis/integrator/
+/// Newmark.cpp, HHT.cpp, GeneralizedAlpha.cpp). The unknown is the displacement increment.
+class GeneralizedAlpha final : public Integrator {
+ public:
+  GeneralizedAlpha(double alphaM, double alphaF, double gamma, double beta);
+
+  bool transient() const override { return true; }
+  void domainChanged(LinearSystem& system) override;
+  Status newStep(LinearSystem& system, double dt) override;
+  Status update(LinearSystem& system, const Eigen::VectorXd& dx) override;
+  AssemblyCoefficients coefficients(StiffnessKind k) const override;
+  Status commit(LinearSystem& system) override;
+  void revertToLastStep() override;
+
+ private:
+  Status pushWeighted(LinearSystem& system);
+  double alphaM_, alphaF_, gamma_, beta_;
+  double c2_ = 0.0, c3_ = 0.0, dt_ = 0.0, tn_ = 0.0;
+  Eigen::VectorXd Ut_, Vt_, At_;
+  Eigen::VectorXd Ua_, Va_, Aa_;  // weighted state pushed to the nodes
+};
+
+}  // namespace dabs::analysis

@@ -1,0 +1,57 @@
+// SPDX-License-Identifier: MIT
+#include "tcl/analysis/KrylovNewton.h"
+
+#include <Eigen/QR>
+
+namespace dabs::analysis {
+
+Status KrylovNewton::solveCurrentStep(LinearSystem& system, Integrator& integrator,
+                                      ConvergenceTest* test) {
+  if (test == nullptr) return Status::Failed;
+  iterations_ = 0;
+  const StiffnessKind kind = initial_ ? StiffnessKind::Initial : StiffnessKind::Current;
+  const AssemblyCoefficients c = integrator.coefficients(kind);
+  system.formResidual(c);
+  test->start();
+  Status s = system.formTangent(c, initial_);
+  if (!ok(s)) return s;
+  v_.assign(static_cast<std::size_t>(maxDim_ + 1), Eigen::VectorXd());
+  Av_.assign(static_cast<std::size_t>(maxDim_ + 1), Eigen::VectorXd());
+  int dim = 0;
+  Eigen::VectorXd update;
+  for (;;) {
+    if (dim > maxDim_) {
+      dim = 0;
+      s = system.formTangent(c, initial_);
+      if (!ok(s)) return s;
+    }
+    s = system.solve();
+    if (!ok(s)) return s;
+    const Eigen::VectorXd& r = system.X;
+    const auto k = static_cast<std::size_t>(dim);
+    v_[k] = r;
+    Av_[k] = r;
+    if (dim > 0) {
+      // Columns are differences of successive corrections, r_{j} - r_{j+1}.
+      Av_[k - 1] -= r;
+      Eigen::MatrixXd A(r.size(), dim);
+      for (int j = 0; j < dim; ++j) A.col(j) = Av_[static_cast<std::size_t>(j)];
+      const Eigen::VectorXd coef = A.colPivHouseholderQr().solve(r);
+      for (int j = 0; j < dim; ++j)
+        v_[k] += coef(j) * (v_[static_cast<std::size_t>(j)] - Av_[static_cast<std::size_t>(j)]);
+    }
+    update = v_[k];
+    s = integrator.update(system, update);
+    if (!ok(s)) return s;
+    system.formResidual(c);
+    ++dim;
+    countIteration();
+    switch (test->test(system.X, system.B)) {
+      case ConvergenceTest::Result::Converged: return Status::Ok;
+      case ConvergenceTest::Result::Failed: return Status::NotConverged;
+      case ConvergenceTest::Result::Continue: break;
+    }
+  }
+}
+
+}  // namespace dabs::analysis

@@ -1,0 +1,70 @@
+// SPDX-License-Identifier: MIT
+#include "tcl/analysis/LinearSystem.h"
+
+#include <Eigen/LU>
+
+namespace dabs::analysis {
+
+namespace {
+bool sameCoefficients(const AssemblyCoefficients& a, const AssemblyCoefficients& b) {
+  return a.cK == b.cK && a.cC == b.cC && a.cM == b.cM && a.stiffness == b.stiffness;
+}
+}  // namespace
+
+LinearSystem::LinearSystem(AnalysisModel& model, SolverKind kind) : model_(model), kind_(kind) {}
+
+void LinearSystem::patternChanged() {
+  solver_ = LinearSolver::create(kind_, model_.nonSymmetric());
+  solver_->analyzePattern(model_.pattern());
+  factored_ = false;
+  B = X = Eigen::VectorXd::Zero(model_.numEquations());
+}
+
+Status LinearSystem::formTangent(const AssemblyCoefficients& c, bool reuse) {
+  if (reuse && factored_ && sameCoefficients(c, lastCoefficients_)) return Status::Ok;
+  const auto& A = model_.formTangent(c);
+  factored_ = false;
+  const Status s = solver_->factorize(A);
+  if (!ok(s)) return s;
+  lastCoefficients_ = c;
+  factored_ = true;
+  // Modal damping adds cC * U diag(d) U^T to A (OpenSees IncrementalIntegrator::addModalDampingMatrix).
+  modalScale_ = model_.hasModalDamping() ? c.cC : 0.0;
+  if (modalScale_ != 0.0) {
+    const Eigen::MatrixXd& U = model_.modalBasis();
+    const Eigen::VectorXd d = modalScale_ * model_.modalCoefficients();
+    modalW_.resize(U.rows(), U.cols());
+    Eigen::VectorXd col;
+    for (Eigen::Index j = 0; j < U.cols(); ++j) {
+      const Status sj = solver_->solve(U.col(j), col);
+      if (!ok(sj)) return sj;
+      modalW_.col(j) = col;
+    }
+    Eigen::MatrixXd core = U.transpose() * modalW_;
+    for (Eigen::Index j = 0; j < d.size(); ++j) {
+      if (d(j) != 0.0) core(j, j) += 1.0 / d(j);
+      else core(j, j) += 1e300;  // a mode without damping drops out
+    }
+    modalS_ = core.inverse();
+  }
+  return Status::Ok;
+}
+
+void LinearSystem::formResidual(const AssemblyCoefficients& c) { model_.formResidual(c, B); }
+
+Status LinearSystem::solve() { return solve(B, X); }
+
+Status LinearSystem::solve(const Eigen::VectorXd& b, Eigen::VectorXd& x) {
+  if (!factored_) return Status::Singular;
+  Status s = solver_->solve(b, x);
+  if (!ok(s)) return s;
+  if (modalScale_ != 0.0) {
+    // (A + U D U^T)^-1 b = y - W S U^T y with y = A^-1 b.
+    const Eigen::VectorXd t = modalS_ * (model_.modalBasis().transpose() * x);
+    x.noalias() -= modalW_ * t;
+    if (!x.allFinite()) return Status::NonFinite;
+  }
+  return Status::Ok;
+}
+
+}  // namespace dabs::analysis

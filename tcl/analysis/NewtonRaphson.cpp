@@ -1,0 +1,38 @@
+// SPDX-License-Identifier: MIT
+#include "tcl/analysis/NewtonRaphson.h"
+
+namespace dabs::analysis {
+
+Status NewtonRaphson::solveCurrentStep(LinearSystem& system, Integrator& integrator,
+                                       ConvergenceTest* test) {
+  if (test == nullptr) return Status::Failed;
+  iterations_ = 0;
+  const bool linear = system.model().allLinear();
+  system.formResidual(integrator.coefficients(StiffnessKind::Current));
+  test->start();
+  for (;;) {
+    StiffnessKind kind = StiffnessKind::Current;
+    if (tangent_ == Tangent::Initial || (tangent_ == Tangent::InitialThenCurrent && iterations_ == 0))
+      kind = StiffnessKind::Initial;
+    const AssemblyCoefficients c = integrator.coefficients(kind);
+    if (!modified_ || iterations_ == 0) {
+      // A constant matrix (initial stiffness, or a linear model) is factorised only when the
+      // step coefficients change; a current tangent at every iteration otherwise.
+      const Status s = system.formTangent(c, kind == StiffnessKind::Initial || linear);
+      if (!ok(s)) return s;
+    }
+    Status s = system.solve();
+    if (!ok(s)) return s;
+    s = integrator.update(system, system.X);
+    if (!ok(s)) return s;
+    system.formResidual(c);
+    countIteration();
+    switch (test->test(system.X, system.B)) {
+      case ConvergenceTest::Result::Converged: return Status::Ok;
+      case ConvergenceTest::Result::Failed: return Status::NotConverged;
+      case ConvergenceTest::Result::Continue: break;
+    }
+  }
+}
+
+}  // namespace dabs::analysis

@@ -1,0 +1,71 @@
+// SPDX-License-Identifier: MIT
+#include "tcl/commands/CommandTable.h"
+
+#include <string>
+
+#include "materials/InputError.h"
+#include "tcl/analysis/AnalysisBuilder.h"
+
+namespace dabs::tcl {
+
+namespace {
+
+int dispatch(ClientData data, Tcl_Interp* /*interp*/, int objc, Tcl_Obj* const objv[]) {
+  auto* binding = static_cast<CommandBinding*>(data);
+  return runCommand(*binding->runtime, *binding->entry, objc, objv);
+}
+
+// Flushes recorders when the program exits without deleting the interpreter.
+void flushAtExit(ClientData data) { static_cast<Runtime*>(data)->domain.flushRecorders(); }
+
+void deleteRuntime(ClientData data, Tcl_Interp* /*interp*/) {
+  Tcl_DeleteExitHandler(flushAtExit, data);
+  delete static_cast<Runtime*>(data);
+}
+
+void setError(Tcl_Interp* interp, const std::string& message) {
+  Tcl_SetObjResult(interp, Tcl_NewStringObj(message.c_str(), static_cast<int>(message.size())));
+}
+
+}  // namespace
+
+int runCommand(Runtime& rt, const CommandEntry& entry, int objc, Tcl_Obj* const objv[]) {
+  ArgReader args(objc, objv, std::string(entry.usage));
+  try {
+    Tcl_ResetResult(rt.interp);
+    entry.fn(rt, args);
+    return TCL_OK;
+  } catch (const ArgError& e) {
+    setError(rt.interp, e.what());
+  } catch (const InputError& e) {
+    std::string message = args.context() + ": " + e.what();
+    if (!args.usage().empty()) message += "; usage: " + args.usage();
+    setError(rt.interp, message);
+  } catch (const std::bad_alloc&) {
+    setError(rt.interp, args.context() + ": out of memory");
+  } catch (const std::exception& e) {
+    setError(rt.interp, args.context() + ": internal error: " + e.what());
+  }
+  return TCL_ERROR;
+}
+
+int registerCommands(Tcl_Interp* interp) {
+  auto* rt = new Runtime(interp);
+  Tcl_CallWhenDeleted(interp, deleteRuntime, rt);
+  Tcl_CreateExitHandler(flushAtExit, rt);
+  const std::span<const CommandEntry> families[] = {
+      modelCommands(),        loadCommands(),    analysisCommands(), queryCommands(),
+      recorderCommands(),     materialTestCommands(), sectionCommands(), bearingCommands(),
+      contactCommands(),
+  };
+  for (const auto& family : families) {
+    for (const CommandEntry& entry : family) {
+      rt->bindings.push_back(std::make_unique<CommandBinding>(CommandBinding{rt, &entry}));
+      Tcl_CreateObjCommand(interp, std::string(entry.name).c_str(), dispatch, rt->bindings.back().get(),
+                           nullptr);
+    }
+  }
+  return TCL_OK;
+}
+
+}  // namespace dabs::tcl

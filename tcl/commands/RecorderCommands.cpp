@@ -1,0 +1,128 @@
+// SPDX-License-Identifier: MIT
+// recorder Node|EnvelopeNode|Element|EnvelopeElement|Drift, and record.
+#include <string>
+
+#include "materials/InputError.h"
+#include "tcl/commands/Registry.h"
+#include "tcl/commands/SeriesParser.h"
+#include "tcl/commands/TclResult.h"
+#include "tcl/domain/ElementRecorder.h"
+#include "tcl/domain/NodeRecorder.h"
+
+namespace dabs::tcl {
+
+namespace {
+
+domain::RecorderOutput readOutput(ArgReader& a, bool envelope) {
+  domain::RecorderOutput out;
+  const auto file = a.optionalWordOption("-file");
+  if (!file) a.fail("-file fileName is required");
+  out.file = *file;
+  out.time = a.flag("-time");
+  out.deltaT = a.option("-dT", 0.0);
+  out.precision = a.option("-precision", 6);
+  out.envelope = envelope;
+  if (out.deltaT < 0.0) a.fail("-dT must not be negative");
+  if (out.precision < 1 || out.precision > 17) a.fail("-precision must be 1 to 17");
+  return out;
+}
+
+std::vector<int> readRange(ArgReader& a, const char* listKey, const char* rangeKey) {
+  std::vector<int> tags;
+  if (auto list = a.optionIntegerList(listKey)) tags = *list;
+  if (auto range = a.optionReals(rangeKey, 2))
+    for (int t = static_cast<int>((*range)[0]); t <= static_cast<int>((*range)[1]); ++t) tags.push_back(t);
+  return tags;
+}
+
+void nodeRecorder(Runtime& rt, ArgReader& a, bool envelope) {
+  domain::RecorderOutput out = readOutput(a, envelope);
+  std::vector<int> nodes = readRange(a, "-node", "-nodeRange");
+  if (nodes.empty()) a.fail("needs -node tags or -nodeRange a b");
+  const auto dofs = a.optionIntegerList("-dof");
+  if (!dofs) a.fail("-dof dofs is required");
+  std::vector<std::shared_ptr<const domain::TimeSeries>> series;
+  if (auto ts = a.optionIntegerList("-timeSeries"))
+    for (int t : *ts) series.push_back(t == 0 ? nullptr : rt.builder.series(t));
+  const std::string response = a.word("response");
+  using R = domain::NodeRecorder::Response;
+  R kind{};
+  int mode = 0;
+  if (response == "disp") kind = R::Disp;
+  else if (response == "vel") kind = R::Vel;
+  else if (response == "accel") kind = R::Accel;
+  else if (response == "incrDisp") kind = R::IncrDisp;
+  else if (response == "reaction") kind = R::Reaction;
+  else if (response.rfind("eigen", 0) == 0) {
+    kind = R::Eigen;
+    const std::string rest = response.substr(5);
+    if (!rest.empty()) mode = std::atoi(rest.c_str());
+    else mode = a.integer("mode");
+    if (mode < 1) a.fail("eigen needs a mode number from 1");
+  } else {
+    a.fail("response must be disp, vel, accel, incrDisp, reaction or eigen i, got \"" + response + "\"");
+  }
+  a.finish();
+  std::vector<int> zeroBased;
+  for (int d : *dofs) zeroBased.push_back(d - 1);
+  auto recorder = std::make_unique<domain::NodeRecorder>(out, nodes, zeroBased, kind, mode, series);
+  setResult(rt, rt.domain.addRecorder(std::move(recorder)));
+}
+
+void elementRecorder(Runtime& rt, ArgReader& a, bool envelope) {
+  domain::RecorderOutput out = readOutput(a, envelope);
+  std::vector<int> eles = readRange(a, "-ele", "-eleRange");
+  if (eles.empty()) a.fail("needs -ele tags or -eleRange a b");
+  std::vector<std::string> response;
+  while (a.hasMore()) response.push_back(a.word("response"));
+  auto recorder = std::make_unique<domain::ElementRecorder>(out, eles, response);
+  setResult(rt, rt.domain.addRecorder(std::move(recorder)));
+}
+
+void driftRecorder(Runtime& rt, ArgReader& a) {
+  domain::RecorderOutput out = readOutput(a, false);
+  const auto iNodes = a.optionIntegerList("-iNode");
+  const auto jNodes = a.optionIntegerList("-jNode");
+  const auto dofs = a.optionIntegerList("-dof");
+  const auto perp = a.optionIntegerList("-perpDirn");
+  a.finish();
+  if (!iNodes || !jNodes || !dofs || !perp) a.fail("needs -iNode, -jNode, -dof and -perpDirn");
+  std::vector<int> d0, p0;
+  for (int d : *dofs) d0.push_back(d - 1);
+  for (int p : *perp) p0.push_back(p - 1);
+  auto recorder = std::make_unique<domain::DriftRecorder>(out, *iNodes, *jNodes, d0, p0);
+  setResult(rt, rt.domain.addRecorder(std::move(recorder)));
+}
+
+void recorderCmd(Runtime& rt, ArgReader& a) {
+  rt.requireModel("recorder");
+  const std::string type = a.word("type");
+  a.setContext("recorder " + type);
+  if (type == "Node") nodeRecorder(rt, a, false);
+  else if (type == "EnvelopeNode") nodeRecorder(rt, a, true);
+  else if (type == "Element") elementRecorder(rt, a, false);
+  else if (type == "EnvelopeElement") elementRecorder(rt, a, true);
+  else if (type == "Drift") driftRecorder(rt, a);
+  else a.fail(1, "type", "expected Node, EnvelopeNode, Element, EnvelopeElement or Drift, got \"" + type + "\"");
+}
+
+void recordCmd(Runtime& rt, ArgReader& a) {
+  a.finish();
+  rt.domain.record();
+  rt.domain.flushRecorders();
+}
+
+constexpr CommandEntry kCommands[] = {
+    {"recorder",
+     "recorder Node|EnvelopeNode -file f ?-time? ?-dT dt? ?-precision p? -node tags|-nodeRange a b -dof dofs "
+     "disp|vel|accel|incrDisp|reaction|eigen i; recorder Element|EnvelopeElement -file f ?-time? -ele tags|-eleRange a b "
+     "response; recorder Drift -file f -iNode .. -jNode .. -dof .. -perpDirn ..",
+     recorderCmd},
+    {"record", "record", recordCmd},
+};
+
+}  // namespace
+
+std::span<const CommandEntry> recorderCommands() { return kCommands; }
+
+}  // namespace dabs::tcl

@@ -1,0 +1,31 @@
+// SPDX-License-Identifier: MIT
+#include "tcl/commands/Runtime.h"
+
+#include "materials/InputError.h"
+#include "tcl/analysis/AnalysisBuilder.h"
+#include "tcl/commands/CommandTable.h"
+
+namespace dabs::tcl {
+
+Runtime::Runtime(Tcl_Interp* interpreter)
+    : interp(interpreter), analysis(std::make_unique<analysis::AnalysisBuilder>(domain)) {
+  analysis->log = [this](const std::string& line) {
+    Tcl_Channel err = Tcl_GetStdChannel(TCL_STDERR);
+    if (err != nullptr) {
+      Tcl_WriteChars(err, line.c_str(), static_cast<int>(line.size()));
+      Tcl_WriteChars(err, "\n", 1);
+    }
+  };
+}
+
+Runtime::~Runtime() {
+  // Recorders flush in the domain's destructor; the analysis refers to the domain, so it goes first.
+  analysis.reset();
+}
+
+void Runtime::requireModel(const char* command) const {
+  if (!builder.defined())
+    throw InputError(command, "needs a model first: give `model basic -ndm n ?-ndf m?`");
+}
+
+}  // namespace dabs::tcl

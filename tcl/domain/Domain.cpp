@@ -1,0 +1,325 @@
+// SPDX-License-Identifier: MIT
+#include "tcl/domain/Domain.h"
+
+#include <algorithm>
+#include <string>
+
+#include "materials/InputError.h"
+
+namespace dabs::domain {
+
+Domain::Domain() = default;
+Domain::~Domain() { flushRecorders(); }
+
+Node& Domain::addNode(int tag, int ndm, int ndf, const Eigen::Vector3d& coords) {
+  if (nodes_.count(tag) != 0) throw InputError("tag", "node " + std::to_string(tag) + " already exists");
+  if (ndf < 1 || ndf > 6) throw InputError("ndf", "must be 1 to 6");
+  auto [it, inserted] = nodes_.emplace(tag, Node(tag, ndm, ndf, coords));
+  (void)inserted;
+  touch();
+  return it->second;
+}
+
+elements::Element& Domain::addElement(std::unique_ptr<elements::Element> element) {
+  if (!element) throw InputError("element", "is missing");
+  const int tag = element->tag();
+  if (elements_.count(tag) != 0)
+    throw InputError("tag", "element " + std::to_string(tag) + " already exists");
+  elements::NodalCoordinates x;
+  for (int n : element->nodeTags()) {
+    const Node* nd = findNode(n);
+    if (nd == nullptr) throw InputError("node", std::to_string(n) + " does not exist");
+    if (nd->ndf() != element->dofPerNode()) {
+      throw InputError("node", std::to_string(n) + " has " + std::to_string(nd->ndf()) +
+                                   " dofs but " + std::string(element->typeName()) + " needs " +
+                                   std::to_string(element->dofPerNode()));
+    }
+    x.push_back(nd->coords());
+  }
+  element->initialize(x);  // throws InputError on bad geometry, before anything is stored
+  auto& stored = *(elements_[tag] = std::move(element));
+  touch();
+  return stored;
+}
+
+const Node* Domain::findNode(int tag) const {
+  auto it = nodes_.find(tag);
+  return it == nodes_.end() ? nullptr : &it->second;
+}
+Node* Domain::findNode(int tag) {
+  auto it = nodes_.find(tag);
+  return it == nodes_.end() ? nullptr : &it->second;
+}
+const Node& Domain::node(int tag) const {
+  const Node* n = findNode(tag);
+  if (n == nullptr) throw InputError("node", std::to_string(tag) + " does not exist");
+  return *n;
+}
+Node& Domain::node(int tag) {
+  Node* n = findNode(tag);
+  if (n == nullptr) throw InputError("node", std::to_string(tag) + " does not exist");
+  return *n;
+}
+const elements::Element* Domain::findElement(int tag) const {
+  auto it = elements_.find(tag);
+  return it == elements_.end() ? nullptr : it->second.get();
+}
+elements::Element* Domain::findElement(int tag) {
+  auto it = elements_.find(tag);
+  return it == elements_.end() ? nullptr : it->second.get();
+}
+
+void Domain::removeElement(int tag) {
+  if (elements_.erase(tag) == 0) throw InputError("element", std::to_string(tag) + " does not exist");
+  elementRayleigh_.erase(tag);
+  touch();
+}
+
+void Domain::removeNode(int tag) {
+  if (nodes_.count(tag) == 0) throw InputError("node", std::to_string(tag) + " does not exist");
+  for (const auto& [etag, e] : elements_) {
+    const auto& nt = e->nodeTags();
+    if (std::find(nt.begin(), nt.end(), tag) != nt.end())
+      throw InputError("node", std::to_string(tag) + " is used by element " + std::to_string(etag));
+  }
+  for (const auto& mp : mps_) {
+    if (mp.retainedNode == tag || mp.constrainedNode == tag)
+      throw InputError("node", std::to_string(tag) + " is used by a multi-point constraint");
+  }
+  fixes_.erase(std::remove_if(fixes_.begin(), fixes_.end(),
+                              [tag](const SPConstraint& sp) { return sp.node == tag; }),
+               fixes_.end());
+  nodes_.erase(tag);
+  nodeAlphaM_.erase(tag);
+  touch();
+}
+
+void Domain::addFix(int nodeTag, int dof) {
+  const Node& n = node(nodeTag);
+  if (dof < 0 || dof >= n.ndf())
+    throw InputError("dof", std::to_string(dof + 1) + " is outside 1.." + std::to_string(n.ndf()) +
+                                " of node " + std::to_string(nodeTag));
+  for (const auto& sp : fixes_) {
+    if (sp.node == nodeTag && sp.dof == dof)
+      throw InputError("dof", std::to_string(dof + 1) + " of node " + std::to_string(nodeTag) +
+                                  " is already fixed");
+  }
+  for (const auto& mp : mps_) {
+    if (mp.constrainedNode == nodeTag &&
+        std::find(mp.constrainedDofs.begin(), mp.constrainedDofs.end(), dof) != mp.constrainedDofs.end())
+      throw InputError("dof", std::to_string(dof + 1) + " of node " + std::to_string(nodeTag) +
+                                  " is already constrained by a multi-point constraint");
+  }
+  fixes_.push_back({nodeTag, dof});
+  touch();
+}
+
+int Domain::removeFix(int nodeTag, int dof) {
+  const auto before = fixes_.size();
+  fixes_.erase(std::remove_if(fixes_.begin(), fixes_.end(),
+                              [&](const SPConstraint& sp) {
+                                return sp.node == nodeTag && (dof < 0 || sp.dof == dof);
+                              }),
+               fixes_.end());
+  const int removed = static_cast<int>(before - fixes_.size());
+  if (removed > 0) touch();
+  return removed;
+}
+
+void Domain::addMP(MPConstraint mp) {
+  const Node& r = node(mp.retainedNode);
+  const Node& c = node(mp.constrainedNode);
+  if (mp.retainedNode == mp.constrainedNode)
+    throw InputError("cNode", "must differ from the retained node");
+  if (mp.Ccr.rows() != static_cast<Eigen::Index>(mp.constrainedDofs.size()) ||
+      mp.Ccr.cols() != static_cast<Eigen::Index>(mp.retainedDofs.size()))
+    throw InputError("constraint", "matrix does not match the dof lists");
+  for (int d : mp.constrainedDofs) {
+    if (d < 0 || d >= c.ndf())
+      throw InputError("dof", std::to_string(d + 1) + " is outside 1.." + std::to_string(c.ndf()) +
+                                  " of node " + std::to_string(c.tag()));
+    for (const auto& sp : fixes_) {
+      if (sp.node == c.tag() && sp.dof == d)
+        throw InputError("dof", std::to_string(d + 1) + " of node " + std::to_string(c.tag()) +
+                                    " is fixed and cannot also be constrained");
+    }
+    for (const auto& other : mps_) {
+      if (other.constrainedNode == c.tag() &&
+          std::find(other.constrainedDofs.begin(), other.constrainedDofs.end(), d) !=
+              other.constrainedDofs.end())
+        throw InputError("dof", std::to_string(d + 1) + " of node " + std::to_string(c.tag()) +
+                                    " is already constrained");
+    }
+  }
+  for (int d : mp.retainedDofs) {
+    if (d < 0 || d >= r.ndf())
+      throw InputError("dof", std::to_string(d + 1) + " is outside 1.." + std::to_string(r.ndf()) +
+                                  " of node " + std::to_string(r.tag()));
+  }
+  mps_.push_back(std::move(mp));
+  touch();
+}
+
+LoadPattern& Domain::addPattern(std::unique_ptr<LoadPattern> pattern) {
+  const int tag = pattern->tag();
+  if (patterns_.count(tag) != 0)
+    throw InputError("tag", "pattern " + std::to_string(tag) + " already exists");
+  auto& stored = *(patterns_[tag] = std::move(pattern));
+  touch();
+  return stored;
+}
+
+LoadPattern* Domain::findPattern(int tag) {
+  auto it = patterns_.find(tag);
+  return it == patterns_.end() ? nullptr : it->second.get();
+}
+
+void Domain::removePattern(int tag) {
+  if (patterns_.erase(tag) == 0) throw InputError("pattern", std::to_string(tag) + " does not exist");
+  touch();
+}
+
+void Domain::setLoadConst() {
+  for (auto& [tag, p] : patterns_) p->setConstant(time_);
+}
+
+void Domain::setRayleigh(const RayleighFactors& f) {
+  for (const auto& [tag, e] : elements_) elementRayleigh_[tag] = f;
+  for (const auto& [tag, n] : nodes_) nodeAlphaM_[tag] = f.alphaM;
+  touch();
+}
+
+void Domain::setRayleigh(const RayleighFactors& f, const std::vector<int>& elementTags,
+                         const std::vector<int>& nodeTags) {
+  for (int t : elementTags) elementRayleigh_[t] = f;
+  for (int t : nodeTags) nodeAlphaM_[t] = f.alphaM;
+  touch();
+}
+
+RayleighFactors Domain::elementRayleigh(int elementTag) const {
+  auto it = elementRayleigh_.find(elementTag);
+  return it == elementRayleigh_.end() ? RayleighFactors{} : it->second;
+}
+
+double Domain::nodeAlphaM(int nodeTag) const {
+  auto it = nodeAlphaM_.find(nodeTag);
+  return it == nodeAlphaM_.end() ? 0.0 : it->second;
+}
+
+void Domain::commit() {
+  for (auto& [tag, n] : nodes_) n.commitState();
+  for (auto& [tag, e] : elements_) e->commitState();
+  committedTime_ = time_;
+  record();
+}
+
+void Domain::revertToLastCommit() {
+  for (auto& [tag, n] : nodes_) n.revertToLastCommit();
+  for (auto& [tag, e] : elements_) e->revertToLastCommit();
+  time_ = committedTime_;
+}
+
+void Domain::revertToStart() {
+  for (auto& [tag, n] : nodes_) n.revertToStart();
+  for (auto& [tag, e] : elements_) e->revertToStart();
+  time_ = committedTime_ = 0.0;
+}
+
+int Domain::addRecorder(std::unique_ptr<Recorder> recorder) {
+  recorder->initialize(*this);
+  const int tag = nextRecorderTag_++;
+  recorders_[tag] = std::move(recorder);
+  return tag;
+}
+
+void Domain::removeRecorder(int tag) {
+  auto it = recorders_.find(tag);
+  if (it == recorders_.end()) throw InputError("recorder", std::to_string(tag) + " does not exist");
+  it->second->flush();
+  recorders_.erase(it);
+}
+
+void Domain::removeAllRecorders() {
+  flushRecorders();
+  recorders_.clear();
+}
+
+void Domain::flushRecorders() {
+  for (auto& [tag, r] : recorders_) r->flush();
+}
+
+void Domain::record() {
+  bool reactionsDone = false;
+  for (auto& [tag, r] : recorders_) {
+    if (r->needsReactions() && !reactionsDone) {
+      calculateNodalReactions(false);
+      reactionsDone = true;
+    }
+    r->record(*this);
+  }
+}
+
+Eigen::VectorXd Domain::nodalLoad(int nodeTag) const {
+  const Node& n = node(nodeTag);
+  Eigen::VectorXd p = Eigen::VectorXd::Zero(n.ndf());
+  for (const auto& [tag, pat] : patterns_) {
+    if (pat->kind() != LoadPattern::Kind::Plain) continue;
+    const auto& plain = static_cast<const PlainPattern&>(*pat);
+    const double f = plain.factor(time_);
+    for (const auto& load : plain.loads)
+      if (load.node == nodeTag) p += f * load.values;
+  }
+  return p;
+}
+
+void Domain::calculateNodalReactions(bool includeInertia) {
+  for (auto& [tag, n] : nodes_) n.reaction = -nodalLoad(tag);
+  for (const auto& [etag, e] : elements_) {
+    Eigen::VectorXd f = e->resistingForce();
+    if (includeInertia) {
+      Eigen::Index offset = 0;
+      Eigen::VectorXd a(e->numDof()), v(e->numDof());
+      for (int nt : e->nodeTags()) {
+        const Node& n = nodes_.at(nt);
+        a.segment(offset, n.ndf()) = n.accel;
+        v.segment(offset, n.ndf()) = n.vel;
+        offset += n.ndf();
+      }
+      f += e->mass() * a;
+      const RayleighFactors r = elementRayleigh(etag);
+      if (r.any() && e->rayleighByDefault()) {
+        f += (r.alphaM * e->mass() + r.betaK * e->tangentStiff() + r.betaK0 * e->initialStiff() +
+              r.betaKc * e->committedStiff()) * v;
+      }
+    }
+    Eigen::Index offset = 0;
+    for (int nt : e->nodeTags()) {
+      Node& n = nodes_.at(nt);
+      n.reaction += f.segment(offset, n.ndf());
+      offset += n.ndf();
+    }
+  }
+  if (includeInertia) {
+    for (auto& [tag, n] : nodes_) {
+      n.reaction += n.mass() * n.accel + nodeAlphaM(tag) * n.mass() * n.vel;
+    }
+  }
+}
+
+void Domain::clear() {
+  removeAllRecorders();
+  nextRecorderTag_ = 0;
+  elements_.clear();
+  nodes_.clear();
+  fixes_.clear();
+  mps_.clear();
+  patterns_.clear();
+  elementRayleigh_.clear();
+  nodeAlphaM_.clear();
+  modalDamping.clear();
+  eigenvalues.clear();
+  time_ = committedTime_ = 0.0;
+  touch();
+}
+
+}  // namespace dabs::domain
