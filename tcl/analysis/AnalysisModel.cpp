@@ -304,6 +304,7 @@ void AnalysisModel::buildScatter() {
       for (auto [eb, cb] : row.eqs) row.valueIndex.push_back(valueIndex(ea, eb));
   }
   P_ = Eigen::VectorXd::Zero(neq_);
+  influence_.clear();
 }
 
 double AnalysisModel::termValue(const std::vector<Term>& terms, const Eigen::VectorXd& x,
@@ -349,6 +350,31 @@ void AnalysisModel::applyLoad(double t) {
   P_ = externalLoadAt(t);
 }
 
+const Eigen::VectorXd& AnalysisModel::influence(int dir) {
+  auto it = influence_.find(dir);
+  if (it != influence_.end()) return it->second;
+  // M r with r = 1 at every translational dof `dir` (nodal and element masses).
+  Eigen::VectorXd mr = Eigen::VectorXd::Zero(neq_);
+  for (const NodeLink& nl : nodes_) {
+    if (dir >= nl.node->ndf()) continue;
+    const Eigen::VectorXd col = nl.node->mass().col(dir);
+    for (const VecEntry& v : nl.vec) mr(v.eq) += v.coef * col(v.local);
+  }
+  for (const ElementLink& l : elements_) {
+    const auto m = l.element->mass();
+    if (m.isZero(0.0)) continue;
+    Eigen::VectorXd r = Eigen::VectorXd::Zero(l.element->numDof());
+    int offset = 0;
+    for (const domain::Node* n : l.nodes) {
+      if (dir < n->ndf()) r(offset + dir) = 1.0;
+      offset += n->ndf();
+    }
+    const Eigen::VectorXd emr = m * r;
+    for (const VecEntry& v : l.vec) mr(v.eq) += v.coef * emr(v.local);
+  }
+  return influence_[dir] = std::move(mr);
+}
+
 Eigen::VectorXd AnalysisModel::externalLoadAt(double t) {
   Eigen::VectorXd P = Eigen::VectorXd::Zero(neq_);
   for (const auto& [ptag, p] : domain_.patterns()) {
@@ -363,26 +389,7 @@ Eigen::VectorXd AnalysisModel::externalLoadAt(double t) {
       // Effective earthquake load -M r a_g (OpenSees EarthquakePattern::applyLoad).
       const auto& ue = static_cast<const domain::UniformExcitation&>(*p);
       const double ag = ue.factor(t);
-      if (ag == 0.0) continue;
-      const int dir = ue.dof();
-      for (const NodeLink& nl : nodes_) {
-        const int ndf = nl.node->ndf();
-        if (dir >= ndf) continue;
-        const Eigen::VectorXd mr = nl.node->mass().col(dir);
-        for (const VecEntry& v : nl.vec) P(v.eq) -= v.coef * mr(v.local) * ag;
-      }
-      for (const ElementLink& l : elements_) {
-        const auto m = l.element->mass();
-        if (m.size() == 0 || m.isZero(0.0)) continue;
-        Eigen::VectorXd r = Eigen::VectorXd::Zero(l.element->numDof());
-        int offset = 0;
-        for (const domain::Node* n : l.nodes) {
-          if (dir < n->ndf()) r(offset + dir) = 1.0;
-          offset += n->ndf();
-        }
-        const Eigen::VectorXd mr = m * r;
-        for (const VecEntry& v : l.vec) P(v.eq) -= v.coef * mr(v.local) * ag;
-      }
+      if (ag != 0.0) P.noalias() -= ag * influence(ue.dof());
     }
   }
   return P;

@@ -159,6 +159,8 @@ class AnalysisModel {
   std::vector<std::pair<domain::Node*, int>> eqDof_;  // node and dof of each equation
   Eigen::SparseMatrix<double> A_;
   Eigen::VectorXd P_;
+  std::map<int, Eigen::VectorXd> influence_;  // M r per excitation dof, formed once per build
+  const Eigen::VectorXd& influence(int dof);
   Eigen::MatrixXd modalMphi_;
   Eigen::VectorXd modalCoefficients_;
 };
