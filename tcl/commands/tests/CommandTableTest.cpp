@@ -1,0 +1,158 @@
+// SPDX-License-Identifier: MIT
+// Error paths of the model, load and analysis commands: every bad input is a Tcl error naming the
+// command and argument, and leaves the model unchanged.
+#include <fstream>
+#include <sstream>
+
+#include "tcl/commands/tests/TclFixture.h"
+
+namespace dabs::tcl::testing {
+
+namespace {
+std::string readFile(const std::string& path) {
+  std::ifstream in(path);
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+}  // namespace
+
+using CommandTableTest = TclFixture;
+
+TEST_F(CommandTableTest, NonNumberNamesCommandArgumentAndToken) {
+  ok("model basic -ndm 2 -ndf 3");
+  const std::string msg = error("node 1 0.0 abc");
+  EXPECT_NE(msg.find("node 1: argument 3 (y) expected a number, got \"abc\""), std::string::npos) << msg;
+  EXPECT_NE(msg.find("usage: node tag"), std::string::npos) << msg;
+  EXPECT_EQ(ok("getNodeTags"), "");
+}
+
+TEST_F(CommandTableTest, WrongCountOfCoordinates) {
+  ok("model basic -ndm 3 -ndf 6");
+  EXPECT_NE(error("node 1 0.0 1.0").find("too few arguments"), std::string::npos);
+  EXPECT_NE(error("node 1 0.0 1.0 2.0 3.0").find("unexpected argument \"3.0\""), std::string::npos);
+  EXPECT_EQ(ok("getNodeTags"), "");
+}
+
+TEST_F(CommandTableTest, DuplicateTagsAreRejectedAndModelKept) {
+  ok("model basic -ndm 1 -ndf 1; node 1 0.0; node 2 1.0; uniaxialMaterial Elastic 1 100.0");
+  EXPECT_NE(error("node 1 5.0").find("node 1 already exists"), std::string::npos);
+  EXPECT_EQ(number("nodeCoord 1 1"), 0.0);
+  EXPECT_NE(error("uniaxialMaterial Elastic 1 200.0").find("uniaxialMaterial 1 already exists"),
+            std::string::npos);
+  ok("element zeroLength 1 1 2 -mat 1 -dir 1");
+  EXPECT_NE(error("element zeroLength 1 1 2 -mat 1 -dir 1").find("element 1 already exists"),
+            std::string::npos);
+  EXPECT_EQ(ok("getEleTags"), "1");
+}
+
+TEST_F(CommandTableTest, UnknownTagsAndTypes) {
+  ok("model basic -ndm 1 -ndf 1; node 1 0.0; node 2 1.0; uniaxialMaterial Elastic 1 100.0");
+  EXPECT_NE(error("element zeroLength 1 1 3 -mat 1 -dir 1").find("node 3 does not exist"), std::string::npos);
+  EXPECT_NE(error("element zeroLength 1 1 2 -mat 9 -dir 1").find("uniaxialMaterial 9 does not exist"),
+            std::string::npos);
+  const std::string msg = error("element noSuchElement 1 1 2");
+  EXPECT_NE(msg.find("\"noSuchElement\" is not a known element"), std::string::npos) << msg;
+  EXPECT_NE(msg.find("zeroLength"), std::string::npos) << msg;
+  EXPECT_EQ(ok("getEleTags"), "");
+}
+
+TEST_F(CommandTableTest, ElementBetweenNodesOfWrongDofs) {
+  ok("model basic -ndm 2 -ndf 3; node 1 0 0; node 2 1 0 -ndf 2; uniaxialMaterial Elastic 1 100.0");
+  const std::string msg = error("element truss 1 1 2 1.0 1");
+  EXPECT_NE(msg.find("node 2 has 2 dofs but truss needs 3"), std::string::npos) << msg;
+  EXPECT_EQ(ok("getEleTags"), "");
+}
+
+TEST_F(CommandTableTest, CommandsBeforeModelAndAnalysisBeforeDefinition) {
+  EXPECT_NE(error("node 1 0.0").find("needs a model first"), std::string::npos);
+  ok("model basic -ndm 1 -ndf 1; node 1 0.0");
+  EXPECT_NE(error("analyze 1").find("analysis is not defined"), std::string::npos);
+}
+
+TEST_F(CommandTableTest, FixIsAllOrNothing) {
+  ok("model basic -ndm 2 -ndf 3; node 1 0 0; fix 1 0 1 0");
+  // dof 2 is fixed already: the whole command fails and dof 1 is not fixed either.
+  EXPECT_NE(error("fix 1 1 1 0").find("already fixed"), std::string::npos);
+  ok("fix 1 1 0 0");
+  EXPECT_NE(error("fix 1 1 0 2").find("expected 0 or 1"), std::string::npos);
+}
+
+TEST_F(CommandTableTest, PatternBodyErrorRemovesThePattern) {
+  ok("model basic -ndm 1 -ndf 1; node 1 0.0; timeSeries Linear 1");
+  const std::string msg = error("pattern Plain 1 1 { load 1 1.0; load 7 1.0 }");
+  EXPECT_NE(msg.find("node 7 does not exist"), std::string::npos) << msg;
+  ok("pattern Plain 1 1 { load 1 2.0 }");  // the tag is free again
+}
+
+TEST_F(CommandTableTest, SingularSystemIsAStatusNotAnError) {
+  // A free node with no stiffness: the factorisation fails, analyze returns a negative code and
+  // the model stays at its last converged state.
+  ok("model basic -ndm 1 -ndf 1; node 1 0.0; node 2 1.0; fix 1 1; node 3 2.0");
+  ok("uniaxialMaterial Elastic 1 100.0; element zeroLength 1 1 2 -mat 1 -dir 1");
+  ok("timeSeries Linear 1; pattern Plain 1 1 { load 2 1.0; load 3 1.0 }");
+  ok("system BandGeneral; test NormDispIncr 1e-10 10; algorithm Newton; integrator LoadControl 1.0; analysis Static");
+  EXPECT_LT(number("analyze 1"), 0.0);
+  EXPECT_EQ(number("nodeDisp 2 1"), 0.0);
+  EXPECT_EQ(number("getTime"), 0.0);
+}
+
+TEST_F(CommandTableTest, StaticSpringGivesHookesLaw) {
+  // k u = P for a linear spring: u = 3 / 100.
+  ok("model basic -ndm 1 -ndf 1; node 1 0.0; node 2 0.0; fix 1 1");
+  ok("uniaxialMaterial Elastic 1 100.0; element zeroLength 1 1 2 -mat 1 -dir 1");
+  ok("timeSeries Linear 1; pattern Plain 1 1 { load 2 3.0 }");
+  ok("system BandSPD; test NormUnbalance 1e-12 5; algorithm Newton; integrator LoadControl 1.0; analysis Static");
+  EXPECT_EQ(number("analyze 1"), 0.0);
+  EXPECT_NEAR(number("nodeDisp 2 1"), 0.03, 1e-14);
+  ok("reactions");
+  EXPECT_NEAR(number("nodeReaction 1 1"), -3.0, 1e-12);
+}
+
+TEST_F(CommandTableTest, NodeRecorderWritesOpenSeesLayout) {
+  const std::string file = ::testing::TempDir() + "dabs-node-recorder.out";
+  ok("model basic -ndm 1 -ndf 1; node 1 0.0; node 2 0.0; fix 1 1");
+  ok("uniaxialMaterial Elastic 1 100.0; element zeroLength 1 1 2 -mat 1 -dir 1");
+  ok("timeSeries Linear 1; pattern Plain 1 1 { load 2 1.0 }");
+  ok("recorder Node -file " + file + " -time -precision 4 -node 2 -dof 1 disp");
+  ok("integrator LoadControl 0.5; analysis Static");
+  ok("analyze 2");
+  // u = lambda / 100 at lambda = 0.5, 1.0; 4 significant digits, one space, newline.
+  EXPECT_EQ(readFile(file), "0.5 0.005\n1 0.01\n");
+}
+
+TEST_F(CommandTableTest, EnvelopeRecorderWritesMinMaxAbsMax) {
+  const std::string file = ::testing::TempDir() + "dabs-envelope.out";
+  ok("model basic -ndm 1 -ndf 1; node 1 0.0; node 2 0.0; fix 1 1");
+  ok("uniaxialMaterial Elastic 1 100.0; element zeroLength 1 1 2 -mat 1 -dir 1");
+  ok("timeSeries Path 1 -time {0 1 2 3} -values {0 1 -2 0.5}; pattern Plain 1 1 { load 2 100.0 }");
+  ok("recorder EnvelopeNode -file " + file + " -node 2 -dof 1 disp");
+  ok("integrator LoadControl 1.0; analysis Static");
+  ok("analyze 2");  // u = 1, -2
+  ok("remove recorders");
+  EXPECT_EQ(readFile(file), "-2\n1\n2\n");
+}
+
+TEST_F(CommandTableTest, RecorderKeepsRowsWhenALaterStepFails) {
+  const std::string file = ::testing::TempDir() + "dabs-keep.out";
+  // An elastic-perfectly-plastic spring cannot carry more than Fy = 1: the third load step fails.
+  ok("model basic -ndm 1 -ndf 1; node 1 0.0; node 2 0.0; fix 1 1");
+  ok("uniaxialMaterial ElasticPP 1 100.0 0.01; element zeroLength 1 1 2 -mat 1 -dir 1");
+  ok("timeSeries Linear 1; pattern Plain 1 1 { load 2 0.45 }");
+  ok("recorder Node -file " + file + " -node 2 -dof 1 disp");
+  ok("test NormUnbalance 1e-10 10; algorithm Newton; integrator LoadControl 1.0; analysis Static");
+  EXPECT_LT(number("analyze 5"), 0.0);  // the tangent vanishes after yield: singular
+  EXPECT_EQ(readFile(file), "0.0045\n0.009\n");
+  EXPECT_NEAR(number("getTime"), 2.0, 1e-15);
+  EXPECT_NEAR(number("nodeDisp 2 1"), 0.009, 1e-15);
+}
+
+TEST_F(CommandTableTest, WipeClearsEverything) {
+  ok("model basic -ndm 1 -ndf 1; node 1 0.0");
+  ok("wipe");
+  EXPECT_NE(error("node 2 0.0").find("needs a model first"), std::string::npos);
+  ok("model basic -ndm 1 -ndf 1");
+  EXPECT_EQ(ok("getNodeTags"), "");
+}
+
+}  // namespace dabs::tcl::testing
