@@ -5,7 +5,10 @@
 #include <array>
 #include <string>
 
+#include "elements/beam/DispBeamColumn.h"
 #include "elements/beam/ElasticBeam2d.h"
+#include "elements/beam/ForceBeamColumn.h"
+#include "elements/beam/QuadratureIntegration.h"
 #include "elements/beam/ElasticBeam3d.h"
 #include "elements/transform/CorotationalTransf2d.h"
 #include "elements/transform/LinearTransf2d.h"
@@ -13,15 +16,237 @@
 #include "elements/transform/PDeltaTransf2d.h"
 #include "elements/transform/PDeltaTransf3d.h"
 #include "materials/InputError.h"
+#include "materials/section/FiberSection.h"
+#include "materials/section/geometry/CircPatch.h"
+#include "materials/section/geometry/QuadPatch.h"
+#include "materials/section/geometry/StraightLayer.h"
 #include "tcl/commands/Registry.h"
 
 namespace dabs::tcl {
+
+/// Fibers collected while a `section Fiber` body runs.
+struct FiberSectionUnderConstruction {
+  int ndm = 2;
+  materials::section::FiberList fibers;
+};
 
 namespace {
 
 using elements::CrdTransf;
 using elements::CrdTransf2d;
 using elements::CrdTransf3d;
+using materials::section::FiberList;
+
+/// Sets rt.currentFiberSection for the lifetime of the guard (cleared on every exit path).
+class FiberSectionGuard {
+ public:
+  FiberSectionGuard(Runtime& rt, FiberSectionUnderConstruction* s) : rt_(rt) {
+    rt_.currentFiberSection = s;
+  }
+  ~FiberSectionGuard() { rt_.currentFiberSection = nullptr; }
+  FiberSectionGuard(const FiberSectionGuard&) = delete;
+  FiberSectionGuard& operator=(const FiberSectionGuard&) = delete;
+
+ private:
+  Runtime& rt_;
+};
+
+FiberSectionUnderConstruction& currentSection(Runtime& rt, ArgReader& args) {
+  if (rt.currentFiberSection == nullptr) args.fail("is only valid inside a section Fiber body");
+  return *rt.currentFiberSection;
+}
+
+int existingMaterial(Runtime& rt, ArgReader& args) {
+  const int tag = args.integer("matTag");
+  (void)rt.builder.uniaxialMaterial(tag);  // throws InputError when absent
+  return tag;
+}
+
+// fiber y z A matTag   (in 2D OpenSees also writes `fiber y z A matTag`; z is ignored)
+void fiberCommand(Runtime& rt, ArgReader& args) {
+  args.setContext("fiber");
+  FiberSectionUnderConstruction& s = currentSection(rt, args);
+  const double y = args.real("y"), z = args.real("z"), a = args.real("A");
+  const int mat = existingMaterial(rt, args);
+  args.finish();
+  if (!(a > 0.0)) throw InputError("A", "must be positive");
+  s.fibers.push_back({y, z, a, mat});
+}
+
+// patch rect matTag nY nZ yI zI yJ zJ | quad matTag nIJ nJK yI zI yJ zJ yK zK yL zL |
+// circ matTag nCirc nRad yC zC rInt rExt ?startAng endAng?
+void patchCommand(Runtime& rt, ArgReader& args) {
+  FiberSectionUnderConstruction& s = currentSection(rt, args);
+  const std::string type = args.word("type");
+  args.setContext("patch " + type);
+  FiberList out;
+  if (type == "rect" || type == "quad" || type == "quadr") {
+    const int mat = existingMaterial(rt, args);
+    const int n1 = args.integer(type == "rect" ? "numSubdivY" : "numSubdivIJ");
+    const int n2 = args.integer(type == "rect" ? "numSubdivZ" : "numSubdivJK");
+    const std::vector<double> c = args.reals("coordinates", type == "rect" ? 4 : 8, true);
+    args.finish();
+    materials::section::QuadPatch q;
+    if (type == "rect") {
+      q = materials::section::QuadPatch::rect(mat, n1, n2, c[0], c[1], c[2], c[3]);
+    } else {
+      q.materialTag = mat;
+      q.divIJ = n1;
+      q.divJK = n2;
+      for (int k = 0; k < 4; ++k) {
+        q.y[k] = c[2 * k];
+        q.z[k] = c[2 * k + 1];
+      }
+    }
+    q.validate();
+    q.discretize(out);
+  } else if (type == "circ") {
+    materials::section::CircPatch c;
+    c.materialTag = existingMaterial(rt, args);
+    c.divCirc = args.integer("numSubdivCirc");
+    c.divRad = args.integer("numSubdivRad");
+    c.yCenter = args.real("yCenter");
+    c.zCenter = args.real("zCenter");
+    c.rInt = args.real("intRad");
+    c.rExt = args.real("extRad");
+    if (auto a = args.optionalReal("startAng")) {
+      c.startAngle = *a;
+      c.endAngle = args.real("endAng");
+    }
+    args.finish();
+    c.validate();
+    c.discretize(out);
+  } else {
+    args.fail(args.lastPosition(), "type", "unknown patch \"" + type + "\" (rect, quad, circ)");
+  }
+  s.fibers.insert(s.fibers.end(), out.begin(), out.end());
+}
+
+// layer straight matTag numBars areaBar yStart zStart yEnd zEnd |
+// layer circ matTag numBars areaBar yC zC radius ?startAng endAng?
+void layerCommand(Runtime& rt, ArgReader& args) {
+  FiberSectionUnderConstruction& s = currentSection(rt, args);
+  const std::string type = args.word("type");
+  args.setContext("layer " + type);
+  FiberList out;
+  if (type == "straight") {
+    materials::section::StraightLayer l;
+    l.materialTag = existingMaterial(rt, args);
+    l.numBars = args.integer("numBars");
+    l.barArea = args.real("areaBar");
+    const std::vector<double> c = args.reals("coordinates", 4, true);
+    args.finish();
+    l.yStart = c[0];
+    l.zStart = c[1];
+    l.yEnd = c[2];
+    l.zEnd = c[3];
+    l.validate();
+    l.discretize(out);
+  } else if (type == "circ") {
+    materials::section::CircLayer l;
+    l.materialTag = existingMaterial(rt, args);
+    l.numBars = args.integer("numBars");
+    l.barArea = args.real("areaBar");
+    l.yCenter = args.real("yCenter");
+    l.zCenter = args.real("zCenter");
+    l.radius = args.real("radius");
+    if (auto a = args.optionalReal("startAng")) {
+      l.startAngle = *a;
+      l.endAngle = args.real("endAng");
+    }
+    args.finish();
+    l.validate();
+    l.discretize(out);
+  } else {
+    args.fail(args.lastPosition(), "type", "unknown layer \"" + type + "\" (straight, circ)");
+  }
+  s.fibers.insert(s.fibers.end(), out.begin(), out.end());
+}
+
+template <class S>
+std::unique_ptr<S> buildFiberSection(const Runtime& rt, int tag,
+                                     const FiberSectionUnderConstruction& under, double gj) {
+  std::vector<typename S::Fiber> fibers;
+  for (const auto& f : under.fibers)
+    fibers.push_back({f.y, f.z, f.area, &rt.builder.uniaxialMaterial(f.materialTag)});
+  return std::make_unique<S>(tag, fibers, gj);
+}
+
+// section Fiber tag ?-GJ GJ? {body}
+void sectionCommand(Runtime& rt, ArgReader& args) {
+  rt.requireModel("section");
+  const int ndm = rt.builder.ndm;
+  const std::string type = args.word("type");
+  if (type != "Fiber" && type != "fiberSec")
+    args.fail(args.lastPosition(), "type", "unknown section \"" + type + "\" (available: Fiber)");
+  args.setContext("section " + type);
+  args.setUsage("section Fiber tag ?-GJ GJ? { fiber ...; patch ...; layer ... }");
+  const int tag = readNewTag(args, rt.builder.sections, "section");
+  if (rt.currentFiberSection != nullptr) args.fail("section Fiber bodies cannot be nested");
+  const std::optional<double> gj = args.optionalOption("-GJ");
+  Tcl_Obj* body = args.object("body");
+  args.finish();
+  if (ndm == 3 && !gj) args.fail("a 3D fiber section needs -GJ GJ (torsional stiffness)");
+  FiberSectionUnderConstruction under{ndm, {}};
+  int code = TCL_OK;
+  {
+    FiberSectionGuard guard(rt, &under);
+    Tcl_IncrRefCount(body);
+    code = Tcl_EvalObjEx(rt.interp, body, 0);
+    Tcl_DecrRefCount(body);
+  }
+  if (code != TCL_OK)
+    throw ArgError(args.context() + ": error in the section body: " +
+                   Tcl_GetStringResult(rt.interp));
+  std::unique_ptr<materials::section::SectionForceDeformation> section;
+  if (ndm == 2)
+    section = buildFiberSection<materials::section::FiberSection2d>(rt, tag, under, 0.0);
+  else
+    section = buildFiberSection<materials::section::FiberSection3d>(rt, tag, under, *gj);
+  rt.builder.sections[tag] = std::move(section);
+  Tcl_SetObjResult(rt.interp, Tcl_NewIntObj(tag));
+}
+
+// beamIntegration Lobatto|Legendre|Radau|NewtonCotes tag secTag N |
+// beamIntegration HingeRadau tag secI lpI secJ lpJ secE
+void beamIntegrationCommand(Runtime& rt, ArgReader& args) {
+  rt.requireModel("beamIntegration");
+  const std::string type = args.word("type");
+  args.setContext("beamIntegration " + type);
+  using Rule = elements::QuadratureIntegration::Rule;
+  std::unique_ptr<elements::BeamIntegration> rule;
+  if (type == "HingeRadau") {
+    args.setUsage("beamIntegration HingeRadau tag secI lpI secJ lpJ secE");
+    const int tag = readNewTag(args, rt.builder.integrations, "beamIntegration");
+    const int secI = args.integer("secI");
+    const double lpI = args.real("lpI");
+    const int secJ = args.integer("secJ");
+    const double lpJ = args.real("lpJ");
+    const int secE = args.integer("secE");
+    args.finish();
+    for (int s : {secI, secJ, secE}) (void)rt.builder.section(s);
+    rule = std::make_unique<elements::HingeRadauIntegration>(tag, secI, lpI, secJ, lpJ, secE);
+  } else {
+    Rule r;
+    if (type == "Lobatto") r = Rule::Lobatto;
+    else if (type == "Legendre") r = Rule::Legendre;
+    else if (type == "Radau") r = Rule::Radau;
+    else if (type == "NewtonCotes") r = Rule::NewtonCotes;
+    else
+      args.fail(args.lastPosition(), "type",
+                "unknown rule \"" + type + "\" (Lobatto, Legendre, Radau, NewtonCotes, HingeRadau)");
+    args.setUsage("beamIntegration " + type + " tag secTag N");
+    const int tag = readNewTag(args, rt.builder.integrations, "beamIntegration");
+    const int sec = args.integer("secTag");
+    const int n = args.integer("N");
+    args.finish();
+    (void)rt.builder.section(sec);
+    rule = std::make_unique<elements::QuadratureIntegration>(tag, r, sec, n);
+  }
+  const int tag = rule->tag();
+  rt.builder.integrations[tag] = std::move(rule);
+  Tcl_SetObjResult(rt.interp, Tcl_NewIntObj(tag));
+}
 
 constexpr const char* kGeomTransfUsage2d = "geomTransf Linear|PDelta|Corotational tag";
 constexpr const char* kGeomTransfUsage3d =
@@ -122,9 +347,89 @@ std::unique_ptr<elements::Element> parseElasticBeam(Runtime& rt, ArgReader& args
                                                    transformFor<CrdTransf2d>(rt, transfTag));
 }
 
+// element forceBeamColumn|nonlinearBeamColumn|dispBeamColumn tag i j transfTag integrationTag
+//   ?-iter maxIter tol? ?-mass m?     or the older   tag i j nIP secTag transfTag ?...?
+template <bool Force>
+std::unique_ptr<elements::Element> parseSectionBeam(Runtime& rt, ArgReader& args, int tag) {
+  const int ndm = rt.builder.ndm;
+  const int iNode = args.integer("iNode");
+  const int jNode = args.integer("jNode");
+  const std::vector<int> ints = args.integers("transfTag integrationTag | nIP secTag transfTag", 2);
+  if (ints.size() > 3) args.fail("too many integer arguments");
+  int maxIter = 10;
+  double tol = 1e-12;
+  if (auto it = args.optionReals("-iter", 2)) {
+    maxIter = static_cast<int>((*it)[0]);
+    tol = (*it)[1];
+  }
+  const double mass = args.option("-mass", 0.0);
+  const std::string integrationType = args.option("-integration", std::string("Lobatto"));
+  args.finish();
+  if (maxIter < 1) throw InputError("-iter maxIter", "must be at least 1");
+  if (!(tol > 0.0)) throw InputError("-iter tol", "must be positive");
+  if (!(mass >= 0.0)) throw InputError("-mass", "must be zero or positive");
+  const double length = (rt.domain.node(jNode).coords() - rt.domain.node(iNode).coords()).norm();
+  if (!(length > 0.0)) throw InputError("element", "nodes coincide (zero length)");
+
+  std::unique_ptr<elements::BeamIntegration> owned;
+  const elements::BeamIntegration* rule = nullptr;
+  int transfTag = 0;
+  if (ints.size() == 2) {
+    transfTag = ints[0];
+    rule = &rt.builder.integration(ints[1]);
+  } else {
+    transfTag = ints[2];
+    using Rule = elements::QuadratureIntegration::Rule;
+    Rule r = Rule::Lobatto;
+    if (integrationType == "Legendre") r = Rule::Legendre;
+    else if (integrationType == "Radau") r = Rule::Radau;
+    else if (integrationType == "NewtonCotes") r = Rule::NewtonCotes;
+    else if (integrationType != "Lobatto")
+      throw InputError("-integration", "must be Lobatto, Legendre, Radau or NewtonCotes");
+    owned = std::make_unique<elements::QuadratureIntegration>(0, r, ints[1], ints[0]);
+    rule = owned.get();
+  }
+  const std::vector<int> secs = rule->sectionTags();
+  const std::vector<double> xi = rule->locations(length), w = rule->weights(length);
+  std::vector<elements::BeamIntegrationPoint> pts;
+  for (std::size_t k = 0; k < secs.size(); ++k)
+    pts.push_back({rt.builder.section(secs[k]).clone(), xi[k], w[k]});
+  if (ndm == 3) {
+    auto t = transformFor<CrdTransf3d>(rt, transfTag);
+    if constexpr (Force)
+      return std::make_unique<elements::ForceBeamColumn3d>(tag, iNode, jNode, std::move(pts),
+                                                           std::move(t), mass, maxIter, tol);
+    else
+      return std::make_unique<elements::DispBeamColumn3d>(tag, iNode, jNode, std::move(pts),
+                                                          std::move(t), mass);
+  }
+  auto t = transformFor<CrdTransf2d>(rt, transfTag);
+  if constexpr (Force)
+    return std::make_unique<elements::ForceBeamColumn2d>(tag, iNode, jNode, std::move(pts),
+                                                         std::move(t), mass, maxIter, tol);
+  else
+    return std::make_unique<elements::DispBeamColumn2d>(tag, iNode, jNode, std::move(pts),
+                                                        std::move(t), mass);
+}
+
+
 constexpr std::array kSectionCommands{
     CommandEntry{"geomTransf", "geomTransf Linear|PDelta|Corotational tag ?vecxzX vecxzY vecxzZ?",
                  geomTransfCommand},
+    CommandEntry{"section", "section Fiber tag ?-GJ GJ? {body}", sectionCommand},
+    CommandEntry{"fiber", "fiber y z A matTag", fiberCommand},
+    CommandEntry{"patch",
+                 "patch rect matTag nY nZ yI zI yJ zJ | quad matTag nIJ nJK yI zI yJ zJ yK zK yL zL"
+                 " | circ matTag nCirc nRad yC zC rInt rExt ?startAng endAng?",
+                 patchCommand},
+    CommandEntry{"layer",
+                 "layer straight matTag numBars areaBar yStart zStart yEnd zEnd | circ matTag "
+                 "numBars areaBar yC zC radius ?startAng endAng?",
+                 layerCommand},
+    CommandEntry{"beamIntegration",
+                 "beamIntegration Lobatto|Legendre|Radau|NewtonCotes tag secTag N | HingeRadau tag "
+                 "secI lpI secJ lpJ secE",
+                 beamIntegrationCommand},
 };
 
 constexpr std::array kBeamElements{
@@ -132,6 +437,19 @@ constexpr std::array kBeamElements{
                  "element elasticBeamColumn tag iNode jNode A E Iz transfTag ?-mass m? ?-cMass? "
                  "(2D) | tag iNode jNode A E G J Iy Iz transfTag ?-mass m? ?-cMass? (3D)",
                  parseElasticBeam},
+    ElementEntry{"forceBeamColumn",
+                 "element forceBeamColumn tag iNode jNode transfTag integrationTag ?-iter maxIter "
+                 "tol? ?-mass m? | tag iNode jNode nIP secTag transfTag ?-iter maxIter tol? ?-mass m?"
+                 " ?-integration Lobatto|Legendre|Radau|NewtonCotes?",
+                 parseSectionBeam<true>},
+    ElementEntry{"nonlinearBeamColumn",
+                 "element nonlinearBeamColumn tag iNode jNode nIP secTag transfTag ?-iter maxIter "
+                 "tol? ?-mass m?",
+                 parseSectionBeam<true>},
+    ElementEntry{"dispBeamColumn",
+                 "element dispBeamColumn tag iNode jNode transfTag integrationTag ?-mass m? | tag "
+                 "iNode jNode nIP secTag transfTag ?-mass m? ?-integration Lobatto|Legendre|Radau?",
+                 parseSectionBeam<false>},
 };
 
 }  // namespace
