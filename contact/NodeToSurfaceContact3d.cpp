@@ -61,6 +61,13 @@ void NodeToSurfaceContact3d<Ndf>::initialize(const elements::NodalCoordinates& x
     throw InputError("surface",
                      "outward normal (b-a)x(d-a) points away from the contactor node: "
                      "list the target nodes a b c d in the opposite order");
+  // Evaluate the undeformed state once so gap and projection are known before the first step;
+  // revertToStart returns to it.
+  initial_ = NodeToSurfaceState{};
+  revertToStart();
+  const Eigen::VectorXd zero = Eigen::VectorXd::Zero(Base::kNumDof);
+  if (ok(update(elements::Kinematics{zero, zero, zero, 0.0, 0.0}))) commitState();
+  initial_ = committed_;
   revertToStart();
 }
 
@@ -75,7 +82,7 @@ void NodeToSurfaceContact3d<Ndf>::clearForces() {
 
 template <int Ndf>
 void NodeToSurfaceContact3d<Ndf>::revertToStart() {
-  trial_ = committed_ = NodeToSurfaceState{};
+  trial_ = committed_ = initial_;
   forcesZero_ = false;
   clearForces();
 }

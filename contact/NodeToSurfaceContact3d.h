@@ -125,6 +125,7 @@ class NodeToSurfaceContact3d : public elements::FixedSizeElement<5, Ndf> {
   std::array<Eigen::Vector3d, 5> X_{};  ///< reference coordinates (k, a, b, c, d)
   Eigen::Vector3d origin_ = Eigen::Vector3d::Zero();  ///< reference centroid of the quad
   bool forcesZero_ = true;
+  NodeToSurfaceState initial_{};  ///< state of the undeformed geometry (set by initialize)
   NodeToSurfaceState trial_{};
   NodeToSurfaceState committed_{};
 };

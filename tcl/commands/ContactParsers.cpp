@@ -1,10 +1,258 @@
 // SPDX-License-Identifier: MIT
+// Issue 5 (girder pounding): `uniaxialMaterial Restrainer|Bumper`, `element nodeToSurface` and the
+// `pounding` command that creates the contact pairs between two girder ends both ways.
+
+#include <tcl.h>
+
+#include <array>
+#include <memory>
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "contact/NodeToSurfaceContact3d.h"
+#include "materials/BumperGap.h"
+#include "materials/InputError.h"
+#include "materials/RestrainerGap.h"
 #include "tcl/commands/Registry.h"
 
 namespace dabs::tcl {
 
-std::span<const CommandEntry> contactCommands() { return {}; }
-std::span<const UniaxialEntry> contactUniaxialParsers() { return {}; }
-std::span<const ElementEntry> contactElementParsers() { return {}; }
+namespace {
+
+using contact::NodeToSurfaceParams;
+
+// --- uniaxialMaterial Restrainer | Bumper tag k gap ?-Fy Fy -b b? -------------------------
+
+materials::GapSpringParams readGapSpring(ArgReader& args) {
+  materials::GapSpringParams p;
+  p.k = args.real("k");
+  const std::size_t kPos = args.lastPosition();
+  p.gap = args.real("gap");
+  const std::size_t gapPos = args.lastPosition();
+  const auto fy = args.optionalOption("-Fy");
+  const auto b = args.optionalOption("-b");
+  args.finish();
+  if (b && !fy) args.fail("-b needs -Fy (the post-yield ratio of a spring that never yields)");
+  if (fy) p.Fy = *fy;
+  if (b) p.b = *b;
+  try {
+    p.validate();
+  } catch (const InputError& e) {
+    if (e.field() == "k") args.fail(kPos, "k", e.reason());
+    if (e.field() == "gap") args.fail(gapPos, "gap", e.reason());
+    args.fail("-" + e.field() + " " + e.reason());
+  }
+  return p;
+}
+
+std::unique_ptr<materials::UniaxialMaterial> parseRestrainer(Runtime& /*rt*/, ArgReader& args,
+                                                             int tag) {
+  return std::make_unique<materials::RestrainerGap>(tag, readGapSpring(args));
+}
+
+std::unique_ptr<materials::UniaxialMaterial> parseBumper(Runtime& /*rt*/, ArgReader& args, int tag) {
+  return std::make_unique<materials::BumperGap>(tag, readGapSpring(args));
+}
+
+// --- contact options shared by nodeToSurface and pounding -----------------------------------
+
+/// Option spelling of each NodeToSurfaceParams field, for error messages.
+std::string optionOf(const std::string& field) {
+  if (field == "M1" || field == "M2") return "-masses (" + field + ")";
+  if (field == "K") return "-K (or -EAL)";
+  return "-" + field;
+}
+
+/// Reads -K K | -EAL E A L, -e, -et, -mu_s, -mu_k, -masses M1 M2, -search and validates them.
+/// When only one friction coefficient is given the other takes its value.
+NodeToSurfaceParams readContactOptions(ArgReader& args) {
+  NodeToSurfaceParams p;
+  const auto K = args.optionalOption("-K");
+  const auto EAL = args.optionReals("-EAL", 3);
+  if (K && EAL) args.fail("give either -K K or -EAL E A L, not both");
+  if (!K && !EAL) args.fail("the contact stiffness is missing: give -K K or -EAL E A L");
+  if (K) p.K = *K;
+  if (EAL) {
+    const auto& v = *EAL;
+    if (!(v[2] > 0.0)) args.fail("-EAL: the length L must be positive");
+    p.K = v[0] * v[1] / v[2];  // axial stiffness of the contactor body (Zhu et al. 2002)
+  }
+  p.e = args.option("-e", 1.0);
+  p.et = args.option("-et", 1.0);
+  const auto muS = args.optionalOption("-mu_s");
+  const auto muK = args.optionalOption("-mu_k");
+  p.muS = muS ? *muS : (muK ? *muK : 0.0);
+  p.muK = muK ? *muK : p.muS;
+  if (const auto m = args.optionReals("-masses", 2)) {
+    p.M1 = (*m)[0];
+    p.M2 = (*m)[1];
+  }
+  p.search = args.option("-search", p.search);
+  try {
+    p.validate();
+  } catch (const InputError& e) {
+    args.fail(optionOf(e.field()) + " " + e.reason());
+  }
+  return p;
+}
+
+/// Builds the element for the nodes' ndf (3 or 6); throws InputError when the five nodes do not
+/// share one ndf or the model is not 3D. The element is not yet in the domain.
+std::unique_ptr<elements::Element> makeContact(const Runtime& rt, int tag, int contactor,
+                                               const std::array<int, 4>& face,
+                                               const NodeToSurfaceParams& p) {
+  const domain::Node& k = rt.domain.node(contactor);
+  for (int n : face) {
+    if (n == contactor)
+      throw InputError("cNode", std::to_string(n) + " is also a node of the target face");
+    const domain::Node& t = rt.domain.node(n);
+    if (t.ndf() != k.ndf())
+      throw InputError("node", std::to_string(n) + " has " + std::to_string(t.ndf()) +
+                                   " dofs but the contactor " + std::to_string(contactor) +
+                                   " has " + std::to_string(k.ndf()) + "; all five must agree");
+    if (t.ndm() != 3 || k.ndm() != 3)
+      throw InputError("node", "nodeToSurface needs a 3D model (model basic -ndm 3)");
+  }
+  for (int i = 0; i < 4; ++i)
+    for (int j = i + 1; j < 4; ++j)
+      if (face[i] == face[j])
+        throw InputError("face", "node " + std::to_string(face[i]) + " appears twice");
+  if (k.ndf() == 3) return std::make_unique<contact::NodeToSurfaceContact3d<3>>(tag, contactor, face, p);
+  if (k.ndf() == 6) return std::make_unique<contact::NodeToSurfaceContact3d<6>>(tag, contactor, face, p);
+  throw InputError("ndf", "nodeToSurface works in -ndf 3 and -ndf 6 models, the nodes have " +
+                              std::to_string(k.ndf()));
+}
+
+// --- element nodeToSurface tag cNode a b c d -K K ... ---------------------------------------
+
+std::unique_ptr<elements::Element> parseNodeToSurface(Runtime& rt, ArgReader& args, int tag) {
+  const int contactor = args.integer("cNode");
+  std::array<int, 4> face{};
+  const char* names[4] = {"a", "b", "c", "d"};
+  for (int i = 0; i < 4; ++i) face[i] = args.integer(names[i]);
+  const NodeToSurfaceParams p = readContactOptions(args);
+  args.finish();
+  return makeContact(rt, tag, contactor, face, p);
+}
+
+// --- pounding tag -side1 {nodes} {a b c d} -side2 {nodes} {a b c d} <options> ---------------
+
+std::vector<int> readTagList(ArgReader& args, const std::string& text, const char* name,
+                             std::size_t exactly) {
+  int count = 0;
+  const char** items = nullptr;
+  if (Tcl_SplitList(nullptr, text.c_str(), &count, &items) != TCL_OK)
+    args.fail(std::string(name) + " is not a Tcl list: \"" + text + "\"");
+  std::vector<int> tags;
+  bool good = true;
+  for (int i = 0; i < count && good; ++i) {
+    int value = 0;
+    good = Tcl_GetInt(nullptr, items[i], &value) == TCL_OK;
+    tags.push_back(value);
+  }
+  Tcl_Free(reinterpret_cast<char*>(items));
+  if (!good) args.fail(std::string(name) + " must list node tags, got \"" + text + "\"");
+  if (tags.empty()) args.fail(std::string(name) + " is empty");
+  if (exactly != 0 && tags.size() != exactly)
+    args.fail(std::string(name) + " must list exactly " + std::to_string(exactly) +
+              " nodes (a b c d), got \"" + text + "\"");
+  return tags;
+}
+
+/// Creates, for girder ends 1 and 2, one nodeToSurface element per side-1 contactor against the
+/// side-2 face and per side-2 contactor against the side-1 face, all with the same options.
+/// Numbering: tags tag, tag+1, ..., tag+n-1, side-1 contactors first (in list order), then
+/// side-2 contactors; an error when any of them is taken. All-or-nothing: every element is built
+/// first, and if adding one fails those already added are removed before the error is raised.
+/// The result is the list of element tags.
+void pounding(Runtime& rt, ArgReader& args) {
+  rt.requireModel("pounding");
+  const int tag = args.integer("tag");
+  args.setContext(args.context() + " " + std::to_string(tag));
+  const NodeToSurfaceParams p = readContactOptions(args);
+  std::optional<std::vector<int>> contactors[2];
+  std::array<int, 4> faces[2]{};
+  while (args.hasMore()) {
+    const std::string key(args.peek());
+    const int side = key == "-side1" ? 0 : key == "-side2" ? 1 : -1;
+    if (side < 0) args.fail("unexpected argument \"" + key + "\" (expected -side1 or -side2)");
+    if (contactors[side]) args.fail(key + " given twice");
+    const std::string nodes = *args.optionalWordOption(key);
+    contactors[side] = readTagList(args, nodes, (key + " contactor nodes").c_str(), 0);
+    const std::string faceText = args.word(key == "-side1" ? "face1" : "face2");
+    const auto f = readTagList(args, faceText, (key + " face").c_str(), 4);
+    std::copy(f.begin(), f.end(), faces[side].begin());
+  }
+  if (!contactors[0] || !contactors[1]) args.fail("both -side1 and -side2 are required");
+  args.finish();
+
+  // Pairs: side-1 nodes against face 2, then side-2 nodes against face 1.
+  std::vector<std::pair<int, int>> pairs;  // (contactor, face index)
+  for (int n : *contactors[0]) pairs.emplace_back(n, 1);
+  for (int n : *contactors[1]) pairs.emplace_back(n, 0);
+  for (std::size_t i = 0; i < pairs.size(); ++i) {
+    const int t = tag + static_cast<int>(i);
+    if (rt.domain.findElement(t) != nullptr)
+      args.fail("element " + std::to_string(t) + " already exists (pounding numbers its " +
+                std::to_string(pairs.size()) + " elements " + std::to_string(tag) + " to " +
+                std::to_string(tag + static_cast<int>(pairs.size()) - 1) + ")");
+  }
+  std::vector<std::unique_ptr<elements::Element>> built;
+  for (std::size_t i = 0; i < pairs.size(); ++i)
+    built.push_back(makeContact(rt, tag + static_cast<int>(i), pairs[i].first,
+                                faces[pairs[i].second], p));
+  std::vector<int> added;
+  try {
+    for (auto& e : built) {
+      const int t = e->tag();
+      rt.domain.addElement(std::move(e));
+      added.push_back(t);
+    }
+  } catch (const InputError& e) {
+    for (int t : added) rt.domain.removeElement(t);
+    const std::size_t i = added.size();
+    throw InputError(e.field(), "(element " + std::to_string(tag + static_cast<int>(i)) +
+                                    ", contactor " + std::to_string(pairs[i].first) +
+                                    " against the side-" + std::to_string(pairs[i].second + 1) +
+                                    " face; nothing was created) " + e.reason());
+  } catch (...) {
+    for (int t : added) rt.domain.removeElement(t);
+    throw;
+  }
+  Tcl_Obj* result = Tcl_NewListObj(0, nullptr);
+  for (int t : added) Tcl_ListObjAppendElement(rt.interp, result, Tcl_NewIntObj(t));
+  Tcl_SetObjResult(rt.interp, result);
+}
+
+constexpr const char* kContactOptions =
+    "-K K | -EAL E A L ?-e e? ?-et et? ?-mu_s mus? ?-mu_k muk? ?-masses M1 M2? ?-search dist?";
+
+const std::string kNodeToSurfaceUsage =
+    std::string("element nodeToSurface tag cNode a b c d ") + kContactOptions;
+const std::string kPoundingUsage =
+    std::string("pounding tag -side1 {contactor nodes} {a b c d} -side2 {contactor nodes} "
+                "{a b c d} ") + kContactOptions;
+
+}  // namespace
+
+std::span<const CommandEntry> contactCommands() {
+  static const CommandEntry kRows[] = {{"pounding", kPoundingUsage, pounding}};
+  return kRows;
+}
+
+std::span<const UniaxialEntry> contactUniaxialParsers() {
+  static constexpr UniaxialEntry kRows[] = {
+      {"Restrainer", "uniaxialMaterial Restrainer tag k gap ?-Fy Fy -b b?", parseRestrainer},
+      {"Bumper", "uniaxialMaterial Bumper tag k gap ?-Fy Fy -b b?", parseBumper},
+  };
+  return kRows;
+}
+
+std::span<const ElementEntry> contactElementParsers() {
+  static const ElementEntry kRows[] = {{"nodeToSurface", kNodeToSurfaceUsage, parseNodeToSurface}};
+  return kRows;
+}
 
 }  // namespace dabs::tcl
