@@ -6,7 +6,6 @@
 #include <numbers>
 
 #include "materials/InputError.h"
-#include "materials/section/geometry/Polygon.h"
 
 namespace dabs::materials::section {
 
@@ -25,13 +24,14 @@ void CircPatch::discretize(FiberList& out) const {
   for (int k = 0; k < divRad; ++k) {
     const double r0 = rInt + k * dR, r1 = r0 + dR;
     for (int i = 0; i < divCirc; ++i) {
-      const double t0 = startAngle * deg + i * dTheta, t1 = t0 + dTheta;
-      const std::array<double, 4> y{yCenter + r0 * std::cos(t0), yCenter + r1 * std::cos(t0),
-                                    yCenter + r1 * std::cos(t1), yCenter + r0 * std::cos(t1)};
-      const std::array<double, 4> z{zCenter + r0 * std::sin(t0), zCenter + r1 * std::sin(t0),
-                                    zCenter + r1 * std::sin(t1), zCenter + r0 * std::sin(t1)};
-      FiberPoint f = quadCentroid(y, z);
-      f.materialTag = materialTag;
+      const double t0 = startAngle * deg + i * dTheta;
+      // Exact annular sector: area d/2 (r1^2 - r0^2), centroid on the bisector at radius
+      // (2/3)(r1^3 - r0^3)/(r1^2 - r0^2) sin(d/2)/(d/2).
+      const double half = 0.5 * dTheta, mid = t0 + half;
+      const double rc = 2.0 / 3.0 * (r1 * r1 * r1 - r0 * r0 * r0) / (r1 * r1 - r0 * r0) *
+                        std::sin(half) / half;
+      FiberPoint f{yCenter + rc * std::cos(mid), zCenter + rc * std::sin(mid),
+                   half * (r1 * r1 - r0 * r0), materialTag};
       out.push_back(f);
     }
   }

@@ -6,10 +6,9 @@
 namespace dabs::materials::section {
 
 /// Circular (annular sector) patch `patch circ matTag nCirc nRad yC zC rInt rExt ?startAng
-/// endAng?` (angles in degrees, default 0 to 360). Each of the nCirc x nRad cells is the
-/// straight-edged quadrilateral through its four corner points on the arcs, as in
-/// OpenSees/OpenSees:SRC/material/section/repres/patch/CircPatch.cpp, so the total area is
-/// slightly below the exact annulus area for coarse nCirc.
+/// endAng?` (angles in degrees, default 0 to 360). Each of the nCirc x nRad cells is an exact
+/// annular sector (area and centroid), as OpenSees/OpenSees:SRC/material/section/repres/patch/
+/// CircPatch.cpp with CircSectionCell, so the total area is the exact annulus area.
 struct CircPatch {
   int materialTag = 0;
   int divCirc = 1, divRad = 1;

@@ -125,7 +125,7 @@ TEST(FiberSectionTest, FiberStressStrainResponse) {
   EXPECT_NEAR((*r)(1), 1e-4, 1e-15);
 }
 
-TEST(SectionGeometryTest, CircPatchCellsAreChordQuadrilaterals) {
+TEST(SectionGeometryTest, CircPatchCellsAreExactSectors) {
   CircPatch c;
   c.materialTag = 1;
   c.divCirc = 16;
@@ -138,15 +138,13 @@ TEST(SectionGeometryTest, CircPatchCellsAreChordQuadrilaterals) {
   FiberList f;
   c.discretize(f);
   ASSERT_EQ(f.size(), 64u);
-  // A cell between radii r0, r1 over angle d is a trapezoid of area (r1^2 - r0^2) sin(d) / 2.
-  const double d = 2 * std::numbers::pi / 16;
   double area = 0.0, ay = 0.0, az = 0.0;
   for (const auto& p : f) {
     area += p.area;
     ay += p.area * p.y;
     az += p.area * p.z;
   }
-  EXPECT_NEAR(area, 16 * 0.5 * (1.0 - 0.04) * std::sin(d), 1e-12);
+  EXPECT_NEAR(area, std::numbers::pi * (1.0 - 0.04), 1e-12);  // annulus
   EXPECT_NEAR(ay / area, 0.5, 1e-12);
   EXPECT_NEAR(az / area, -0.25, 1e-12);
 }
