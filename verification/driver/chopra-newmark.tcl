@@ -4,6 +4,7 @@
 # Source: A. K. Chopra, Dynamics of Structures (4th ed.), Chapter 5:
 #   - system of Examples 5.1-5.4: m = 0.2533 kip-s^2/in, k = 10 kip/in (Tn = 1 s), zeta = 5%,
 #     p(t) = 10 sin(pi t / 0.6) kips for t <= 0.6 s, 0 after; dt = 0.1 s;
+#   - Example 5.2 (central difference): Table 5.3.1, "Central difference method";
 #   - Example 5.3 (average acceleration, gamma = 1/2, beta = 1/4) and Example 5.4 (linear
 #     acceleration, gamma = 1/2, beta = 1/6): Table 5.4.2, "Newmark's method: linear systems";
 #   - Examples 5.5/5.6: the same system, elastic-perfectly-plastic with fy = 7.5 kips, average
@@ -53,6 +54,26 @@ proc newmarkLinear {gamma beta dt n} {
                   + $dt * (1.0 - $gamma / (2.0 * $beta)) * $a}]
     set an [expr {($un - $u) / ($beta * $dt * $dt) - $v / ($beta * $dt) - (1.0 / (2.0 * $beta) - 1.0) * $a}]
     set u $un; set v $vn; set a $an
+    lappend out $u
+  }
+  return $out
+}
+
+# Chopra Table 5.3.1 (central difference), from rest; returns the list of u_i, i = 1..n.
+proc centralDifference {dt n} {
+  set m $::m; set k $::k; set c $::c
+  set u0 0.0; set v0 0.0
+  set a0 [expr {([pulse 0.0] - $c * $v0 - $k * $u0) / $m}]
+  set uPrev [expr {$u0 - $dt * $v0 + $dt * $dt / 2.0 * $a0}]
+  set khat [expr {$m / ($dt * $dt) + $c / (2.0 * $dt)}]
+  set a [expr {$m / ($dt * $dt) - $c / (2.0 * $dt)}]
+  set b [expr {$k - 2.0 * $m / ($dt * $dt)}]
+  set u $u0
+  set out {}
+  for {set i 0} {$i < $n} {incr i} {
+    set phat [expr {[pulse [expr {$i * $dt}]] - $a * $uPrev - $b * $u}]
+    set uPrev $u
+    set u [expr {$phat / $khat}]
     lappend out $u
   }
   return $out
@@ -144,7 +165,7 @@ proc runProgram {spring gamma beta dt n {algo Newton}} {
   system BandGeneral
   test NormDispIncr 1e-14 50
   algorithm {*}$algo
-  integrator Newmark $gamma $beta
+  if {$gamma eq "central"} { integrator CentralDifference } else { integrator Newmark $gamma $beta }
   analysis Transient
   set out {}
   for {set i 1} {$i <= $n} {incr i} {
@@ -168,6 +189,11 @@ proc compareHistories {label got expected tol} {
   # one value printed in full for the reader
   check "$label: u at t = [expr {[llength $got] * $::dtBook}] s (last step)" [lindex $got end] [lindex $expected end] [expr {$tol * 10}]
 }
+
+# --- Example 5.2: central difference (Table 5.3.1); dt/Tn = 0.1 < 1/pi, stable ---
+set ref [centralDifference $dtBook $nBook]
+set got [runProgram Elastic central {} $dtBook $nBook Linear]
+compareHistories "Chopra Ex. 5.2 central difference vs Table 5.3.1" $got $ref $TOL_RECURRENCE
 
 # --- Example 5.3: average acceleration (Table 5.4.2) ---
 set ref [newmarkLinear 0.5 0.25 $dtBook $nBook]
