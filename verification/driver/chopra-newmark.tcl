@@ -9,6 +9,11 @@
 #     acceleration, gamma = 1/2, beta = 1/6): Table 5.4.2, "Newmark's method: linear systems";
 #   - Examples 5.5/5.6: the same system, elastic-perfectly-plastic with fy = 7.5 kips, average
 #     acceleration with Newton-Raphson iterations: Table 5.7.1, "Newmark's method: nonlinear systems".
+# The same system is also run with HHT and generalized-alpha against their recurrences in the
+# convention the program documents (OpenSees': the alphas weight the NEW state,
+# M a_{n+aM} + C v_{n+aF} + K u_{n+aF} = p(t_n + aF dt), x_{n+a} = (1-a) x_n + a x_{n+1};
+# Hilber, Hughes and Taylor, EESD 5 (1977) 283-292; Chung and Hulbert, J. Appl. Mech. 60 (1993)
+# 371-375, eqs. 8-10 with alpha_new = 1 - alpha_old).
 # Expected values: the recurrences of Tables 5.4.2 and 5.7.1, computed step by step below in Tcl
 # (an implementation independent of the program's assembler/integrator), and for the linear system
 # the exact solution of the pulse (Chopra eqs. 3.2.1-3.2.4 during the pulse, eq. 2.2.4 free
@@ -74,6 +79,28 @@ proc centralDifference {dt n} {
     set phat [expr {[pulse [expr {$i * $dt}]] - $a * $uPrev - $b * $u}]
     set uPrev $u
     set u [expr {$phat / $khat}]
+    lappend out $u
+  }
+  return $out
+}
+
+# Generalized-alpha recurrence (linear system, from rest), OpenSees weighting of the new state.
+proc generalizedAlpha {aM aF gamma beta dt n} {
+  set m $::m; set k $::k; set c $::c
+  set u 0.0; set v 0.0
+  set a [expr {([pulse 0.0] - $c * $v - $k * $u) / $m}]
+  set c1 [expr {1.0 / ($beta * $dt * $dt)}]
+  set out {}
+  for {set i 0} {$i < $n} {incr i} {
+    set ut [expr {$u + $dt * $v + $dt * $dt * (0.5 - $beta) * $a}]
+    set vt [expr {$v + $dt * (1.0 - $gamma) * $a}]
+    set lhs [expr {$m * $aM * $c1 + $c * $aF * $gamma * $dt * $c1 + $k * $aF}]
+    set rhs [expr {[pulse [expr {($i + $aF) * $dt}]] - $m * (1.0 - $aM) * $a + $m * $aM * $c1 * $ut
+                   - $c * (1.0 - $aF) * $v - $c * $aF * ($vt - $gamma * $dt * $c1 * $ut) - $k * (1.0 - $aF) * $u}]
+    set un [expr {$rhs / $lhs}]
+    set an [expr {$c1 * ($un - $ut)}]
+    set vn [expr {$vt + $gamma * $dt * $an}]
+    set u $un; set v $vn; set a $an
     lappend out $u
   }
   return $out
@@ -165,7 +192,12 @@ proc runProgram {spring gamma beta dt n {algo Newton}} {
   system BandGeneral
   test NormDispIncr 1e-14 50
   algorithm {*}$algo
-  if {$gamma eq "central"} { integrator CentralDifference } else { integrator Newmark $gamma $beta }
+  switch -- $gamma {
+    central { integrator CentralDifference }
+    HHT     { integrator HHT {*}$beta }
+    GenAlpha { integrator GeneralizedAlpha {*}$beta }
+    default { integrator Newmark $gamma $beta }
+  }
   analysis Transient
   set out {}
   for {set i 1} {$i <= $n} {incr i} {
@@ -209,6 +241,21 @@ check "Chopra Ex. 5.3 peak |u| vs Table 5.4.2" $pk $pr $TOL_RECURRENCE
 set ref [newmarkLinear 0.5 [expr {1.0 / 6.0}] $dtBook $nBook]
 set got [runProgram Elastic 0.5 [expr {1.0 / 6.0}] $dtBook $nBook]
 compareHistories "Chopra Ex. 5.4 linear acceleration vs Table 5.4.2" $got $ref $TOL_RECURRENCE
+
+# --- HHT (alpha = 0.9: gamma = 1.5 - alpha, beta = (2 - alpha)^2/4) ---
+set alpha 0.9
+set ref [generalizedAlpha 1.0 $alpha [expr {1.5 - $alpha}] [expr {(2.0 - $alpha) ** 2 / 4.0}] $dtBook $nBook]
+set got [runProgram Elastic HHT $alpha $dtBook $nBook]
+compareHistories "HHT alpha=0.9 (Hilber-Hughes-Taylor 1977, OpenSees weighting)" $got $ref $TOL_RECURRENCE
+# --- generalized-alpha, rho_inf = 0.8: aM = (2 - rho)/(1 + rho), aF = 1/(1 + rho) ---
+set rho 0.8
+set aM [expr {(2.0 - $rho) / (1.0 + $rho)}]
+set aF [expr {1.0 / (1.0 + $rho)}]
+set gam [expr {0.5 + $aM - $aF}]
+set bet [expr {0.25 * (1.0 + $aM - $aF) ** 2}]
+set ref [generalizedAlpha $aM $aF $gam $bet $dtBook $nBook]
+set got [runProgram Elastic GenAlpha [list $aM $aF] $dtBook $nBook]
+compareHistories "generalized-alpha rho_inf=0.8 (Chung-Hulbert 1993, OpenSees weighting)" $got $ref $TOL_RECURRENCE
 
 # --- Exact solution (Chopra eqs. 3.2.x, 2.2.4) with a small step ---
 set dtSmall 0.001
