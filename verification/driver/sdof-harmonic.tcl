@@ -42,18 +42,30 @@ proc exact {zeta t} {
 }
 
 # Max |u - exact| over the history, and the peak of exact, for one run.
-proc run {zeta dt} {
+# damping: "viscous" (a Viscous zeroLength dashpot, c = 2 zeta m wn), "rayleighM" (rayleigh with
+# alphaM = 2 zeta wn) or "rayleighK" (rayleigh with betaK = 2 zeta / wn, on a zeroLength with
+# -doRayleigh 1): the same c. "rayleighKoff": betaK on a zeroLength without -doRayleigh, which
+# (OpenSees default for zeroLength) gets no stiffness-proportional damping: undamped response
+# (betaK = 2 * 0.05 / wn whatever zeta is passed).
+proc run {zeta dt {damping viscous}} {
   wipe
   model basic -ndm 1 -ndf 1
   node 1 0.0
   node 2 0.0 -mass $::m
   fix 1 1
   uniaxialMaterial Elastic 1 $::k
-  element zeroLength 1 1 2 -mat 1 -dir 1
-  if {$zeta > 0.0} {
+  if {$damping eq "rayleighK"} {
+    element zeroLength 1 1 2 -mat 1 -dir 1 -doRayleigh 1
+  } else {
+    element zeroLength 1 1 2 -mat 1 -dir 1
+  }
+  if {$zeta > 0.0 && $damping eq "viscous"} {
     uniaxialMaterial Viscous 2 [expr {2.0 * $zeta * $::m * $::wn}] 1.0
     element zeroLength 2 1 2 -mat 2 -dir 1
   }
+  if {$damping eq "rayleighM"} { rayleigh [expr {2.0 * $zeta * $::wn}] 0.0 0.0 0.0 }
+  if {$damping eq "rayleighK"} { rayleigh 0.0 [expr {2.0 * $zeta / $::wn}] 0.0 0.0 }
+  if {$damping eq "rayleighKoff"} { rayleigh 0.0 [expr {2.0 * 0.05 / $::wn}] 0.0 0.0 }
   timeSeries Trig 1 0.0 1.0e6 [expr {2.0 * acos(-1.0) / $::w}] -factor $::p0
   pattern Plain 1 1 { load 2 1.0 }
   constraints Plain
@@ -84,6 +96,16 @@ foreach zeta {0.0 0.05} {
   check "Newmark average acceleration 2nd order (Chopra §5.5), zeta=$zeta: err(dt)/err(dt/2)" \
     [expr {$e1 / $e2}] $RATIO_EXPECTED $TOL_RATIO
 }
+foreach damping {rayleighM rayleighK} {
+  set e [run 0.05 [expr {$Tn / 400.0}] $damping]
+  checkAbs "Chopra eq. 3.2.x damped zeta=0.05 with $damping damping, dt=Tn/400: max err/peak" \
+    [expr {[lindex $e 0] / [lindex $e 1]}] 0.0 $TOL_CLOSED_FORM
+}
+# zeroLength without -doRayleigh: no stiffness-proportional damping, so the undamped closed form
+set e0 [run 0.0 [expr {$Tn / 400.0}] viscous]
+set e1 [run 0.0 [expr {$Tn / 400.0}] rayleighKoff]
+checkAbs "zeroLength without -doRayleigh ignores betaK: same error as undamped run (/peak)" \
+  [expr {abs([lindex $e1 0] - [lindex $e0 0]) / [lindex $e0 1]}] 0.0 1e-12
 # the closed form at one time, printed for the reader (undamped, t = 1.5 s)
 set got [lindex [run 0.0 [expr {$Tn / 2000.0}]] 0]
 checkAbs "Chopra eq. 3.1.6 at dt=Tn/2000: max |u - exact| (in units of p0/k)" [expr {$got / ($p0 / $k)}] 0.0 1e-4
