@@ -44,7 +44,7 @@ proc exact {zeta t} {
 # Max |u - exact| over the history, and the peak of exact, for one run.
 # damping: "viscous" (a Viscous zeroLength dashpot, c = 2 zeta m wn), "rayleighM" (rayleigh with
 # alphaM = 2 zeta wn) or "rayleighK" (rayleigh with betaK = 2 zeta / wn, on a zeroLength with
-# -doRayleigh 1): the same c. "rayleighKoff": betaK on a zeroLength without -doRayleigh, which
+# -doRayleigh 1) or "modal" (eigen 1; modalDamping zeta): the same c. "rayleighKoff": betaK on a zeroLength without -doRayleigh, which
 # (OpenSees default for zeroLength) gets no stiffness-proportional damping: undamped response
 # (betaK = 2 * 0.05 / wn whatever zeta is passed).
 proc run {zeta dt {damping viscous}} {
@@ -65,6 +65,7 @@ proc run {zeta dt {damping viscous}} {
   }
   if {$damping eq "rayleighM"} { rayleigh [expr {2.0 * $zeta * $::wn}] 0.0 0.0 0.0 }
   if {$damping eq "rayleighK"} { rayleigh 0.0 [expr {2.0 * $zeta / $::wn}] 0.0 0.0 }
+  if {$damping eq "modal"} { eigen 1; modalDamping $zeta }
   if {$damping eq "rayleighKoff"} { rayleigh 0.0 [expr {2.0 * 0.05 / $::wn}] 0.0 0.0 }
   timeSeries Trig 1 0.0 1.0e6 [expr {2.0 * acos(-1.0) / $::w}] -factor $::p0
   pattern Plain 1 1 { load 2 1.0 }
@@ -96,7 +97,7 @@ foreach zeta {0.0 0.05} {
   check "Newmark average acceleration 2nd order (Chopra §5.5), zeta=$zeta: err(dt)/err(dt/2)" \
     [expr {$e1 / $e2}] $RATIO_EXPECTED $TOL_RATIO
 }
-foreach damping {rayleighM rayleighK} {
+foreach damping {rayleighM rayleighK modal} {
   set e [run 0.05 [expr {$Tn / 400.0}] $damping]
   checkAbs "Chopra eq. 3.2.x damped zeta=0.05 with $damping damping, dt=Tn/400: max err/peak" \
     [expr {[lindex $e 0] / [lindex $e 1]}] 0.0 $TOL_CLOSED_FORM
