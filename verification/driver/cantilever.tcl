@@ -41,6 +41,19 @@ setTime 0.0
 analyze 1
 check "2D cantilever tip moment: deflection ML^2/2EI" [nodeDisp $tip 2] [expr {$M * $L ** 2 / (2.0 * $E * $I)}] $TOL
 check "2D cantilever tip moment: rotation ML/EI" [nodeDisp $tip 3] [expr {$M * $L / ($E * $I)}] $TOL
+# case 3: loadConst keeps the moment; then an imposed tip deflection (sp) in a new pattern:
+# the tip force is 3 E I d / L^3 minus the moment's share (superposition of cases 1 and 2)
+loadConst -time 0.0
+set d 0.5
+pattern Plain 3 1 { sp $tip 2 $d }
+analyze 1
+check "2D cantilever loadConst + sp: tip deflection imposed" [nodeDisp $tip 2] $d $TOL
+reactions
+# u = F L^3/3EI + M L^2/2EI = d  =>  F = (d - M L^2/2EI) 3EI/L^3 (reaction at the tip = F)
+check "2D cantilever loadConst + sp: tip reaction (d - ML^2/2EI) 3EI/L^3" [nodeReaction $tip 2] \
+  [expr {($d - $M * $L ** 2 / (2.0 * $E * $I)) * 3.0 * $E * $I / $L ** 3}] $TOL
+check "2D cantilever loadConst + sp: tip rotation F L^2/2EI + M L/EI" [nodeDisp $tip 3] \
+  [expr {($d - $M * $L ** 2 / (2.0 * $E * $I)) * 3.0 * $E * $I / $L ** 3 * $L ** 2 / (2.0 * $E * $I) + $M * $L / ($E * $I)}] $TOL
 wipe
 
 # ---------------------------------------------------------------- 3D, skew member
