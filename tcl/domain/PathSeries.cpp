@@ -82,9 +82,12 @@ RecordFile readRecordFile(const std::string& path) {
       break;
     }
   }
+  // With a header, exactly NPTS values are read and any trailer (e.g. "*** End Data ***") ignored.
   for (std::size_t i = first; i < lines.size(); ++i) {
+    if (npts >= 0 && static_cast<long>(out.values.size()) >= npts) break;
     std::istringstream tokens(lines[i]);
     for (std::string tok; tokens >> tok;) {
+      if (npts >= 0 && static_cast<long>(out.values.size()) >= npts) break;
       char* end = nullptr;
       const double v = std::strtod(tok.c_str(), &end);
       if (end == tok.c_str() || *end != '\0' || !std::isfinite(v)) {
