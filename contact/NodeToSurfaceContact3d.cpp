@@ -2,6 +2,7 @@
 #include "contact/NodeToSurfaceContact3d.h"
 
 #include <Eigen/Dense>
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 #include <unsupported/Eigen/AutoDiff>
@@ -146,7 +147,16 @@ Status NodeToSurfaceContact3d<Ndf>::update(const elements::Kinematics& kin) {
   const auto Nd = shapeFunctions(xi->x(), xi->y());
   const double gap = z[0] - (Nd[0] * z[1] + Nd[1] * z[2] + Nd[2] * z[3] + Nd[3] * z[4]);
   t.projXi = *xi;
-  if (gap >= 0.0) {
+  // Release step: the contact was closed at the last commit and opens in this step. With the
+  // trapezoidal rule (Newmark average acceleration) a zero force at the step end would let the
+  // committed force push across the whole step, returning more energy than the spring held
+  // (0.5 N_n (delta_n + |g|) instead of 0.5 N_n delta_n); a large step on a stiff contact could
+  // then gain energy. The release force below makes the step's trapezoid work equal to
+  // 0.5 N_r delta_n, N_r = min(N_n, K delta_n), the energy of linear unloading from the committed
+  // state, so a release never adds energy; it is continuous (zero) at g = 0 and briefly tensile.
+  const bool releasing = gap >= 0.0 && committed_.status != ContactStatus::Open &&
+                         committed_.gap < 0.0 && committed_.force(0) > 0.0;
+  if (gap >= 0.0 && !releasing) {
     finishOpen(gap, true);
     t.projXi = *xi;
     finishAccumulators();
@@ -213,12 +223,20 @@ Status NodeToSurfaceContact3d<Ndf>::update(const elements::Kinematics& kin) {
     for (int i = 0; i < 4; ++i) vrel[d] -= N[i] * va[i + 1][d];
   }
   const AD gdot = m[0] * vrel[0] + m[1] * vrel[1] + m[2] * vrel[2];  // = dg/dt exactly
-  const AD Nn = normal_.force(g, gdot);
+  AD Nn = normal_.force(g, gdot);
+  if (releasing) {
+    const double Nr = std::min(committed_.force(0), -normal_.stiffness() * committed_.gap);
+    Nn = -Nr * g / (g - committed_.gap);
+  }
   t.gap = g.value();
   // Dashpot power: (N - spring force) times the approach rate -gdot; when N is clipped this is
   // the released spring energy, so the energy balance stays closed.
-  t.dashpotPower = (Nn.value() + normal_.stiffness() * g.value()) * (-gdot.value());
-  if (!(Nn.value() > 0.0)) {  // the contact would pull: no force (see NormalLaw)
+  t.dashpotPower =
+      (Nn.value() - normal_.stiffness() * std::max(-g.value(), 0.0)) * (-gdot.value());
+  if (releasing) {
+    t.status = ContactStatus::Open;
+    t.stickValid = false;
+  } else if (!(Nn.value() > 0.0)) {  // the contact would pull: no force (see NormalLaw)
     finishOpen(g.value(), true);
     t.projXi = *xi;
     finishAccumulators();
@@ -226,9 +244,9 @@ Status NodeToSurfaceContact3d<Ndf>::update(const elements::Kinematics& kin) {
   }
 
   std::array<AD, 2> Ft{AD(0.0), AD(0.0)};
-  t.status = ContactStatus::Slide;  // frictionless contact slides freely
+  if (!releasing) t.status = ContactStatus::Slide;  // frictionless contact slides freely
   t.stickValid = false;
-  if (friction_.active()) {
+  if (friction_.active() && !releasing) {
     const bool wasInContact = committed_.status != ContactStatus::Open && committed_.stickValid;
     const Eigen::Vector2d xiS =
         wasInContact ? committed_.stickXi : (committed_.projValid ? committed_.projXi : *xi);

@@ -77,6 +77,11 @@ struct NodeToSurfaceState {
 /// - Only translations carry contact forces (dofs 1-3 of each node); with ndf 6 the rotations get
 ///   zero force and stiffness.
 /// - Beyond the search distance the update costs one bounding-sphere test and adds nothing.
+/// - Release step (closed at the last commit, open in the trial): the normal force is
+///   N = -N_r g / (g - g_n), N_r = min(N_n, K delta_n), so that the step's trapezoid work is the
+///   energy of linear unloading, 0.5 N_r delta_n; without it a large step on a stiff contact gains
+///   energy under the trapezoidal rule. The force is zero at g = 0 and slightly tensile (status
+///   open) for that one step.
 ///
 /// The tangent is exact (forward-mode automatic differentiation of the force, including the moving
 /// load point and the return map); it is non-symmetric when friction or a dashpot is on.

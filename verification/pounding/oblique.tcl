@@ -48,7 +48,9 @@ foreach n {20 80} {
   set dvt [expr {$vt0 - $vt1}]
   set wdt [expr {$::pi/$n}]
   check "e=1 n=$n: normal speed reverses, dv_n = 2 v_n" $dvn [expr {2*$vn0}] [expr {0.5*$wdt*$wdt}]
-  check "e=1 n=$n: dv_t = min(v_t, mu dv_n) = mu dv_n" $dvt [expr {min($vt0, $mu*$dvn)}] 1e-8
+  # The release step carries a small normal force without friction (see NodeToSurfaceContact3d.h):
+  # an impulse of at most N dt, N <= K v_n dt, i.e. a relative error <= (w dt)^2.
+  check "e=1 n=$n: dv_t = min(v_t, mu dv_n) = mu dv_n" $dvt [expr {min($vt0, $mu*$dvn)}] [expr {$wdt*$wdt}]
 }
 
 # 2. e = 0.5: the dashpot force C v_n at first touch makes the contactor stick for
