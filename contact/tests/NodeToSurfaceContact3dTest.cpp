@@ -297,6 +297,31 @@ TEST(NodeToSurfaceContact3dTest, ContactorSlidingOffTheSurfaceLeavesContact) {
   EXPECT_EQ(e->tangentStiff().norm(), 0.0);
 }
 
+TEST(NodeToSurfaceContact3dTest, ContactorInTwoPairsOnASharedEdge) {
+  // Faces A (x in [0,2]) and B (x in [2,4]) share the edge x = 2; one contactor in a pair with
+  // each. On the shared edge both pairs act (each K delta, split half and half on the edge
+  // nodes): the stiffness there is doubled, a known effect of node-to-surface pairs on adjacent
+  // faces. Past the edge only face B carries the contactor.
+  const Eigen::Vector3d k0(2, 1, 0.1);
+  auto a = make(params(), k0);
+  auto b = std::make_unique<NodeToSurfaceContact3d<3>>(2, 10, std::array<int, 4>{2, 5, 6, 3}, params());
+  b->initialize({k0, Eigen::Vector3d(2, 0, 0), Eigen::Vector3d(4, 0, 0), Eigen::Vector3d(4, 2, 0),
+                 Eigen::Vector3d(2, 2, 0)});
+  TrialState s = zeroState(15);
+  setU(s, 0, {0, 0, -0.15});
+  ASSERT_TRUE(ok(a->update(s.kinematics())));
+  ASSERT_TRUE(ok(b->update(s.kinematics())));
+  const double N = kK * 0.05;
+  EXPECT_NEAR(nodeForce(*a, 0).z() + nodeForce(*b, 0).z(), -2 * N, kTol * N);
+  EXPECT_NEAR(nodeForce(*a, 2).z(), 0.5 * N, kTol * N);  // node b of face A = (2,0,0)
+  EXPECT_NEAR(nodeForce(*b, 1).z(), 0.5 * N, kTol * N);  // node a of face B = (2,0,0)
+  setU(s, 0, {0.5, 0, -0.15});                            // x = 2.5: on face B only
+  ASSERT_TRUE(ok(a->update(s.kinematics())));
+  ASSERT_TRUE(ok(b->update(s.kinematics())));
+  EXPECT_EQ(a->resistingForce().norm(), 0.0);
+  EXPECT_NEAR(nodeForce(*b, 0).z(), -N, kTol * N);
+}
+
 Eigen::Vector3d moment(const elements::Element& e, const NodalCoordinates& X, const TrialState& s) {
   Eigen::Vector3d m = Eigen::Vector3d::Zero();
   for (int j = 0; j < 5; ++j)
