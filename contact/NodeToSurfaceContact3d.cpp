@@ -158,7 +158,6 @@ Status NodeToSurfaceContact3d<Ndf>::update(const elements::Kinematics& kin) {
                          committed_.gap < 0.0 && committed_.force(0) > 0.0;
   if (gap >= 0.0 && !releasing) {
     finishOpen(gap, true);
-    t.projXi = *xi;
     finishAccumulators();
     return Status::Ok;
   }
@@ -238,7 +237,6 @@ Status NodeToSurfaceContact3d<Ndf>::update(const elements::Kinematics& kin) {
     t.stickValid = false;
   } else if (!(Nn.value() > 0.0)) {  // the contact would pull: no force (see NormalLaw)
     finishOpen(g.value(), true);
-    t.projXi = *xi;
     finishAccumulators();
     return Status::Ok;
   }
@@ -296,7 +294,6 @@ Status NodeToSurfaceContact3d<Ndf>::update(const elements::Kinematics& kin) {
         }
     }
   t.force = Eigen::Vector3d(Nn.value(), Ft[0].value(), Ft[1].value());
-  t.projXi = *xi;
   t.projValid = true;
   finishAccumulators();
   return Status::Ok;
