@@ -79,6 +79,7 @@ void AnalysisBuilder::wipe() {
   numSubLevels_ = 0;
   numSubSteps_ = 10;
   integratorSeeded_ = false;
+  stats_ = {};
 }
 
 void AnalysisBuilder::ensureModel() {

@@ -33,6 +33,7 @@ bool AnalysisModel::allLinear() const {
 void AnalysisModel::build() {
   numberEquations();
   buildScatter();
+  buildConstantDynamics();
   builtVersion_ = domain_.modelVersion();
 }
 
@@ -66,14 +67,17 @@ void AnalysisModel::numberEquations() {
     slotOf[static_cast<std::size_t>(g)] = static_cast<int>(slots_.size());
     slots_.push_back(Slot{nodeTag, dof});
   };
+  imposedMotion_ = false;
   for (const auto& sp : domain_.fixes()) addSlot(sp.node, sp.dof, "fix");
   for (const auto& [ptag, p] : domain_.patterns()) {
     if (p->kind() == domain::LoadPattern::Kind::Plain) {
       for (const auto& sp : static_cast<const domain::PlainPattern&>(*p).prescribed)
         addSlot(sp.node, sp.dof, "sp");
     } else if (p->kind() == domain::LoadPattern::Kind::MultipleSupport) {
-      for (const auto& im : static_cast<const domain::MultipleSupportPattern&>(*p).imposed)
+      for (const auto& im : static_cast<const domain::MultipleSupportPattern&>(*p).imposed) {
         addSlot(im.node, im.dof, "imposedMotion");
+        imposedMotion_ = true;
+      }
     }
   }
 
@@ -443,11 +447,70 @@ Status AnalysisModel::updateElements() {
   return Status::Ok;
 }
 
+void AnalysisModel::addElementMatrix(std::vector<double>& values, const ElementLink& l,
+                                     const Eigen::MatrixXd& m) const {
+  const int n = l.element->numDof();
+  for (const MatEntry& e : l.mat) values[static_cast<std::size_t>(e.value)] += e.coef * m(e.local / n, e.local % n);
+}
+
+void AnalysisModel::buildConstantDynamics() {
+  const auto nnz = static_cast<std::size_t>(A_.nonZeros());
+  std::vector<double> mass(nnz, 0.0), damping(nnz, 0.0);
+  rayleighLeft_.assign(elements_.size(), 0);
+  for (std::size_t k = 0; k < elements_.size(); ++k) {
+    const ElementLink& l = elements_[k];
+    const elements::Element& e = *l.element;
+    const Eigen::MatrixXd m = e.mass();
+    addElementMatrix(mass, l, m);
+    if (!l.rayleighOn) continue;
+    const auto& r = l.rayleigh;
+    Eigen::MatrixXd c = r.alphaM * m + r.betaK0 * e.initialStiff();
+    if (e.isLinear()) {
+      c += (r.betaK + r.betaKc) * e.initialStiff();
+    } else if (r.betaK != 0.0 || r.betaKc != 0.0) {
+      rayleighLeft_[k] = 1;
+    }
+    addElementMatrix(damping, l, c);
+  }
+  for (const NodeLink& nl : nodes_) {
+    const int ndf = nl.node->ndf();
+    const Eigen::MatrixXd& m = nl.node->mass();
+    for (const MatEntry& me : nl.mass) {
+      const double v = me.coef * m(me.local / ndf, me.local % ndf);
+      mass[static_cast<std::size_t>(me.value)] += v;
+      damping[static_cast<std::size_t>(me.value)] += nl.alphaM * v;
+    }
+  }
+  massGlobal_ = A_;
+  dampingGlobal_ = A_;
+  std::copy(mass.begin(), mass.end(), massGlobal_.valuePtr());
+  std::copy(damping.begin(), damping.end(), dampingGlobal_.valuePtr());
+  massGlobal_.prune(0.0);
+  dampingGlobal_.prune(0.0);
+  eqVel_ = eqAcc_ = Eigen::VectorXd::Zero(neq_);
+}
+
 void AnalysisModel::formResidual(const AssemblyCoefficients& c, Eigen::VectorXd& B) const {
   B = P_;
-  for (const ElementLink& l : elements_) {
+  // Dynamic forces from the constant global matrices unless a support moves with an imposed
+  // velocity, whose damping and inertia coupling only the element-level forces carry.
+  const bool global = c.dynamic && !imposedMotion_;
+  for (std::size_t k = 0; k < elements_.size(); ++k) {
+    const ElementLink& l = elements_[k];
     const elements::Element& e = *l.element;
-    if (c.dynamic) {
+    if (global) {
+      if (rayleighLeft_[k] == 0) {
+        const auto f = e.resistingForce();
+        for (const VecEntry& v : l.vec) B(v.eq) -= v.coef * f(v.local);
+        continue;
+      }
+      Eigen::VectorXd& f = l.force;
+      f = e.resistingForce();
+      const auto& r = l.rayleigh;
+      if (r.betaK != 0.0) f.noalias() += r.betaK * (e.tangentStiff() * l.v);
+      if (r.betaKc != 0.0) f.noalias() += r.betaKc * (e.committedStiff() * l.v);
+      for (const VecEntry& v : l.vec) B(v.eq) -= v.coef * f(v.local);
+    } else if (c.dynamic) {
       Eigen::VectorXd& f = l.force;
       f = e.resistingForce();
       const auto m = e.mass();
@@ -466,20 +529,26 @@ void AnalysisModel::formResidual(const AssemblyCoefficients& c, Eigen::VectorXd&
     }
   }
   if (c.dynamic) {
-    for (const NodeLink& nl : nodes_) {
-      if (nl.mass.empty()) continue;
-      const domain::Node& n = *nl.node;
-      const Eigen::VectorXd f = n.mass() * (n.accel + nl.alphaM * n.vel);
-      for (const VecEntry& v : nl.vec) B(v.eq) -= v.coef * f(v.local);
-    }
-    if (hasModalDamping()) {
-      Eigen::VectorXd V(neq_);
+    if (global || hasModalDamping()) {
       for (int eq = 0; eq < neq_; ++eq) {
         const auto& [node, dof] = eqDof_[static_cast<std::size_t>(eq)];
-        V(eq) = node->vel(dof);
+        eqVel_(eq) = node->vel(dof);
+        eqAcc_(eq) = node->accel(dof);
       }
-      B.noalias() -= modalMphi_ * (modalCoefficients_.asDiagonal() * (modalMphi_.transpose() * V));
     }
+    if (global) {
+      B.noalias() -= massGlobal_ * eqAcc_;
+      B.noalias() -= dampingGlobal_ * eqVel_;
+    } else {
+      for (const NodeLink& nl : nodes_) {
+        if (nl.mass.empty()) continue;
+        const domain::Node& n = *nl.node;
+        const Eigen::VectorXd f = n.mass() * (n.accel + nl.alphaM * n.vel);
+        for (const VecEntry& v : nl.vec) B(v.eq) -= v.coef * f(v.local);
+      }
+    }
+    if (hasModalDamping())
+      B.noalias() -= modalMphi_ * (modalCoefficients_.asDiagonal() * (modalMphi_.transpose() * eqVel_));
   }
   for (const PenaltyRow& row : penalties_) {
     // Penalty force alpha c (g - c.u) (OpenSees PenaltySP_FE / PenaltyMP_FE).

@@ -139,6 +139,8 @@ class AnalysisModel {
 
   void numberEquations();
   void buildScatter();
+  void buildConstantDynamics();
+  void addElementMatrix(std::vector<double>& values, const ElementLink& l, const Eigen::MatrixXd& m) const;
   int valueIndex(int row, int col) const;
   double termValue(const std::vector<Term>& terms, const Eigen::VectorXd& x, int which) const;
 
@@ -159,6 +161,13 @@ class AnalysisModel {
   std::vector<std::pair<domain::Node*, int>> eqDof_;  // node and dof of each equation
   Eigen::SparseMatrix<double> A_;
   Eigen::VectorXd P_;
+  // Constant parts of the dynamic residual, M a + C v, assembled once per build: masses, alphaM and
+  // betaK0 terms, and the betaK/betaKc terms of linear elements. Only used when no support moves
+  // with an imposed velocity (otherwise every element forms its own inertia and damping forces).
+  Eigen::SparseMatrix<double> massGlobal_, dampingGlobal_;
+  std::vector<char> rayleighLeft_;   // per element: Rayleigh stiffness terms left to the element
+  bool imposedMotion_ = false;
+  mutable Eigen::VectorXd eqVel_, eqAcc_;
   std::map<int, Eigen::VectorXd> influence_;  // M r per excitation dof, formed once per build
   const Eigen::VectorXd& influence(int dof);
   Eigen::MatrixXd modalMphi_;

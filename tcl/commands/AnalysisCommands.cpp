@@ -256,7 +256,18 @@ void resetCmd(Runtime& rt, ArgReader& a) {
   rt.analysis->invalidate();
 }
 
+// DABS extension: what the analyses since the last wipe did, as a Tcl dict.
+void analysisStatisticsCmd(Runtime& rt, ArgReader& a) {
+  a.finish();
+  const auto& s = rt.analysis->statistics();
+  const std::string text = "steps " + std::to_string(s.steps) + " failedSteps " + std::to_string(s.failedSteps) +
+                           " subSteppedSteps " + std::to_string(s.subSteppedSteps) + " iterations " +
+                           std::to_string(s.iterations) + " factorizations " + std::to_string(s.factorizations);
+  setResult(rt, text);
+}
+
 constexpr CommandEntry kCommands[] = {
+    {"analysisStatistics", "analysisStatistics", analysisStatisticsCmd},
     {"constraints", "constraints Plain|Transformation|Penalty ?alphaSP alphaMP?", constraintsCmd},
     {"numberer", "numberer Plain|RCM", numbererCmd},
     {"system", "system BandGeneral|BandSPD|ProfileSPD|SparseGeneral|UmfPack|FullGeneral|SparseSYM|Mumps", systemCmd},
