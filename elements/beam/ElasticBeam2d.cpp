@@ -31,6 +31,10 @@ void ElasticBeam2d::initialize(const NodalCoordinates& x) {
   kb_(1, 1) = kb_(2, 2) = 4.0 * ei;
   kb_(1, 2) = kb_(2, 1) = 2.0 * ei;
   k0_ = transf_->initialGlobalStiffness(kb_);
+  // Linear and PDelta transformations have a constant B, so B^T kb B is formed here once and an
+  // update only adds the geometric part (nothing for Linear).
+  constantCompat_ = transf_->hasConstantCompatibility();
+  k_ = k0_;
 
   m_.setZero();
   const double mass = params_.massPerLength * length;
@@ -61,7 +65,12 @@ void ElasticBeam2d::formState(const Vector& u) {
   transf_->update(u);
   q_ = kb_ * transf_->basicDeformation();
   f_ = transf_->globalForce(q_);
-  k_ = transf_->globalStiffness(kb_, q_);
+  if (!constantCompat_) {
+    k_ = transf_->globalStiffness(kb_, q_);
+  } else if (!transf_->isLinear()) {
+    k_ = k0_;
+    transf_->addGeometricStiffness(k_, q_);
+  }
 }
 
 Status ElasticBeam2d::update(const Kinematics& trial) {

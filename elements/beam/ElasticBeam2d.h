@@ -51,6 +51,7 @@ class ElasticBeam2d final : public FixedSizeElement<2, 3> {
   std::unique_ptr<CrdTransf2d> transf_;
   CrdTransf2d::BasicMatrix kb_ = CrdTransf2d::BasicMatrix::Zero();
   CrdTransf2d::Basic q_ = CrdTransf2d::Basic::Zero();
+  bool constantCompat_ = false;  ///< B constant: k_ = k0_ + geometric part
   Vector uTrial_ = Vector::Zero();
   Vector uCommitted_ = Vector::Zero();
 };

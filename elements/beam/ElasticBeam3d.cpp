@@ -37,6 +37,10 @@ void ElasticBeam3d::initialize(const NodalCoordinates& x) {
   kb_(3, 4) = kb_(4, 3) = 2.0 * e * params_.inertiaY;
   kb_(5, 5) = params_.shearModulus * params_.torsion / length;
   k0_ = transf_->initialGlobalStiffness(kb_);
+  // Linear and PDelta transformations have a constant B, so B^T kb B is formed here once and an
+  // update only adds the geometric part (nothing for Linear).
+  constantCompat_ = transf_->hasConstantCompatibility();
+  k_ = k0_;
 
   m_.setZero();
   const double mass = params_.massPerLength * length;
@@ -74,7 +78,12 @@ void ElasticBeam3d::formState(const Vector& u) {
   transf_->update(u);
   q_ = kb_ * transf_->basicDeformation();
   f_ = transf_->globalForce(q_);
-  k_ = transf_->globalStiffness(kb_, q_);
+  if (!constantCompat_) {
+    k_ = transf_->globalStiffness(kb_, q_);
+  } else if (!transf_->isLinear()) {
+    k_ = k0_;
+    transf_->addGeometricStiffness(k_, q_);
+  }
 }
 
 Status ElasticBeam3d::update(const Kinematics& trial) {

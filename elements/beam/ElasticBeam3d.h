@@ -54,6 +54,7 @@ class ElasticBeam3d final : public FixedSizeElement<2, 6> {
   std::unique_ptr<CrdTransf3d> transf_;
   CrdTransf3d::BasicMatrix kb_ = CrdTransf3d::BasicMatrix::Zero();
   CrdTransf3d::Basic q_ = CrdTransf3d::Basic::Zero();
+  bool constantCompat_ = false;  ///< B constant: k_ = k0_ + geometric part
   Vector uTrial_ = Vector::Zero();
   Vector uCommitted_ = Vector::Zero();
 };

@@ -40,6 +40,16 @@ class CrdTransf3d : public CrdTransf {
   virtual GlobalMatrix globalStiffness(const BasicMatrix& kb, const Basic& q) const;
   /// Global stiffness of kb at the undeformed geometry (no geometric terms).
   GlobalMatrix initialGlobalStiffness(const BasicMatrix& kb) const;
+  /// True when d(v)/d(u) never changes (Linear, PDelta): then globalStiffness(kb, q) equals
+  /// initialGlobalStiffness(kb) plus addGeometricStiffness(q), so an element with a constant kb
+  /// forms B^T kb B once and adds only the geometric part per update.
+  virtual bool hasConstantCompatibility() const { return false; }
+  /// Adds the geometric stiffness of basic forces q to k (nothing for Linear). Only meaningful
+  /// when hasConstantCompatibility().
+  virtual void addGeometricStiffness(GlobalMatrix& k, const Basic& q) const {
+    static_cast<void>(k);
+    static_cast<void>(q);
+  }
   /// T^T m T with the undeformed axes (mass matrices given in local axes).
   GlobalMatrix globalFromLocal(const GlobalMatrix& local) const;
   /// Local end forces [N Vy Vz T My Mz]_i [..]_j in OpenSees' `localForce` convention

@@ -15,6 +15,7 @@ class LinearTransf2d final : public CrdTransf2d {
     return std::make_unique<LinearTransf2d>(*this);
   }
   bool isLinear() const override { return true; }
+  bool hasConstantCompatibility() const override { return true; }
   void update(const Global& u) override { v_ = compat0_ * u; }
 };
 

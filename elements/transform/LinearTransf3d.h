@@ -14,6 +14,7 @@ class LinearTransf3d final : public CrdTransf3d {
     return std::make_unique<LinearTransf3d>(*this);
   }
   bool isLinear() const override { return true; }
+  bool hasConstantCompatibility() const override { return true; }
   void update(const Global& u) override { v_ = compat0_ * u; }
 };
 

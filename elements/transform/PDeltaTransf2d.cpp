@@ -19,11 +19,24 @@ PDeltaTransf2d::Global PDeltaTransf2d::globalForce(const Basic& q) const {
 
 PDeltaTransf2d::GlobalMatrix PDeltaTransf2d::globalStiffness(const BasicMatrix& kb,
                                                               const Basic& q) const {
-  GlobalMatrix kg = GlobalMatrix::Zero();
+  GlobalMatrix k = compat0_.transpose() * kb * compat0_;
+  addGeometricStiffness(k, q);
+  return k;
+}
+
+void PDeltaTransf2d::addGeometricStiffness(GlobalMatrix& k, const Basic& q) const {
+  // Local geometric matrix N/L [1 -1; -1 1] on the local y translations, rotated to global with
+  // the local y axis (-sin, cos): blocks +-N/L y y^T on (ux, uy) of both nodes.
   const double n = q(0) / length0_;
-  kg(1, 1) = kg(4, 4) = n;
-  kg(1, 4) = kg(4, 1) = -n;
-  return compat0_.transpose() * kb * compat0_ + rot_.transpose() * kg * rot_;
+  const double gxx = n * sin_ * sin_, gxy = -n * sin_ * cos_, gyy = n * cos_ * cos_;
+  for (int a : {0, 3})
+    for (int b : {0, 3}) {
+      const double s = a == b ? 1.0 : -1.0;
+      k(a, b) += s * gxx;
+      k(a, b + 1) += s * gxy;
+      k(a + 1, b) += s * gxy;
+      k(a + 1, b + 1) += s * gyy;
+    }
 }
 
 }  // namespace dabs::elements

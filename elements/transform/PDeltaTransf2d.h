@@ -21,6 +21,8 @@ class PDeltaTransf2d final : public CrdTransf2d {
   void update(const Global& u) override;
   Global globalForce(const Basic& q) const override;
   GlobalMatrix globalStiffness(const BasicMatrix& kb, const Basic& q) const override;
+  bool hasConstantCompatibility() const override { return true; }
+  void addGeometricStiffness(GlobalMatrix& k, const Basic& q) const override;
 
  private:
   double delta_ = 0.0;  ///< ul1 - ul4: transverse end displacement difference (local y)

@@ -24,13 +24,21 @@ PDeltaTransf3d::Global PDeltaTransf3d::globalForce(const Basic& q) const {
 
 PDeltaTransf3d::GlobalMatrix PDeltaTransf3d::globalStiffness(const BasicMatrix& kb,
                                                               const Basic& q) const {
-  GlobalMatrix kg = GlobalMatrix::Zero();
+  GlobalMatrix k = compat0_.transpose() * kb * compat0_;
+  addGeometricStiffness(k, q);
+  return k;
+}
+
+void PDeltaTransf3d::addGeometricStiffness(GlobalMatrix& k, const Basic& q) const {
+  // Local geometric matrix N/L [1 -1; -1 1] on the local y and z translations, rotated to global:
+  // the translation blocks get +-N/L (y y^T + z z^T).
   const double n = q(0) / length0_;
-  for (int d : {1, 2}) {
-    kg(d, d) = kg(d + 6, d + 6) = n;
-    kg(d, d + 6) = kg(d + 6, d) = -n;
-  }
-  return compat0_.transpose() * kb * compat0_ + globalFromLocal(kg);
+  const Eigen::Matrix3d g =
+      n * (axes_.row(1).transpose() * axes_.row(1) + axes_.row(2).transpose() * axes_.row(2));
+  k.block<3, 3>(0, 0) += g;
+  k.block<3, 3>(6, 6) += g;
+  k.block<3, 3>(0, 6) -= g;
+  k.block<3, 3>(6, 0) -= g;
 }
 
 }  // namespace dabs::elements

@@ -20,6 +20,8 @@ class PDeltaTransf3d final : public CrdTransf3d {
   void update(const Global& u) override;
   Global globalForce(const Basic& q) const override;
   GlobalMatrix globalStiffness(const BasicMatrix& kb, const Basic& q) const override;
+  bool hasConstantCompatibility() const override { return true; }
+  void addGeometricStiffness(GlobalMatrix& k, const Basic& q) const override;
 
  private:
   double deltaY_ = 0.0;  ///< ul1 - ul7 (local y)
