@@ -10,13 +10,17 @@
 #include "elements/beam/ForceBeamColumn.h"
 #include "elements/beam/QuadratureIntegration.h"
 #include "elements/beam/ElasticBeam3d.h"
+#include "elements/beam/ZeroLengthSection.h"
 #include "elements/transform/CorotationalTransf2d.h"
+#include "elements/transform/CorotationalTransf3d.h"
 #include "elements/transform/LinearTransf2d.h"
 #include "elements/transform/LinearTransf3d.h"
 #include "elements/transform/PDeltaTransf2d.h"
 #include "elements/transform/PDeltaTransf3d.h"
 #include "materials/InputError.h"
+#include "materials/section/ElasticSection.h"
 #include "materials/section/FiberSection.h"
+#include "materials/section/SectionAggregator.h"
 #include "materials/section/geometry/CircPatch.h"
 #include "materials/section/geometry/QuadPatch.h"
 #include "materials/section/geometry/StraightLayer.h"
@@ -172,13 +176,105 @@ std::unique_ptr<S> buildFiberSection(const Runtime& rt, int tag,
   return std::make_unique<S>(tag, fibers, gj);
 }
 
-// section Fiber tag ?-GJ GJ? {body}
+constexpr const char* kElasticSectionUsage2d = "section Elastic tag E A Iz ?G alphaY?";
+constexpr const char* kElasticSectionUsage3d =
+    "section Elastic tag E A Iz Iy G J ?alphaY alphaZ?";
+constexpr const char* kAggregatorUsage =
+    "section Aggregator tag matTag1 code1 ?matTag2 code2 ...? ?-section secTag? (codes P Mz Vy My "
+    "Vz T)";
+
+// section Elastic tag E A Iz ?G alphaY? (2D) | tag E A Iz Iy G J ?alphaY alphaZ? (3D)
+std::unique_ptr<materials::section::SectionForceDeformation> parseElasticSection(Runtime& rt,
+                                                                                 ArgReader& args,
+                                                                                 int tag) {
+  materials::section::ElasticSectionParams p;
+  p.ndm = rt.builder.ndm;
+  p.modulus = args.real("E");
+  p.area = args.real("A");
+  p.inertiaZ = args.real("Iz");
+  if (p.ndm == 3) {
+    p.inertiaY = args.real("Iy");
+    p.shearModulus = args.real("G");
+    p.torsion = args.real("J");
+    if (auto a = args.optionalReal("alphaY")) {
+      p.alphaY = *a;
+      p.alphaZ = args.real("alphaZ");
+    }
+  } else if (auto g = args.optionalReal("G")) {
+    p.shearModulus = *g;
+    p.alphaY = args.real("alphaY");
+    if (!(p.alphaY > 0.0)) throw InputError("alphaY", "must be positive");
+  }
+  args.finish();
+  p.validate();
+  return std::make_unique<materials::section::ElasticSection>(tag, p);
+}
+
+materials::section::SectionCode sectionCode(ArgReader& args) {
+  using materials::section::SectionCode;
+  const std::string c = args.word("code");
+  if (c == "P") return SectionCode::P;
+  if (c == "Mz") return SectionCode::Mz;
+  if (c == "Vy") return SectionCode::Vy;
+  if (c == "My") return SectionCode::My;
+  if (c == "Vz") return SectionCode::Vz;
+  if (c == "T") return SectionCode::T;
+  args.fail(args.lastPosition(), "code", "unknown resultant \"" + c + "\" (P, Mz, Vy, My, Vz, T)");
+}
+
+// section Aggregator tag matTag1 code1 ... ?-section secTag?
+std::unique_ptr<materials::section::SectionForceDeformation> parseAggregator(Runtime& rt,
+                                                                             ArgReader& args,
+                                                                             int tag) {
+  const std::optional<std::string> base = args.optionalWordOption("-section");
+  std::vector<materials::section::SectionAggregator::Part> parts;
+  while (args.hasPositional()) {
+    const int mat = args.integer("matTag");
+    const materials::section::SectionCode code = sectionCode(args);
+    if (rt.builder.ndm == 2 && (code == materials::section::SectionCode::My ||
+                                code == materials::section::SectionCode::Vz ||
+                                code == materials::section::SectionCode::T))
+      args.fail(args.lastPosition(), "code", "My, Vz and T are not available in a 2D model");
+    parts.push_back({&rt.builder.uniaxialMaterial(mat), code});
+  }
+  args.finish();
+  const materials::section::SectionForceDeformation* baseSection = nullptr;
+  if (base) {
+    int secTag = 0;
+    try {
+      std::size_t used = 0;
+      secTag = std::stoi(*base, &used);
+      if (used != base->size()) throw std::invalid_argument("trailing");
+    } catch (const std::exception&) {
+      throw InputError("-section", "expected a section tag, got \"" + *base + "\"");
+    }
+    baseSection = &rt.builder.section(secTag);
+  }
+  if (parts.empty() && baseSection == nullptr)
+    args.fail("needs at least one matTag code pair or -section secTag");
+  return std::make_unique<materials::section::SectionAggregator>(tag, parts, baseSection);
+}
+
+// section Fiber tag ?-GJ GJ? {body} | Elastic ... | Aggregator ...
 void sectionCommand(Runtime& rt, ArgReader& args) {
   rt.requireModel("section");
   const int ndm = rt.builder.ndm;
   const std::string type = args.word("type");
+  if (type == "Elastic" || type == "Aggregator") {
+    args.setContext("section " + type);
+    args.setUsage(type == "Aggregator" ? kAggregatorUsage
+                  : ndm == 3           ? kElasticSectionUsage3d
+                                       : kElasticSectionUsage2d);
+    const int tag = readNewTag(args, rt.builder.sections, "section");
+    auto section =
+        type == "Elastic" ? parseElasticSection(rt, args, tag) : parseAggregator(rt, args, tag);
+    rt.builder.sections[tag] = std::move(section);
+    Tcl_SetObjResult(rt.interp, Tcl_NewIntObj(tag));
+    return;
+  }
   if (type != "Fiber" && type != "fiberSec")
-    args.fail(args.lastPosition(), "type", "unknown section \"" + type + "\" (available: Fiber)");
+    args.fail(args.lastPosition(), "type",
+              "unknown section \"" + type + "\" (available: Fiber, Elastic, Aggregator)");
   args.setContext("section " + type);
   args.setUsage("section Fiber tag ?-GJ GJ? { fiber ...; patch ...; layer ... }");
   const int tag = readNewTag(args, rt.builder.sections, "section");
@@ -286,7 +382,7 @@ void geomTransfCommand(Runtime& rt, ArgReader& args) {
     else if (type == "PDelta")
       transf = std::make_unique<elements::PDeltaTransf3d>(tag, vecxz);
     else
-      args.fail("Corotational is not yet available in 3D");
+      transf = std::make_unique<elements::CorotationalTransf3d>(tag, vecxz);
   }
   rt.builder.transforms[tag] = std::move(transf);
   Tcl_SetObjResult(rt.interp, Tcl_NewIntObj(tag));
@@ -412,11 +508,38 @@ std::unique_ptr<elements::Element> parseSectionBeam(Runtime& rt, ArgReader& args
                                                         std::move(t), mass);
 }
 
+constexpr const char* kZeroLengthSectionUsage =
+    "element zeroLengthSection tag iNode jNode secTag ?-orient x1 x2 x3 yp1 yp2 yp3?";
+
+// element zeroLengthSection tag i j secTag ?-orient x1 x2 x3 yp1 yp2 yp3?
+std::unique_ptr<elements::Element> parseZeroLengthSection(Runtime& rt, ArgReader& args, int tag) {
+  args.setUsage(kZeroLengthSectionUsage);
+  const int iNode = args.integer("iNode");
+  const int jNode = args.integer("jNode");
+  const int secTag = args.integer("secTag");
+  Eigen::Vector3d x = Eigen::Vector3d::UnitX(), yp = Eigen::Vector3d::UnitY();
+  if (auto o = args.optionReals("-orient", 6)) {
+    x << (*o)[0], (*o)[1], (*o)[2];
+    yp << (*o)[3], (*o)[4], (*o)[5];
+  }
+  args.finish();
+  const int ndm = rt.builder.ndm;
+  if (ndm != 2 && ndm != 3) args.fail("needs a 2D or 3D model (model basic -ndm 2|3)");
+  auto section = rt.builder.section(secTag).clone();
+  if (ndm == 3)
+    return std::make_unique<elements::ZeroLengthSection3d>(tag, iNode, jNode, std::move(section),
+                                                           x, yp);
+  return std::make_unique<elements::ZeroLengthSection2d>(tag, iNode, jNode, std::move(section), x,
+                                                         yp);
+}
 
 constexpr std::array kSectionCommands{
     CommandEntry{"geomTransf", "geomTransf Linear|PDelta|Corotational tag ?vecxzX vecxzY vecxzZ?",
                  geomTransfCommand},
-    CommandEntry{"section", "section Fiber tag ?-GJ GJ? {body}", sectionCommand},
+    CommandEntry{"section",
+                 "section Fiber tag ?-GJ GJ? {body} | Elastic tag E A Iz ... | Aggregator tag "
+                 "matTag code ... ?-section secTag?",
+                 sectionCommand},
     CommandEntry{"fiber", "fiber y z A matTag", fiberCommand},
     CommandEntry{"patch",
                  "patch rect matTag nY nZ yI zI yJ zJ | quad matTag nIJ nJK yI zI yJ zJ yK zK yL zL"
@@ -433,6 +556,7 @@ constexpr std::array kSectionCommands{
 };
 
 constexpr std::array kBeamElements{
+    ElementEntry{"zeroLengthSection", kZeroLengthSectionUsage, parseZeroLengthSection},
     ElementEntry{"elasticBeamColumn",
                  "element elasticBeamColumn tag iNode jNode A E Iz transfTag ?-mass m? ?-cMass? "
                  "(2D) | tag iNode jNode A E G J Iy Iz transfTag ?-mass m? ?-cMass? (3D)",
