@@ -104,6 +104,8 @@ class NodeToSurfaceContact3d : public elements::FixedSizeElement<5, Ndf> {
 
   bool hasNonSymmetricTangent() const override;
   bool rayleighByDefault() const override { return false; }
+  /// Open contacts carry nothing, so the assembly skips them.
+  bool isActive() const override { return !forcesZero_; }
 
   void commitState() override { committed_ = trial_; }
   void revertToLastCommit() override { trial_ = committed_; }

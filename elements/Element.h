@@ -77,6 +77,9 @@ class Element {
   virtual bool rayleighByDefault() const { return true; }
   /// True when the element is linear, so its tangent never changes and needs no re-forming.
   virtual bool isLinear() const { return false; }
+  /// False while the element's force, stiffness, damping and mass are all zero (an open contact): the
+  /// assembly then skips it, though its place in the sparse pattern stays reserved.
+  virtual bool isActive() const { return true; }
 
   virtual void commitState() = 0;
   virtual void revertToLastCommit() = 0;

@@ -498,6 +498,7 @@ void AnalysisModel::formResidual(const AssemblyCoefficients& c, Eigen::VectorXd&
   for (std::size_t k = 0; k < elements_.size(); ++k) {
     const ElementLink& l = elements_[k];
     const elements::Element& e = *l.element;
+    if (!e.isActive()) continue;
     if (global) {
       if (rayleighLeft_[k] == 0) {
         const auto f = e.resistingForce();
@@ -567,6 +568,7 @@ const Eigen::SparseMatrix<double>& AnalysisModel::formTangent(const AssemblyCoef
   std::fill(values, values + A_.nonZeros(), 0.0);
   for (ElementLink& l : elements_) {
     const elements::Element& e = *l.element;
+    if (!e.isActive()) continue;
     Eigen::MatrixXd& local = l.work;
     const auto k = c.stiffness == StiffnessKind::Current ? e.tangentStiff() : e.initialStiff();
     local.noalias() = c.cK * k;
