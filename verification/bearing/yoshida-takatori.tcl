@@ -5,7 +5,7 @@
 # iteration converges at every step (the consistent tangent) and that the response is a bearing
 # response: it yields (peak shear strain above 0.5). Quadratic convergence itself is measured in
 # elements/tests/YoshidaBearing3dTest.NewtonConvergesQuadraticallyUnderTakatori.
-source [file join [file dirname [info script]] .. .. lib check.tcl]
+source [file join [file dirname [info script]] .. lib check.tcl]
 
 set pi [expr {acos(-1.0)}]
 set g 9.81
