@@ -75,8 +75,11 @@ void ZeroLength::initialize(const NodalCoordinates& /*x*/) {
       t_(row, ndf + 2) = a(2);
     }
   }
+  nonzero_.assign(materials_.size(), {});
   for (std::size_t k = 0; k < materials_.size(); ++k) {
     const auto row = static_cast<Eigen::Index>(k);
+    for (int i = 0; i < numDof(); ++i)
+      if (t_(row, i) != 0.0) nonzero_[k].push_back(i);
     k0_.noalias() += materials_[k]->getInitialTangent() * t_.row(row).transpose() * t_.row(row);
   }
   assemble();
@@ -87,13 +90,19 @@ void ZeroLength::assemble() {
   f_.setZero();
   k_.setZero();
   c_.setZero();
+  // Each row of t touches at most 2 x 3 dofs: add only those entries.
   for (std::size_t k = 0; k < materials_.size(); ++k) {
-    const auto row = t_.row(static_cast<Eigen::Index>(k));
+    const auto row = static_cast<Eigen::Index>(k);
     const auto& m = *materials_[k];
-    f_.noalias() += m.getStress() * row.transpose();
-    k_.noalias() += m.getTangent() * row.transpose() * row;
-    const double eta = m.getDampTangent();
-    if (eta != 0.0) c_.noalias() += eta * row.transpose() * row;
+    const double stress = m.getStress(), tangent = m.getTangent(), eta = m.getDampTangent();
+    for (int i : nonzero_[k]) {
+      const double ti = t_(row, i);
+      f_(i) += stress * ti;
+      for (int j : nonzero_[k]) {
+        k_(i, j) += tangent * ti * t_(row, j);
+        if (eta != 0.0) c_(i, j) += eta * ti * t_(row, j);
+      }
+    }
   }
 }
 

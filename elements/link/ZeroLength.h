@@ -54,6 +54,7 @@ class ZeroLength final : public Element {
   Params params_;
   std::vector<std::unique_ptr<materials::UniaxialMaterial>> materials_;
   Eigen::MatrixXd t_;  ///< one row per material: d(deformation)/d(u)
+  std::vector<std::vector<int>> nonzero_;  ///< per material: the dofs its row of t_ touches
   Eigen::VectorXd f_;
   Eigen::MatrixXd k_, k0_, kc_, c_, m_;
 };

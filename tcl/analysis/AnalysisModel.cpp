@@ -25,6 +25,12 @@ bool AnalysisModel::nonSymmetric() const {
                      [](const ElementLink& l) { return l.element->hasNonSymmetricTangent(); });
 }
 
+bool AnalysisModel::nonSymmetricNow() const {
+  return std::any_of(elements_.begin(), elements_.end(), [](const ElementLink& l) {
+    return l.element->isActive() && l.element->hasNonSymmetricTangent();
+  });
+}
+
 bool AnalysisModel::allLinear() const {
   return std::all_of(elements_.begin(), elements_.end(),
                      [](const ElementLink& l) { return l.element->isLinear(); });
@@ -69,12 +75,16 @@ void AnalysisModel::numberEquations() {
   };
   imposedMotion_ = false;
   for (const auto& sp : domain_.fixes()) addSlot(sp.node, sp.dof, "fix");
+  patternSlots_.clear();
   for (const auto& [ptag, p] : domain_.patterns()) {
     if (p->kind() == domain::LoadPattern::Kind::Plain) {
-      for (const auto& sp : static_cast<const domain::PlainPattern&>(*p).prescribed)
+      for (const auto& sp : static_cast<const domain::PlainPattern&>(*p).prescribed) {
+        patternSlots_.push_back(static_cast<int>(slots_.size()));
         addSlot(sp.node, sp.dof, "sp");
+      }
     } else if (p->kind() == domain::LoadPattern::Kind::MultipleSupport) {
       for (const auto& im : static_cast<const domain::MultipleSupportPattern&>(*p).imposed) {
+        patternSlots_.push_back(static_cast<int>(slots_.size()));
         addSlot(im.node, im.dof, "imposedMotion");
         imposedMotion_ = true;
       }
@@ -330,21 +340,20 @@ void AnalysisModel::applyLoad(double t) {
   domain_.setTime(t);
   // Support values.
   for (Slot& s : slots_) s.disp = s.vel = s.accel = 0.0;
-  std::map<std::pair<int, int>, Slot*> slotAt;
-  for (Slot& s : slots_) slotAt[{s.node, s.dof}] = &s;
+  auto next = patternSlots_.begin();  // same pattern order as numberEquations
   for (const auto& [ptag, p] : domain_.patterns()) {
     if (p->kind() == domain::LoadPattern::Kind::Plain) {
       const auto& plain = static_cast<const domain::PlainPattern&>(*p);
       const double f = plain.factor(t);
       for (const auto& sp : plain.prescribed) {
-        Slot* s = slotAt.at({sp.node, sp.dof});
+        Slot* s = &slots_[static_cast<std::size_t>(*next++)];
         s->disp = sp.constant ? sp.reference : sp.reference * f;
       }
     } else if (p->kind() == domain::LoadPattern::Kind::MultipleSupport) {
       const auto& ms = static_cast<const domain::MultipleSupportPattern&>(*p);
       for (const auto& im : ms.imposed) {
         const auto& gm = *ms.groundMotions.at(im.groundMotion);
-        Slot* s = slotAt.at({im.node, im.dof});
+        Slot* s = &slots_[static_cast<std::size_t>(*next++)];
         s->disp = gm.disp(t);
         s->vel = gm.vel(t);
         s->accel = gm.accel(t);

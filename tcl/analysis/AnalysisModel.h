@@ -56,6 +56,8 @@ class AnalysisModel {
   const Eigen::SparseMatrix<double>& pattern() const noexcept { return A_; }
   /// True when some element declares a non-symmetric tangent.
   bool nonSymmetric() const;
+  /// True when some element that currently carries stiffness has a non-symmetric tangent.
+  bool nonSymmetricNow() const;
   /// True when every element is linear, so the tangent never changes between assemblies.
   bool allLinear() const;
 
@@ -108,7 +110,7 @@ class AnalysisModel {
     double coef;
   };
   struct MatEntry {
-    int local;  // row-major index i*n+j into the element matrix
+    int local;  // row-major index i*n+j into the element matrix (row i, column j)
     int value;  // index into A_.valuePtr()
     double coef;
   };
@@ -154,6 +156,7 @@ class AnalysisModel {
 
   std::vector<std::vector<Term>> dofTerms_;  // per node dof: combination of equations and slots
   std::vector<Slot> slots_;
+  std::vector<int> patternSlots_;  // slot of each pattern sp / imposed motion, in pattern order
   std::vector<NodeLink> nodes_;
   std::vector<ElementLink> elements_;
   std::vector<PenaltyRow> penalties_;

@@ -14,16 +14,36 @@ bool sameCoefficients(const AssemblyCoefficients& a, const AssemblyCoefficients&
 LinearSystem::LinearSystem(AnalysisModel& model, SolverKind kind) : model_(model), kind_(kind) {}
 
 void LinearSystem::patternChanged() {
-  solver_ = LinearSolver::create(kind_, model_.nonSymmetric());
-  solver_->analyzePattern(model_.pattern());
+  primary_ = LinearSolver::create(kind_, false);
+  if (model_.numEquations() > 0) primary_->analyzePattern(model_.pattern());
+  general_.reset();
+  solver_ = primary_.get();
   factored_ = false;
   B = X = Eigen::VectorXd::Zero(model_.numEquations());
 }
 
+long LinearSystem::factorizations() const noexcept {
+  return (primary_ ? primary_->factorizations() : 0) + (general_ ? general_->factorizations() : 0);
+}
+
 Status LinearSystem::formTangent(const AssemblyCoefficients& c, bool reuse) {
   if (reuse && factored_ && sameCoefficients(c, lastCoefficients_)) return Status::Ok;
+  if (model_.numEquations() == 0) {  // everything is prescribed: nothing to factorise
+    factored_ = true;
+    lastCoefficients_ = c;
+    modalScale_ = 0.0;
+    return Status::Ok;
+  }
   const auto& A = model_.formTangent(c);
   factored_ = false;
+  solver_ = primary_.get();
+  if (kind_ == SolverKind::SparseLDLT && model_.nonSymmetricNow()) {
+    if (!general_) {
+      general_ = LinearSolver::create(SolverKind::SparseLU, true);
+      general_->analyzePattern(model_.pattern());
+    }
+    solver_ = general_.get();
+  }
   const Status s = solver_->factorize(A);
   if (!ok(s)) return s;
   lastCoefficients_ = c;
@@ -56,6 +76,10 @@ Status LinearSystem::solve() { return solve(B, X); }
 
 Status LinearSystem::solve(const Eigen::VectorXd& b, Eigen::VectorXd& x) {
   if (!factored_) return Status::Singular;
+  if (b.size() == 0) {
+    x.resize(0);
+    return Status::Ok;
+  }
   Status s = solver_->solve(b, x);
   if (!ok(s)) return s;
   if (modalScale_ != 0.0) {

@@ -33,13 +33,17 @@ class LinearSystem {
   Eigen::VectorXd B;  ///< residual
   Eigen::VectorXd X;  ///< last solution (integrators may overwrite it with the applied increment)
 
-  long factorizations() const noexcept { return solver_ ? solver_->factorizations() : 0; }
+  long factorizations() const noexcept;
   AnalysisModel& model() noexcept { return model_; }
 
  private:
   AnalysisModel& model_;
   SolverKind kind_;
-  std::unique_ptr<LinearSolver> solver_;
+  // A symmetric system is factorised with LDL^T while every active element is symmetric and with
+  // LU while one is not (a sliding contact); each solver analyses the pattern once.
+  std::unique_ptr<LinearSolver> primary_;
+  std::unique_ptr<LinearSolver> general_;
+  LinearSolver* solver_ = nullptr;
   bool factored_ = false;
   AssemblyCoefficients lastCoefficients_;
   // Woodbury data for modal damping: W = A^-1 U, S = (D^-1 + U^T W)^-1.

@@ -459,6 +459,7 @@ std::unique_ptr<elements::Element> parseSectionBeam(Runtime& rt, ArgReader& args
     tol = (*it)[1];
   }
   const double mass = args.option("-mass", 0.0);
+  const bool consistentMass = args.flag("-cMass");
   const std::string integrationType = args.option("-integration", std::string("Lobatto"));
   args.finish();
   if (maxIter < 1) throw InputError("-iter maxIter", "must be at least 1");
@@ -490,22 +491,28 @@ std::unique_ptr<elements::Element> parseSectionBeam(Runtime& rt, ArgReader& args
   std::vector<elements::BeamIntegrationPoint> pts;
   for (std::size_t k = 0; k < secs.size(); ++k)
     pts.push_back({rt.builder.section(secs[k]).clone(), xi[k], w[k]});
+  auto withMass = [consistentMass](auto element) {
+    element->setConsistentMass(consistentMass);
+    return std::unique_ptr<elements::Element>(std::move(element));
+  };
   if (ndm == 3) {
     auto t = transformFor<CrdTransf3d>(rt, transfTag);
     if constexpr (Force)
-      return std::make_unique<elements::ForceBeamColumn3d>(tag, iNode, jNode, std::move(pts),
-                                                           std::move(t), mass, maxIter, tol);
+      return withMass(std::make_unique<elements::ForceBeamColumn3d>(
+          tag, iNode, jNode, std::move(pts), std::move(t), mass, maxIter, tol));
     else
-      return std::make_unique<elements::DispBeamColumn3d>(tag, iNode, jNode, std::move(pts),
-                                                          std::move(t), mass);
+      return withMass(std::make_unique<elements::DispBeamColumn3d>(tag, iNode, jNode,
+                                                                   std::move(pts), std::move(t),
+                                                                   mass));
   }
   auto t = transformFor<CrdTransf2d>(rt, transfTag);
   if constexpr (Force)
-    return std::make_unique<elements::ForceBeamColumn2d>(tag, iNode, jNode, std::move(pts),
-                                                         std::move(t), mass, maxIter, tol);
+    return withMass(std::make_unique<elements::ForceBeamColumn2d>(
+        tag, iNode, jNode, std::move(pts), std::move(t), mass, maxIter, tol));
   else
-    return std::make_unique<elements::DispBeamColumn2d>(tag, iNode, jNode, std::move(pts),
-                                                        std::move(t), mass);
+    return withMass(std::make_unique<elements::DispBeamColumn2d>(tag, iNode, jNode,
+                                                                 std::move(pts), std::move(t),
+                                                                 mass));
 }
 
 constexpr const char* kZeroLengthSectionUsage =
@@ -563,16 +570,17 @@ constexpr std::array kBeamElements{
                  parseElasticBeam},
     ElementEntry{"forceBeamColumn",
                  "element forceBeamColumn tag iNode jNode transfTag integrationTag ?-iter maxIter "
-                 "tol? ?-mass m? | tag iNode jNode nIP secTag transfTag ?-iter maxIter tol? ?-mass m?"
-                 " ?-integration Lobatto|Legendre|Radau|NewtonCotes?",
+                 "tol? ?-mass m? ?-cMass? | tag iNode jNode nIP secTag transfTag ?-iter maxIter tol? ?-mass "
+                 "m? ?-cMass? ?-integration Lobatto|Legendre|Radau|NewtonCotes?",
                  parseSectionBeam<true>},
     ElementEntry{"nonlinearBeamColumn",
                  "element nonlinearBeamColumn tag iNode jNode nIP secTag transfTag ?-iter maxIter "
-                 "tol? ?-mass m?",
+                 "tol? ?-mass m? ?-cMass?",
                  parseSectionBeam<true>},
     ElementEntry{"dispBeamColumn",
-                 "element dispBeamColumn tag iNode jNode transfTag integrationTag ?-mass m? | tag "
-                 "iNode jNode nIP secTag transfTag ?-mass m? ?-integration Lobatto|Legendre|Radau?",
+                 "element dispBeamColumn tag iNode jNode transfTag integrationTag ?-mass m? ?-cMass? | "
+                 "tag iNode jNode nIP secTag transfTag ?-mass m? ?-cMass? ?-integration "
+                 "Lobatto|Legendre|Radau?",
                  parseSectionBeam<false>},
 };
 

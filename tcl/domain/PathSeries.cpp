@@ -33,7 +33,8 @@ double PathSeries::factor(double t) const {
     return factor_ * (values_[i1] + (values_[i2] - values_[i1]) * frac);
   }
   if (t < times_.front()) return 0.0;
-  if (t >= times_.back()) return useLast_ ? factor_ * values_.back() : 0.0;
+  if (t == times_.back()) return factor_ * values_.back();  // PathTimeSeries interpolates here
+  if (t > times_.back()) return useLast_ ? factor_ * values_.back() : 0.0;
   const auto it = std::upper_bound(times_.begin(), times_.end(), t);
   const auto i2 = static_cast<std::size_t>(it - times_.begin());
   const std::size_t i1 = i2 - 1;

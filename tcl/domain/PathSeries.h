@@ -10,7 +10,8 @@ namespace dabs::domain {
 /// `timeSeries Path`: values at equal steps dt from startTime (-dt), or at given times (-time),
 /// linearly interpolated; zero before the first and after the last point unless -useLast
 /// (OpenSees/OpenSees:SRC/domain/pattern/PathSeries.cpp and PathTimeSeries.cpp, including their
-/// convention that the factor at and after the last sample time is zero without -useLast).
+/// conventions without -useLast: an equally spaced series is zero from its last sample time on,
+/// one with -time gives its last value at the last time and zero after it).
 class PathSeries final : public TimeSeries {
  public:
   /// Equally spaced values.

@@ -156,3 +156,29 @@ TEST_F(CommandTableTest, WipeClearsEverything) {
 }
 
 }  // namespace dabs::tcl::testing
+
+namespace dabs::tcl::testing {
+
+TEST_F(CommandTableTest, ModelWithoutFreeDofsAnalysesTrivially) {
+  // Every dof prescribed: nothing to solve, the step succeeds and the support moves as told.
+  ok("model basic -ndm 1 -ndf 1; node 1 0.0; node 2 1.0; fix 1 1");
+  ok("uniaxialMaterial Elastic 1 100.0; element truss 1 1 2 1.0 1");
+  ok("timeSeries Linear 1; pattern Plain 1 1 { sp 2 1 0.01 }");
+  ok("integrator LoadControl 1.0; analysis Static");
+  EXPECT_EQ(number("analyze 1"), 0.0);
+  EXPECT_NEAR(number("nodeDisp 2 1"), 0.01, 1e-15);
+  EXPECT_NEAR(number("eleResponse 1 axialForce"), 100.0 * 0.01, 1e-12);  // EA/L * u
+}
+
+TEST_F(CommandTableTest, PathSeriesWithTimesGivesLastValueAtLastTime) {
+  // OpenSees PathTimeSeries interpolates up to and including the last time, and is zero after.
+  ok("model basic -ndm 1 -ndf 1; timeSeries Path 1 -time {0 1 2} -values {0 1 3}");
+  ok("node 1 0.0; node 2 0.0; fix 1 1; uniaxialMaterial Elastic 1 1.0; element zeroLength 1 1 2 -mat 1 -dir 1");
+  ok("pattern Plain 1 1 { load 2 1.0 }; integrator LoadControl 1.0; analysis Static");
+  ok("analyze 2");
+  EXPECT_NEAR(number("nodeDisp 2 1"), 3.0, 1e-12);
+  ok("analyze 1");
+  EXPECT_NEAR(number("nodeDisp 2 1"), 0.0, 1e-12);
+}
+
+}  // namespace dabs::tcl::testing
