@@ -9,6 +9,7 @@
 #include "materials/InputError.h"
 #include "tcl/domain/ConstantSeries.h"
 #include "tcl/domain/LinearSeries.h"
+#include "tcl/domain/NearFaultPulseSeries.h"
 #include "tcl/domain/PathSeries.h"
 #include "tcl/domain/RectangularSeries.h"
 #include "tcl/domain/TrigSeries.h"
@@ -117,7 +118,23 @@ std::shared_ptr<const domain::TimeSeries> parseSeries(Runtime& rt, ArgReader& a,
     return std::make_shared<domain::RectangularSeries>(tag, t0, t1, f);
   }
   if (type == "Path" || type == "Series" || type == "PathSeries") return parsePath(a, tag);
-  a.fail("\"" + type + "\" is not a known time series (Constant, Linear, Trig, Rectangular, Path)");
+  if (type == "NearFaultPulse") {
+    domain::NearFaultPulseSeries::Params p;
+    const auto Tp = a.optionalOption("-Tp"), Vp = a.optionalOption("-Vp"), gamma = a.optionalOption("-gamma");
+    const auto nu = a.optionalOption("-nu"), t0 = a.optionalOption("-t0");
+    p.factor = a.option("-factor", 1.0);
+    p.velocity = a.flag("-velocity");
+    a.finish();
+    if (!Tp || !Vp || !gamma || !nu || !t0) a.fail("needs -Tp, -Vp, -gamma, -nu and -t0");
+    p.Tp = *Tp;
+    p.Vp = *Vp;
+    p.gamma = *gamma;
+    p.nu = *nu;
+    p.t0 = *t0;
+    p.validate();
+    return std::make_shared<domain::NearFaultPulseSeries>(tag, p);
+  }
+  a.fail("\"" + type + "\" is not a known time series (Constant, Linear, Trig, Rectangular, Path, NearFaultPulse)");
 }
 
 std::shared_ptr<const domain::TimeSeries> seriesArgument(Runtime& rt, ArgReader& a, std::string_view name) {
