@@ -4,6 +4,7 @@
 #include <cassert>
 #include <sstream>
 
+#include "elements/beam/ConsistentMass.h"
 #include "materials/InputError.h"
 
 namespace dabs::elements {
@@ -41,20 +42,7 @@ void ElasticBeam2d::initialize(const NodalCoordinates& x) {
   if (mass > 0.0 && !params_.consistentMass) {
     for (int d : {0, 1, 3, 4}) m_(d, d) = 0.5 * mass;
   } else if (mass > 0.0) {
-    // Local consistent mass: linear axial and cubic Hermitian transverse shape functions.
-    Matrix ml = Matrix::Zero();
-    const double m = mass / 420.0, l = length;
-    ml(0, 0) = ml(3, 3) = 140.0 * m;
-    ml(0, 3) = ml(3, 0) = 70.0 * m;
-    ml(1, 1) = ml(4, 4) = 156.0 * m;
-    ml(1, 4) = ml(4, 1) = 54.0 * m;
-    ml(2, 2) = ml(5, 5) = 4.0 * l * l * m;
-    ml(2, 5) = ml(5, 2) = -3.0 * l * l * m;
-    ml(1, 2) = ml(2, 1) = 22.0 * l * m;
-    ml(4, 5) = ml(5, 4) = -22.0 * l * m;
-    ml(1, 5) = ml(5, 1) = -13.0 * l * m;
-    ml(2, 4) = ml(4, 2) = 13.0 * l * m;
-    m_ = transf_->globalFromLocal(ml);
+    m_ = transf_->globalFromLocal(consistentMass2d(mass, length));
   }
   uTrial_.setZero();
   uCommitted_.setZero();

@@ -4,6 +4,7 @@
 #include <cassert>
 #include <sstream>
 
+#include "elements/beam/ConsistentMass.h"
 #include "materials/InputError.h"
 
 namespace dabs::elements {
@@ -47,27 +48,8 @@ void ElasticBeam3d::initialize(const NodalCoordinates& x) {
   if (mass > 0.0 && !params_.consistentMass) {
     for (int d : {0, 1, 2, 6, 7, 8}) m_(d, d) = 0.5 * mass;
   } else if (mass > 0.0) {
-    // Local consistent mass (Przemieniecki 1968, eq. 11.42): linear axial and torsional, cubic
-    // Hermitian transverse. In the x-z plane ry = -dw/dx flips the sign of the coupling terms.
-    Matrix ml = Matrix::Zero();
-    const double m = mass / 420.0, l = length, polar = params_.torsion / params_.area;
-    ml(0, 0) = ml(6, 6) = 140.0 * m;
-    ml(0, 6) = ml(6, 0) = 70.0 * m;
-    ml(3, 3) = ml(9, 9) = 140.0 * m * polar;
-    ml(3, 9) = ml(9, 3) = 70.0 * m * polar;
-    for (int d : {1, 2}) {
-      const int r = d == 1 ? 5 : 4;        // rotation dof of the bending plane
-      const double s = d == 1 ? 1.0 : -1.0;  // sign of the translation-rotation coupling
-      ml(d, d) = ml(d + 6, d + 6) = 156.0 * m;
-      ml(d, d + 6) = ml(d + 6, d) = 54.0 * m;
-      ml(r, r) = ml(r + 6, r + 6) = 4.0 * l * l * m;
-      ml(r, r + 6) = ml(r + 6, r) = -3.0 * l * l * m;
-      ml(d, r) = ml(r, d) = s * 22.0 * l * m;
-      ml(d + 6, r + 6) = ml(r + 6, d + 6) = -s * 22.0 * l * m;
-      ml(d, r + 6) = ml(r + 6, d) = -s * 13.0 * l * m;
-      ml(r, d + 6) = ml(d + 6, r) = s * 13.0 * l * m;
-    }
-    m_ = transf_->globalFromLocal(ml);
+    m_ = transf_->globalFromLocal(
+        consistentMass3d(mass, length, params_.torsion / params_.area));
   }
   uTrial_.setZero();
   uCommitted_.setZero();

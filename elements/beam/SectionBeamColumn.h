@@ -7,6 +7,7 @@
 
 #include "elements/FixedSizeElement.h"
 #include "elements/beam/BeamColumnTraits.h"
+#include "elements/beam/ConsistentMass.h"
 
 namespace dabs::elements {
 
@@ -36,6 +37,10 @@ class SectionBeamColumn : public FixedSizeElement<2, BeamColumnTraits<Ndm>::kDof
                     std::unique_ptr<Transf> transf, double massPerLength)
       : Base(tag, {nodeI, nodeJ}), points_(std::move(points)), transf_(std::move(transf)),
         massPerLength_(massPerLength) {}
+
+  /// -cMass: consistent instead of lumped mass (cubic transverse, linear axial, no rotary or
+  /// torsional inertia, as OpenSees' force/disp beam-columns). Call before initialize().
+  void setConsistentMass(bool consistent) noexcept { consistentMass_ = consistent; }
 
   /// Basic forces at the last update.
   const Basic& basicForce() const noexcept { return q_; }
@@ -86,15 +91,23 @@ class SectionBeamColumn : public FixedSizeElement<2, BeamColumnTraits<Ndm>::kDof
     if (x.size() != 2) throw InputError("element", "needs 2 nodes");
     transf_->initialize(x[0], x[1]);
     this->m_.setZero();
-    const double half = 0.5 * massPerLength_ * transf_->initialLength();
+    const double mass = massPerLength_ * transf_->initialLength();
+    if (consistentMass_ && mass > 0.0) {
+      if constexpr (Ndm == 2)
+        this->m_ = transf_->globalFromLocal(consistentMass2d(mass, transf_->initialLength()));
+      else
+        this->m_ = transf_->globalFromLocal(consistentMass3d(mass, transf_->initialLength(), 0.0));
+      return;
+    }
     for (int n = 0; n < 2; ++n)
       for (int d = 0; d < Ndm; ++d)
-        this->m_(n * Traits::kDofPerNode + d, n * Traits::kDofPerNode + d) = half;
+        this->m_(n * Traits::kDofPerNode + d, n * Traits::kDofPerNode + d) = 0.5 * mass;
   }
 
   std::vector<BeamIntegrationPoint> points_;
   std::unique_ptr<Transf> transf_;
   double massPerLength_ = 0.0;
+  bool consistentMass_ = false;
   Basic q_ = Basic::Zero();
   Vector uTrial_ = Vector::Zero();
   Vector uCommitted_ = Vector::Zero();

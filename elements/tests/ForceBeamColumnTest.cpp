@@ -223,5 +223,35 @@ TEST(ForceBeamColumnTest, ReportsNonConvergenceInsteadOfHanging) {
   EXPECT_EQ(f.resistingForce().norm(), 0.0);
 }
 
+// -cMass: the consistent mass of Przemieniecki (1968, eq. 11.42), rotated to global axes. Checks:
+// total translational mass m L along each global direction (rigid translation: 1^T M 1), the
+// closed-form 156/420 m L diagonal on a transverse dof for an axis-aligned member, and symmetry.
+TEST(ForceBeamColumnTest, ConsistentMassSumsToTotalMassAndMatchesClosedForm) {
+  constexpr double kMassTol = 1e-12;
+  const auto mat = elastic();
+  const auto sec = rect<3>(*mat);
+  const double rho = 2.5;  // mass per length
+  ForceBeamColumn3d e(1, 1, 2, points<3>(*sec, 4),
+                      std::make_unique<LinearTransf3d>(1, Eigen::Vector3d(0.0, 0.0, 1.0)), rho);
+  e.setConsistentMass(true);
+  const Eigen::Vector3d xi(0.5, 1.0, -1.0);
+  const Eigen::Vector3d axis = Eigen::Vector3d(2.0, 1.0, 2.0) / 3.0;
+  e.initialize({xi, Eigen::Vector3d(xi + kL * axis)});
+  const Eigen::MatrixXd m = e.mass();
+  for (int d = 0; d < 3; ++d) {
+    Eigen::VectorXd r = Eigen::VectorXd::Zero(12);
+    r(d) = r(d + 6) = 1.0;
+    EXPECT_NEAR(r.dot(m * r), rho * kL, kMassTol * rho * kL) << "direction " << d;
+  }
+  EXPECT_LT((m - m.transpose()).norm(), kMassTol * m.norm());
+  DispBeamColumn2d d2(2, 1, 2, points<2>(*rect<2>(*mat), 3),
+                      std::make_unique<LinearTransf2d>(1), rho);
+  d2.setConsistentMass(true);
+  d2.initialize({Eigen::Vector3d::Zero(), Eigen::Vector3d(kL, 0.0, 0.0)});
+  EXPECT_NEAR(d2.mass()(1, 1), 156.0 / 420.0 * rho * kL, kMassTol * rho * kL);
+  EXPECT_NEAR(d2.mass()(2, 2), 4.0 / 420.0 * rho * kL * kL * kL, kMassTol * rho * kL * kL * kL);
+  EXPECT_NEAR(d2.mass()(0, 3), 70.0 / 420.0 * rho * kL, kMassTol * rho * kL);
+}
+
 }  // namespace
 }  // namespace dabs::elements
