@@ -11,6 +11,7 @@
 #include "elements/beam/QuadratureIntegration.h"
 #include "elements/tests/ElementChecks.h"
 #include "elements/transform/CorotationalTransf2d.h"
+#include "elements/transform/CorotationalTransf3d.h"
 #include "elements/transform/LinearTransf2d.h"
 #include "elements/transform/LinearTransf3d.h"
 #include "elements/transform/PDeltaTransf2d.h"
@@ -158,17 +159,19 @@ TEST(ForceBeamColumnTest, TangentMatchesFiniteDifferencesWhenYielding3d) {
   u.segment<3>(3) << 0.004, 0.02, 0.03;
   u.segment<3>(6) << 1e-4, 0.0, 0.0;
   u.segment<3>(9) << -0.003, -0.01, -0.02;
-  for (bool pdelta : {false, true}) {
+  for (int which = 0; which < 3; ++which) {
     auto t = [&]() -> std::unique_ptr<CrdTransf3d> {
-      if (pdelta) return std::make_unique<PDeltaTransf3d>(1, Eigen::Vector3d(0, 0, 1));
+      if (which == 1) return std::make_unique<PDeltaTransf3d>(1, Eigen::Vector3d(0, 0, 1));
+      if (which == 2) return std::make_unique<CorotationalTransf3d>(1, Eigen::Vector3d(0, 0, 1));
       return std::make_unique<LinearTransf3d>(1, Eigen::Vector3d(0, 0, 1));
     };
+    const std::string name = which == 0 ? "Linear" : which == 1 ? "PDelta" : "Corotational";
     ForceBeamColumn3d f(1, 1, 2, points<3>(*sec, 4), t(), 0.0);
     f.initialize({Eigen::Vector3d::Zero(), Eigen::Vector3d(kL, 0, 0)});
-    expectFdTangent(f, u, pdelta ? "force PDelta" : "force Linear");
+    expectFdTangent(f, u, ("force " + name).c_str());
     DispBeamColumn3d d(1, 1, 2, points<3>(*sec, 4), t(), 0.0);
     d.initialize({Eigen::Vector3d::Zero(), Eigen::Vector3d(kL, 0, 0)});
-    expectFdTangent(d, u, pdelta ? "disp PDelta" : "disp Linear");
+    expectFdTangent(d, u, ("disp " + name).c_str());
   }
 }
 
