@@ -17,10 +17,9 @@ void Truss::Params::validate() const {
 }
 
 Truss::Truss(int tag, Params params, std::unique_ptr<materials::UniaxialMaterial> material)
-    : Element(tag), params_(std::move(params)), material_(std::move(material)) {
-  const int n = numDof();
-  b_ = f_ = Eigen::VectorXd::Zero(n);
-  k_ = k0_ = kc_ = c_ = m_ = Eigen::MatrixXd::Zero(n, n);
+    : DynamicSizeElement(tag, params.nodes, params.ndf, params.doRayleigh), params_(std::move(params)),
+      material_(std::move(material)) {
+  b_ = Eigen::VectorXd::Zero(numDof());
 }
 
 void Truss::initialize(const NodalCoordinates& x) {

@@ -5,7 +5,7 @@
 #include <memory>
 #include <vector>
 
-#include "elements/Element.h"
+#include "elements/DynamicSizeElement.h"
 #include "materials/UniaxialMaterial.h"
 
 namespace dabs::elements {
@@ -14,7 +14,7 @@ namespace dabs::elements {
 /// ?-rho rho? ?-cMass 0|1? ?-doRayleigh 0|1?`): strain = c . (u_j - u_i) / L, axial force A sigma,
 /// mass rho L/2 per translation (lumped) or rho L/6 [2 1; 1 2] (consistent)
 /// (OpenSees/OpenSees:SRC/element/truss/Truss.cpp).
-class Truss final : public Element {
+class Truss final : public DynamicSizeElement {
  public:
   struct Params {
     std::vector<int> nodes;
@@ -30,18 +30,8 @@ class Truss final : public Element {
   Truss(int tag, Params params, std::unique_ptr<materials::UniaxialMaterial> material);
 
   std::string_view typeName() const override { return "truss"; }
-  const std::vector<int>& nodeTags() const override { return params_.nodes; }
-  int numDof() const override { return 2 * params_.ndf; }
-  int dofPerNode() const override { return params_.ndf; }
   void initialize(const NodalCoordinates& x) override;
   Status update(const Kinematics& trial) override;
-  Eigen::Ref<const Eigen::VectorXd> resistingForce() const override { return f_; }
-  Eigen::Ref<const Eigen::MatrixXd> tangentStiff() const override { return k_; }
-  Eigen::Ref<const Eigen::MatrixXd> initialStiff() const override { return k0_; }
-  Eigen::Ref<const Eigen::MatrixXd> committedStiff() const override { return kc_; }
-  Eigen::Ref<const Eigen::MatrixXd> dampingTangent() const override { return c_; }
-  Eigen::Ref<const Eigen::MatrixXd> mass() const override { return m_; }
-  bool rayleighByDefault() const override { return params_.doRayleigh; }
   void commitState() override;
   void revertToLastCommit() override;
   void revertToStart() override;
@@ -53,8 +43,6 @@ class Truss final : public Element {
   std::unique_ptr<materials::UniaxialMaterial> material_;
   double length_ = 0.0;
   Eigen::VectorXd b_;  ///< d(strain)/d(u)
-  Eigen::VectorXd f_;
-  Eigen::MatrixXd k_, k0_, kc_, c_, m_;
 };
 
 }  // namespace dabs::elements

@@ -39,12 +39,9 @@ void ZeroLength::Params::validate(std::size_t numMaterials) const {
 
 ZeroLength::ZeroLength(int tag, Params params,
                        std::vector<std::unique_ptr<materials::UniaxialMaterial>> mats)
-    : Element(tag), params_(std::move(params)), materials_(std::move(mats)) {
-  const int n = numDof();
-  const auto nm = static_cast<Eigen::Index>(materials_.size());
-  t_ = Eigen::MatrixXd::Zero(nm, n);
-  f_ = Eigen::VectorXd::Zero(n);
-  k_ = k0_ = kc_ = c_ = m_ = Eigen::MatrixXd::Zero(n, n);
+    : DynamicSizeElement(tag, params.nodes, params.ndf, params.doRayleigh), params_(std::move(params)),
+      materials_(std::move(mats)) {
+  t_ = Eigen::MatrixXd::Zero(static_cast<Eigen::Index>(materials_.size()), numDof());
 }
 
 void ZeroLength::initialize(const NodalCoordinates& /*x*/) {

@@ -5,7 +5,7 @@
 #include <memory>
 #include <vector>
 
-#include "elements/Element.h"
+#include "elements/DynamicSizeElement.h"
 #include "materials/UniaxialMaterial.h"
 
 namespace dabs::elements {
@@ -15,7 +15,7 @@ namespace dabs::elements {
 /// along local axes (dirs 1-3) or about them (dirs 4-6). Local x is given by -orient, y lies in
 /// the plane of x and yp, z = x cross yp (OpenSees/OpenSees:SRC/element/zeroLength/ZeroLength.cpp).
 /// Deformation e_k = t_k . u with t_k = [-a_k, a_k] over the chosen dofs of nodes i and j.
-class ZeroLength final : public Element {
+class ZeroLength final : public DynamicSizeElement {
  public:
   struct Params {
     std::vector<int> nodes;  ///< i, j
@@ -32,18 +32,8 @@ class ZeroLength final : public Element {
   ZeroLength(int tag, Params params, std::vector<std::unique_ptr<materials::UniaxialMaterial>> mats);
 
   std::string_view typeName() const override { return "zeroLength"; }
-  const std::vector<int>& nodeTags() const override { return params_.nodes; }
-  int numDof() const override { return 2 * params_.ndf; }
-  int dofPerNode() const override { return params_.ndf; }
   void initialize(const NodalCoordinates& x) override;
   Status update(const Kinematics& trial) override;
-  Eigen::Ref<const Eigen::VectorXd> resistingForce() const override { return f_; }
-  Eigen::Ref<const Eigen::MatrixXd> tangentStiff() const override { return k_; }
-  Eigen::Ref<const Eigen::MatrixXd> initialStiff() const override { return k0_; }
-  Eigen::Ref<const Eigen::MatrixXd> committedStiff() const override { return kc_; }
-  Eigen::Ref<const Eigen::MatrixXd> dampingTangent() const override { return c_; }
-  Eigen::Ref<const Eigen::MatrixXd> mass() const override { return m_; }
-  bool rayleighByDefault() const override { return params_.doRayleigh; }
   void commitState() override;
   void revertToLastCommit() override;
   void revertToStart() override;
@@ -55,8 +45,6 @@ class ZeroLength final : public Element {
   std::vector<std::unique_ptr<materials::UniaxialMaterial>> materials_;
   Eigen::MatrixXd t_;  ///< one row per material: d(deformation)/d(u)
   std::vector<std::vector<int>> nonzero_;  ///< per material: the dofs its row of t_ touches
-  Eigen::VectorXd f_;
-  Eigen::MatrixXd k_, k0_, kc_, c_, m_;
 };
 
 }  // namespace dabs::elements

@@ -8,14 +8,11 @@ namespace dabs::analysis {
 
 DisplacementControl::DisplacementControl(int node, int dof, double incr, int Jd, double dUmin,
                                          double dUmax, bool initialTangent)
-    : node_(node), dof_(dof), incr_(incr), Jd_(Jd), dUmin_(dUmin), dUmax_(dUmax),
-      initialTangent_(initialTangent), iterationsLastStep_(Jd) {}
+    : StaticIntegrator(Jd), node_(node), dof_(dof), incr_(incr), dUmin_(dUmin), dUmax_(dUmax),
+      initialTangent_(initialTangent) {}
 
 void DisplacementControl::domainChanged(LinearSystem& system) {
-  Integrator::domainChanged(system);
-  V_.setZero();
-  A_.setZero();
-  Ucommitted_ = U_;
+  StaticIntegrator::domainChanged(system);
   AnalysisModel& model = system.model();
   equation_ = model.equationOf(node_, dof_);
   // Reference load: unbalance at lambda_c + 1 with the committed state (OpenSees
@@ -33,10 +30,7 @@ void DisplacementControl::domainChanged(LinearSystem& system) {
 
 Status DisplacementControl::newStep(LinearSystem& system, double /*dt*/) {
   if (equation_ < 0 || phat_.size() == 0 || phat_.isZero(0.0)) return Status::Failed;
-  if (iterationsLastStep_ > 0) incr_ *= static_cast<double>(Jd_) / iterationsLastStep_;
-  const double lo = std::min(dUmin_, dUmax_), hi = std::max(dUmin_, dUmax_);
-  incr_ = std::clamp(incr_, lo, hi);
-  iterationsLastStep_ = 0;
+  incr_ = adaptStep(incr_, dUmin_, dUmax_);
   AnalysisModel& model = system.model();
   lambda_ = model.domain().committedTime();
   const Status st = system.formTangent(coefficients(initialTangent_ ? StiffnessKind::Initial
@@ -65,24 +59,13 @@ Status DisplacementControl::update(LinearSystem& system, const Eigen::VectorXd& 
   lambda_ += dLambda;
   system.model().applyLoad(lambda_);
   system.X = deltaU_;  // tests see the corrected increment, as in OpenSees
-  ++iterationsLastStep_;
+  countIteration();
   return push(system);
-}
-
-AssemblyCoefficients DisplacementControl::coefficients(StiffnessKind k) const {
-  AssemblyCoefficients c;
-  c.stiffness = k;
-  return c;
-}
-
-Status DisplacementControl::commit(LinearSystem& system) {
-  Ucommitted_ = U_;
-  return Integrator::commit(system);
 }
 
 void DisplacementControl::setStepSize(double incr) {
   incr_ = incr;
-  iterationsLastStep_ = Jd_;
+  resetAdaptation();
 }
 
 }  // namespace dabs::analysis

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
-#include "tcl/analysis/Integrator.h"
+#include "tcl/analysis/StaticIntegrator.h"
 
 namespace dabs::analysis {
 
@@ -10,30 +10,24 @@ namespace dabs::analysis {
 /// (Batoz and Dhatt 1979, as OpenSees/OpenSees:SRC/analysis/integrator/DisplacementControl.cpp).
 /// The reference load is the unbalance at lambda + 1 with the committed displacements, taken when
 /// the equations are built.
-class DisplacementControl final : public Integrator {
+class DisplacementControl final : public StaticIntegrator {
  public:
   DisplacementControl(int node, int dof, double incr, int Jd, double dUmin, double dUmax,
                       bool initialTangent);
-  bool transient() const override { return false; }
   void domainChanged(LinearSystem& system) override;
   Status newStep(LinearSystem& system, double dt) override;
   Status update(LinearSystem& system, const Eigen::VectorXd& dx) override;
-  AssemblyCoefficients coefficients(StiffnessKind k) const override;
-  void revertToLastStep() override { U_ = Ucommitted_; }
-  Status commit(LinearSystem& system) override;
   void setStepSize(double incr) override;
 
  private:
   int node_, dof_;
   double incr_;
-  int Jd_;
   double dUmin_, dUmax_;
   bool initialTangent_;
   int equation_ = -1;
-  int iterationsLastStep_;
   double lambda_ = 0.0;
   double dUahat_ = 0.0;
-  Eigen::VectorXd phat_, dUhat_, Ucommitted_, deltaU_;
+  Eigen::VectorXd phat_, dUhat_, deltaU_;
 };
 
 }  // namespace dabs::analysis

@@ -1,26 +1,14 @@
 // SPDX-License-Identifier: MIT
 #include "tcl/analysis/LoadControl.h"
 
-#include <algorithm>
 
 namespace dabs::analysis {
 
 LoadControl::LoadControl(double dLambda, int Jd, double minLambda, double maxLambda)
-    : dLambda_(dLambda), Jd_(Jd), minLambda_(minLambda), maxLambda_(maxLambda),
-      iterationsLastStep_(Jd) {}
-
-void LoadControl::domainChanged(LinearSystem& system) {
-  Integrator::domainChanged(system);
-  V_.setZero();
-  A_.setZero();
-  Ucommitted_ = U_;
-}
+    : StaticIntegrator(Jd), dLambda_(dLambda), minLambda_(minLambda), maxLambda_(maxLambda) {}
 
 Status LoadControl::newStep(LinearSystem& system, double /*dt*/) {
-  if (iterationsLastStep_ > 0) dLambda_ *= static_cast<double>(Jd_) / iterationsLastStep_;
-  const double lo = std::min(minLambda_, maxLambda_), hi = std::max(minLambda_, maxLambda_);
-  dLambda_ = std::clamp(dLambda_, lo, hi);
-  iterationsLastStep_ = 0;
+  dLambda_ = adaptStep(dLambda_, minLambda_, maxLambda_);
   AnalysisModel& model = system.model();
   model.applyLoad(model.domain().committedTime() + dLambda_);
   return push(system);
@@ -28,24 +16,13 @@ Status LoadControl::newStep(LinearSystem& system, double /*dt*/) {
 
 Status LoadControl::update(LinearSystem& system, const Eigen::VectorXd& dx) {
   U_ += dx;
-  ++iterationsLastStep_;
+  countIteration();
   return push(system);
-}
-
-AssemblyCoefficients LoadControl::coefficients(StiffnessKind k) const {
-  AssemblyCoefficients c;
-  c.stiffness = k;
-  return c;
-}
-
-Status LoadControl::commit(LinearSystem& system) {
-  Ucommitted_ = U_;
-  return Integrator::commit(system);
 }
 
 void LoadControl::setStepSize(double dLambda) {
   dLambda_ = dLambda;
-  iterationsLastStep_ = Jd_;
+  resetAdaptation();
 }
 
 }  // namespace dabs::analysis

@@ -6,6 +6,7 @@
 #include "tcl/commands/Registry.h"
 #include "tcl/commands/SeriesParser.h"
 #include "tcl/commands/TclResult.h"
+#include "tcl/domain/DriftRecorder.h"
 #include "tcl/domain/ElementRecorder.h"
 #include "tcl/domain/NodeRecorder.h"
 

@@ -12,7 +12,7 @@ Domain::Domain() = default;
 Domain::~Domain() { flushRecorders(); }
 
 Node& Domain::addNode(int tag, int ndm, int ndf, const Eigen::Vector3d& coords) {
-  if (nodes_.count(tag) != 0) throw InputError("tag", "node " + std::to_string(tag) + " already exists");
+  if (nodes_.count(tag) != 0) throw InputError("", "node " + std::to_string(tag) + " already exists");
   if (ndf < 1 || ndf > 6) throw InputError("ndf", "must be 1 to 6");
   auto [it, inserted] = nodes_.emplace(tag, Node(tag, ndm, ndf, coords));
   (void)inserted;
@@ -24,7 +24,7 @@ elements::Element& Domain::addElement(std::unique_ptr<elements::Element> element
   if (!element) throw InputError("element", "is missing");
   const int tag = element->tag();
   if (elements_.count(tag) != 0)
-    throw InputError("tag", "element " + std::to_string(tag) + " already exists");
+    throw InputError("", "element " + std::to_string(tag) + " already exists");
   elements::NodalCoordinates x;
   for (int n : element->nodeTags()) {
     const Node* nd = findNode(n);
@@ -163,7 +163,7 @@ void Domain::addMP(MPConstraint mp) {
 LoadPattern& Domain::addPattern(std::unique_ptr<LoadPattern> pattern) {
   const int tag = pattern->tag();
   if (patterns_.count(tag) != 0)
-    throw InputError("tag", "pattern " + std::to_string(tag) + " already exists");
+    throw InputError("", "pattern " + std::to_string(tag) + " already exists");
   auto& stored = *(patterns_[tag] = std::move(pattern));
   touch();
   return stored;

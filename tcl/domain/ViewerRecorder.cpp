@@ -1,0 +1,338 @@
+// SPDX-License-Identifier: MIT
+#include "tcl/domain/ViewerRecorder.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <set>
+
+#include "materials/InputError.h"
+#include "tcl/domain/Domain.h"
+#include "tcl/viewer/ViewerPageTemplate.h"
+
+namespace dabs::domain {
+
+namespace {
+
+// Relative tolerance on -dT, as in ResponseRecorder: round-off in accumulated time skips no frame.
+constexpr double kDeltaTTolerance = 1e-10;
+
+void appendNumber(std::string& out, double v, int digits) {
+  if (!std::isfinite(v)) v = 0.0;  // JSON has no NaN or infinity
+  char text[40];
+  std::snprintf(text, sizeof text, "%.*g", digits, v);
+  out += text;
+}
+
+/// JSON string literal; '<' is escaped so no "</script>" can end the data block early.
+void appendString(std::string& out, std::string_view s) {
+  out += '"';
+  for (const char ch : s) {
+    const auto c = static_cast<unsigned char>(ch);
+    if (c == '"' || c == '\\') {
+      out += '\\';
+      out += ch;
+    } else if (c < 0x20 || c == '<') {
+      char text[8];
+      std::snprintf(text, sizeof text, "\\u%04x", c);
+      out += text;
+    } else {
+      out += ch;
+    }
+  }
+  out += '"';
+}
+
+/// Standard base64 (RFC 4648 section 4) with padding.
+std::string base64(const std::string& bytes) {
+  static constexpr char kAlphabet[] =
+      "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
+  std::string out;
+  out.reserve((bytes.size() + 2) / 3 * 4);
+  std::size_t i = 0;
+  for (; i + 2 < bytes.size(); i += 3) {
+    const unsigned v = static_cast<unsigned char>(bytes[i]) << 16 |
+                       static_cast<unsigned char>(bytes[i + 1]) << 8 |
+                       static_cast<unsigned char>(bytes[i + 2]);
+    out += kAlphabet[v >> 18 & 63];
+    out += kAlphabet[v >> 12 & 63];
+    out += kAlphabet[v >> 6 & 63];
+    out += kAlphabet[v & 63];
+  }
+  const std::size_t rest = bytes.size() - i;
+  if (rest > 0) {
+    unsigned v = static_cast<unsigned char>(bytes[i]) << 16;
+    if (rest == 2) v |= static_cast<unsigned char>(bytes[i + 1]) << 8;
+    out += kAlphabet[v >> 18 & 63];
+    out += kAlphabet[v >> 12 & 63];
+    out += rest == 2 ? kAlphabet[v >> 6 & 63] : '=';
+    out += '=';
+  }
+  return out;
+}
+
+/// Appends one series (values at data[first + k * stride], k < count) to `bytes` as zigzag LEB128
+/// varints of successive differences of round(v / q), and its descriptor [q, offset] to `json`.
+void appendSeries(std::string& json, std::string& bytes, const std::vector<double>& data,
+                  std::size_t first, std::size_t stride, std::size_t count, bool integers) {
+  double peak = 0.0;
+  for (std::size_t k = 0; k < count; ++k) {
+    const double v = data[first + k * stride];
+    if (std::isfinite(v)) peak = std::max(peak, std::abs(v));
+  }
+  const double q =
+      integers || peak == 0.0 ? 1.0 : peak / ViewerRecorder::kQuantizationLevels;
+  json += '[';
+  appendNumber(json, q, 17);
+  json += ',';
+  json += std::to_string(bytes.size());
+  json += ']';
+  long long previous = 0;
+  for (std::size_t k = 0; k < count; ++k) {
+    const double v = data[first + k * stride];
+    const long long level = std::isfinite(v) ? std::llround(v / q) : 0;
+    const long long delta = level - previous;
+    previous = level;
+    auto zigzag = delta >= 0 ? static_cast<unsigned long long>(delta) * 2
+                             : static_cast<unsigned long long>(-delta) * 2 - 1;
+    do {
+      unsigned char b = zigzag & 0x7f;
+      zigzag >>= 7;
+      if (zigzag != 0) b |= 0x80;
+      bytes += static_cast<char>(b);
+    } while (zigzag != 0);
+  }
+}
+
+double nodeValue(const Node& n, int dof, ViewerPlot::NodeQuantity quantity) {
+  if (dof >= n.ndf()) return 0.0;
+  switch (quantity) {
+    case ViewerPlot::NodeQuantity::Disp: return n.disp(dof);
+    case ViewerPlot::NodeQuantity::Vel: return n.vel(dof);
+    case ViewerPlot::NodeQuantity::Accel: return n.accel(dof);
+  }
+  return 0.0;
+}
+
+}  // namespace
+
+std::string_view viewerElementKind(std::string_view typeName) {
+  if (typeName == "elasticBeamColumn" || typeName == "forceBeamColumn" ||
+      typeName == "dispBeamColumn" || typeName == "truss")
+    return "beam";
+  if (typeName == "yoshidaBearing") return "bearing";
+  if (typeName == "nodeToSurface") return "contact";
+  if (typeName == "zeroLength" || typeName == "zeroLengthSection") return "link";
+  return "other";
+}
+
+ViewerRecorder::ViewerRecorder(ViewerOptions options, std::string_view pageTemplate)
+    : options_(std::move(options)),
+      template_(pageTemplate.empty() ? viewer::viewerPageTemplate() : pageTemplate) {
+  if (template_.find(viewer::kViewerDataMarker) == std::string::npos)
+    throw InputError("template", "has no data marker");
+  if (options_.deltaT < 0.0) throw InputError("-dT", "must not be negative");
+  std::ofstream probe(options_.file, std::ios::trunc);
+  if (!probe) throw InputError("-file", "cannot write \"" + options_.file + "\"");
+}
+
+ViewerRecorder::~ViewerRecorder() {
+  try {
+    if (!everWritten_ || written_ != frames()) write();
+  } catch (...) {
+    // A destructor must not throw; the page was written at the last flush that could.
+  }
+}
+
+void ViewerRecorder::initialize(const Domain& domain) {
+  nodes_ = options_.nodes;
+  if (nodes_.empty())
+    for (const auto& [tag, node] : domain.nodes()) nodes_.push_back(tag);
+  for (int tag : nodes_)
+    if (domain.findNode(tag) == nullptr)
+      throw InputError("-nodes", "node " + std::to_string(tag) + " does not exist");
+  coords_.clear();
+  ndm_ = 1;
+  for (int tag : nodes_) {
+    const Node& n = domain.node(tag);
+    for (int c = 0; c < 3; ++c) coords_.push_back(n.coords()(c));
+    ndm_ = std::max(ndm_, n.ndm());
+  }
+  const std::set<int> drawn(nodes_.begin(), nodes_.end());
+  elements_.clear();
+  contacts_.clear();
+  bearings_.clear();
+  for (const auto& [tag, e] : domain.elements()) {
+    const auto& en = e->nodeTags();
+    if (!std::all_of(en.begin(), en.end(), [&](int n) { return drawn.count(n) != 0; })) continue;
+    const std::string_view kind = viewerElementKind(e->typeName());
+    elements_.push_back({tag, std::string(kind), std::string(e->typeName()), en});
+    if (kind == "contact") contacts_.push_back(tag);
+    if (kind == "bearing") bearings_.push_back(tag);
+  }
+  for (const ViewerPlot& p : options_.plots) {
+    if (p.source == ViewerPlot::Source::Node) {
+      const Node& n = domain.node(p.tag);
+      if (p.dof < 0 || p.dof >= n.ndf())
+        throw InputError("-plots", "\"" + p.label + "\": node " + std::to_string(p.tag) +
+                                       " has no dof " + std::to_string(p.dof + 1));
+      continue;
+    }
+    const elements::Element* e = domain.findElement(p.tag);
+    if (e == nullptr)
+      throw InputError("-plots", "\"" + p.label + "\": element " + std::to_string(p.tag) +
+                                     " does not exist");
+    const auto r = e->response(p.response);
+    if (!r || p.component < 0 || p.component >= r->size())
+      throw InputError("-plots", "\"" + p.label + "\": element " + std::to_string(p.tag) + " (" +
+                                     std::string(e->typeName()) +
+                                     ") has no such response component");
+  }
+}
+
+void ViewerRecorder::record(const Domain& domain) {
+  const double t = domain.time();
+  if (options_.deltaT > 0.0 && !time_.empty() &&
+      t < nextTime_ - kDeltaTTolerance * std::max(1.0, std::abs(nextTime_)))
+    return;
+  nextTime_ = t + options_.deltaT;
+  time_.push_back(t);
+  for (int tag : nodes_) {
+    const Node* n = domain.findNode(tag);
+    for (int c = 0; c < 3; ++c)
+      disp_.push_back(n != nullptr && c < std::min(n->ndm(), n->ndf()) ? n->disp(c) : 0.0);
+  }
+  auto scalar = [&](int tag, const char* name) {
+    const elements::Element* e = domain.findElement(tag);
+    const std::string words[1] = {name};
+    const auto r = e != nullptr ? e->response(words) : std::nullopt;
+    return r && r->size() > 0 ? (*r)(0) : 0.0;
+  };
+  for (int tag : contacts_) status_.push_back(scalar(tag, "status"));
+  for (int tag : bearings_) damage_.push_back(scalar(tag, "damage"));
+  for (const ViewerPlot& p : options_.plots) {
+    double v = 0.0;
+    if (p.source == ViewerPlot::Source::Node) {
+      if (const Node* n = domain.findNode(p.tag)) v = nodeValue(*n, p.dof, p.quantity);
+    } else if (const elements::Element* e = domain.findElement(p.tag)) {
+      const auto r = e->response(p.response);
+      if (r && p.component < r->size()) v = (*r)(p.component);
+    }
+    plotValues_.push_back(v);
+  }
+}
+
+std::string ViewerRecorder::dataJson() const {
+  const std::size_t n = frames();
+  std::string json;
+  std::string bytes;
+  json.reserve(64 * (nodes_.size() + elements_.size()) + 16 * n);
+  json += "{\"format\":\"dabs-viewer\",\"version\":1,\"title\":";
+  appendString(json, options_.title);
+  json += ",\"ndm\":" + std::to_string(ndm_);
+  json += ",\"frames\":" + std::to_string(n) + ",\"time\":[";
+  for (std::size_t f = 0; f < n; ++f) {
+    if (f) json += ',';
+    appendNumber(json, time_[f], 10);
+  }
+  json += "],\"nodes\":[";
+  for (std::size_t i = 0; i < nodes_.size(); ++i) json += (i ? "," : "") + std::to_string(nodes_[i]);
+  json += "],\"coords\":[";
+  for (std::size_t i = 0; i < nodes_.size(); ++i) {
+    json += i ? ",[" : "[";
+    for (int c = 0; c < 3; ++c) {
+      if (c) json += ',';
+      appendNumber(json, coords_[3 * i + static_cast<std::size_t>(c)], 10);
+    }
+    json += ']';
+  }
+  json += "],\"elements\":[";
+  for (std::size_t i = 0; i < elements_.size(); ++i) {
+    const DrawnElement& e = elements_[i];
+    json += (i ? ",[" : "[") + std::to_string(e.tag) + ',';
+    appendString(json, e.kind);
+    json += ',';
+    appendString(json, e.type);
+    json += ",[";
+    for (std::size_t k = 0; k < e.nodes.size(); ++k) json += (k ? "," : "") + std::to_string(e.nodes[k]);
+    json += "]]";
+  }
+  json += "],\"disp\":[";
+  const std::size_t perFrame = 3 * nodes_.size();
+  for (std::size_t s = 0; s < perFrame; ++s) {
+    if (s) json += ',';
+    appendSeries(json, bytes, disp_, s, perFrame, n, false);
+  }
+  json += "],\"contacts\":[";
+  for (std::size_t i = 0; i < contacts_.size(); ++i) {
+    json += (i ? ",[" : "[") + std::to_string(contacts_[i]) + ',';
+    appendSeries(json, bytes, status_, i, contacts_.size(), n, true);
+    json += ']';
+  }
+  json += "],\"bearings\":[";
+  for (std::size_t i = 0; i < bearings_.size(); ++i) {
+    json += (i ? ",[" : "[") + std::to_string(bearings_[i]) + ',';
+    appendSeries(json, bytes, damage_, i, bearings_.size(), n, true);
+    json += ']';
+  }
+  json += "],\"plots\":[";
+  const std::size_t nPlots = options_.plots.size();
+  for (std::size_t i = 0; i < nPlots; ++i) {
+    const ViewerPlot& p = options_.plots[i];
+    json += i ? ",{\"label\":" : "{\"label\":";
+    appendString(json, p.label);
+    std::string source;
+    if (p.source == ViewerPlot::Source::Node) {
+      static constexpr const char* kQuantity[] = {"disp", "vel", "accel"};
+      source = "node " + std::to_string(p.tag) + " dof " + std::to_string(p.dof + 1) + " " +
+               kQuantity[static_cast<int>(p.quantity)];
+    } else {
+      source = "element " + std::to_string(p.tag);
+      for (const auto& w : p.response) source += " " + w;
+      source += " component " + std::to_string(p.component + 1);
+    }
+    json += ",\"source\":";
+    appendString(json, source);
+    json += ",\"values\":";
+    appendSeries(json, bytes, plotValues_, i, nPlots, n, false);
+    json += '}';
+  }
+  json += "],\"bytes\":\"" + base64(bytes) + "\"}";
+  return json;
+}
+
+void ViewerRecorder::write() {
+  const auto start = std::chrono::steady_clock::now();
+  const std::size_t at = template_.find(viewer::kViewerDataMarker);
+  // Written to a temporary file and renamed, so a browser never reads half a page.
+  const std::string tmp = options_.file + ".tmp";
+  {
+    std::ofstream out(tmp, std::ios::trunc | std::ios::binary);
+    if (!out) throw InputError("-file", "cannot write \"" + tmp + "\"");
+    out.write(template_.data(), static_cast<std::streamsize>(at));
+    out << dataJson();
+    const std::size_t after = at + viewer::kViewerDataMarker.size();
+    out.write(template_.data() + after, static_cast<std::streamsize>(template_.size() - after));
+    if (!out) throw InputError("-file", "cannot write \"" + tmp + "\"");
+  }
+  std::error_code ec;
+  std::filesystem::rename(tmp, options_.file, ec);
+  if (ec) throw InputError("-file", "cannot replace \"" + options_.file + "\": " + ec.message());
+  written_ = frames();
+  everWritten_ = true;
+  lastWrite_ = std::chrono::steady_clock::now();
+  lastWriteDuration_ = lastWrite_ - start;
+}
+
+void ViewerRecorder::flush() {
+  if (everWritten_ && written_ == frames()) return;
+  if (everWritten_ &&
+      std::chrono::steady_clock::now() - lastWrite_ < kMinRewriteRatio * lastWriteDuration_)
+    return;
+  write();
+}
+
+}  // namespace dabs::domain
