@@ -141,13 +141,14 @@ ViewerRecorder::ViewerRecorder(ViewerOptions options, std::string_view pageTempl
 
 ViewerRecorder::~ViewerRecorder() {
   try {
-    if (!everWritten_ || written_ != frames()) write();
+    if (initialized_ && (!everWritten_ || written_ != frames())) write();
   } catch (...) {
     // A destructor must not throw; the page was written at the last flush that could.
   }
 }
 
 void ViewerRecorder::initialize(const Domain& domain) {
+  initialized_ = false;
   nodes_ = options_.nodes;
   if (nodes_.empty())
     for (const auto& [tag, node] : domain.nodes()) nodes_.push_back(tag);
@@ -191,9 +192,11 @@ void ViewerRecorder::initialize(const Domain& domain) {
                                      std::string(e->typeName()) +
                                      ") has no such response component");
   }
+  initialized_ = true;
 }
 
 void ViewerRecorder::record(const Domain& domain) {
+  if (!initialized_) return;
   const double t = domain.time();
   if (options_.deltaT > 0.0 && !time_.empty() &&
       t < nextTime_ - kDeltaTTolerance * std::max(1.0, std::abs(nextTime_)))
@@ -239,7 +242,10 @@ std::string ViewerRecorder::dataJson() const {
     appendNumber(json, time_[f], 10);
   }
   json += "],\"nodes\":[";
-  for (std::size_t i = 0; i < nodes_.size(); ++i) json += (i ? "," : "") + std::to_string(nodes_[i]);
+  for (std::size_t i = 0; i < nodes_.size(); ++i) {
+    if (i) json += ',';
+    json += std::to_string(nodes_[i]);
+  }
   json += "],\"coords\":[";
   for (std::size_t i = 0; i < nodes_.size(); ++i) {
     json += i ? ",[" : "[";
@@ -252,12 +258,17 @@ std::string ViewerRecorder::dataJson() const {
   json += "],\"elements\":[";
   for (std::size_t i = 0; i < elements_.size(); ++i) {
     const DrawnElement& e = elements_[i];
-    json += (i ? ",[" : "[") + std::to_string(e.tag) + ',';
+    json += i ? ",[" : "[";
+    json += std::to_string(e.tag);
+    json += ',';
     appendString(json, e.kind);
     json += ',';
     appendString(json, e.type);
     json += ",[";
-    for (std::size_t k = 0; k < e.nodes.size(); ++k) json += (k ? "," : "") + std::to_string(e.nodes[k]);
+    for (std::size_t k = 0; k < e.nodes.size(); ++k) {
+      if (k) json += ',';
+      json += std::to_string(e.nodes[k]);
+    }
     json += "]]";
   }
   json += "],\"disp\":[";
@@ -268,13 +279,17 @@ std::string ViewerRecorder::dataJson() const {
   }
   json += "],\"contacts\":[";
   for (std::size_t i = 0; i < contacts_.size(); ++i) {
-    json += (i ? ",[" : "[") + std::to_string(contacts_[i]) + ',';
+    json += i ? ",[" : "[";
+    json += std::to_string(contacts_[i]);
+    json += ',';
     appendSeries(json, bytes, status_, i, contacts_.size(), n, true);
     json += ']';
   }
   json += "],\"bearings\":[";
   for (std::size_t i = 0; i < bearings_.size(); ++i) {
-    json += (i ? ",[" : "[") + std::to_string(bearings_[i]) + ',';
+    json += i ? ",[" : "[";
+    json += std::to_string(bearings_[i]);
+    json += ',';
     appendSeries(json, bytes, damage_, i, bearings_.size(), n, true);
     json += ']';
   }

@@ -83,6 +83,7 @@ class ViewerRecorder final : public Recorder {
   std::vector<int> nodes_;
   std::vector<double> coords_;  // 3 per node
   int ndm_ = 1;
+  bool initialized_ = false;  // initialize() succeeded
   std::vector<DrawnElement> elements_;
   std::vector<int> contacts_;  // nodeToSurface element tags
   std::vector<int> bearings_;  // yoshidaBearing element tags
