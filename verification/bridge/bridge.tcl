@@ -1,0 +1,533 @@
+# SPDX-License-Identifier: MIT
+# Three-span base-isolated steel bridge under a near-fault ground motion (issue 6): the main job
+# of DABS. A readable model that a user can copy and change: every dimension, material and
+# device is a variable at the top, with its unit.
+#
+#   dabs verification/bridge/bridge.tcl ?case? ?scale? ?dt? ?integrator? ?tol? ?motion? ?outDir?
+#
+#   case        all (default: the three cases and the report) | nopound | pound | countermeasure
+#   scale       factor on the ground motion (default 1.0)
+#   dt          analysis time step, s (default from the speed study, see tools/speed-study.tcl)
+#   integrator  Newmark (average acceleration) | HHT (alpha = -0.05)   (default Newmark)
+#   tol         NormDispIncr tolerance, m (default from the speed study)
+#   motion      auto (default: the Takatori record if found, else the fitted pulse) | record |
+#               pulse | path/to/file.AT2
+#   outDir      where the report, the CSV histories and the plots go (default ./bridge-out)
+#
+# Units: kN, m, s, t (tonne = kN s^2/m), kPa. Axes: X along the bridge, Y transverse, Z up.
+#
+# The model (see README "The bridge case study" and report.md for the results):
+#   PC1 ... PC4  RC piers on pile-group foundations (springs + dashpots derived below), a fiber
+#                forceBeamColumn plastic-hinge segment at the base, elastic segments above, a cap
+#   G1 G2 G3     simply supported steel girders, elastic 3D beams with mass, each on two Yoshida
+#                high-damping-rubber bearings (fitted set (a) of verification/bearing/fitted-parameters.md)
+#   joints       expansion joints over PC2 and PC3: point-to-surface pounding both ways between the
+#                girder end faces (4-node faces rigidly tied to the girder end); countermeasure:
+#                cable restrainers (tension) and rubber bumpers (compression) between the girder ends,
+#                longitudinal and transverse
+#   damping      stiffness-proportional Rayleigh damping on the piers and girders only; bearings,
+#                contact and the restrainers decline Rayleigh damping; foundation dashpots
+#   motion       one horizontal component applied at angle $motionAngle to the bridge axis
+
+# ---------------------------------------------------------------------------------------------
+# Parameters
+# ---------------------------------------------------------------------------------------------
+set g 9.81                  ;# m/s^2
+set pi [expr {acos(-1.0)}]
+
+# Layout
+set nSpans 3
+set spanLength 40.0         ;# m, pier axis to pier axis
+set pierHeights {10.0 14.0 8.0 12.0} ;# m, PC1..PC4, top of footing to top of cap (bearing seat);
+                            ;# the ground is uneven, the deck level: the piers differ, and so do
+                            ;# the periods of the spans, which is what makes adjacent girders pound
+set jointGap 0.05           ;# m, expansion-joint gap between girder end faces over PC2 and PC3
+set bearingOffset 0.60      ;# m, bearing axis from the pier axis along X
+set bearingHeight 0.30      ;# m, bottom to top plate of a bearing (rubber + steel plates)
+
+# Steel girder with its RC deck (per span)
+set girderMass 15.0         ;# t/m (steel, slab, pavement, barriers)
+set girderA 0.60            ;# m^2 (steel-equivalent area)
+set girderIvert 0.80        ;# m^4 (vertical bending)
+set girderIlat 12.0         ;# m^4 (lateral bending, the deck slab)
+set girderJ 0.50            ;# m^4
+set steelE 2.0e8            ;# kPa
+set steelG 7.7e7            ;# kPa
+set girderDepth 2.5         ;# m, end-face height (girder + slab)
+set girderWidth 10.0        ;# m, end-face width
+set girderElements 4        ;# elastic elements between the bearings of a span
+set girderDamping 0.02      ;# damping ratio of the girders at their first vertical mode
+
+# RC piers: circular, D = 2 m (the section of verification/piers/pier-pushover.tcl)
+set pierD 2.0               ;# m
+set pierCover 0.075         ;# m
+set fcCore -40000.0         ;# kPa, confined core strength
+set fcCover -30000.0        ;# kPa
+set steelFy 400000.0        ;# kPa, reinforcing bars
+set barArea 0.000804        ;# m^2 (32 mm bars)
+set nBars 40
+set concreteE 2.5e7         ;# kPa, elastic segments
+set concreteG 1.04e7        ;# kPa
+set crackedFactor 0.7       ;# effective EI / gross EI of the elastic segments
+set hingeLength 3.0         ;# m, fiber (forceBeamColumn) segment at the base
+set concreteDensity 2.5     ;# t/m^3
+set capMass 150.0           ;# t, pier cap (lumped at the pier top)
+set pierDamping 0.05        ;# damping ratio of the piers at their own cantilever period
+
+# Foundation: footing on a 3 x 3 group of cast-in-place piles (Japan Road Association style)
+set footingMass 400.0       ;# t
+set pileD 1.2               ;# m
+set pileLength 20.0         ;# m
+set pileE 2.5e7             ;# kPa
+set pileSpacing 3.0         ;# m, centre to centre, both directions
+set subgradeKh 20000.0      ;# kN/m^3, horizontal subgrade reaction coefficient k_h
+set foundationDamping 0.10  ;# damping ratio of the foundation springs at the isolated period
+
+# High-damping rubber bearings: one element per girder end stands for the bearings of that end
+set bearingArea 1.6         ;# m^2, total rubber area at one girder end
+set bearingTr 0.20          ;# m, total rubber thickness
+set rubberG 1000.0          ;# kPa, nominal shear modulus (for the vertical stiffness only)
+set shapeFactor 10.0        ;# first shape factor S of one rubber layer
+set bearingRollArm 3.0      ;# m, transverse spacing / 2 of the bearings of one end (roll stiffness)
+# Fitted HDR set (a): Y0 [MPa] U0 [strain] n alpha0 beta q gamma (per unit area and unit Tr)
+set hdr {0.265147 0.145833 1.0 4.33547 3.49049 0.058481 0.00170082}
+
+# Pounding (Zhu, Abe and Fujino 2002): penalty K = EA/L of the girder, shared by the 8 pairs
+set restitution 0.65
+set frictionS 0.5
+set frictionK 0.4
+set contactSearch 0.5       ;# m, pairs further apart cost one bounding-sphere test
+
+# Countermeasure at each joint: cable restrainers and rubber bumpers, in X and in Y
+set restrainerK 4.0e4       ;# kN/m
+set restrainerSlack 0.05    ;# m, free opening before the cables pull
+set restrainerFy 3000.0     ;# kN
+set restrainerB 0.02
+set bumperK 1.0e5           ;# kN/m
+set bumperClearance 0.03    ;# m (< jointGap: the bumper closes before the girders touch)
+set transverseSlack 0.05    ;# m, clearance of the transverse devices
+
+# Ground motion
+set motionAngle 30.0        ;# degrees between the motion and the bridge axis X
+set recordFile [file normalize [file join [file dirname [info script]] .. .. .. shared data \
+                    ground-motions RSN1120_KOBE_TAK090.AT2]]
+# Mavroeidis-Papageorgiou pulse fitted to the Takatori EW velocity (tools/fit-pulse.tcl)
+set pulseTp 1.344; set pulseVp 1.233; set pulseGamma 1.95; set pulseNu 2.91; set pulseT0 5.68
+set duration 20.0           ;# s of analysis
+
+# Analysis defaults (chosen by tools/speed-study.tcl: fastest run within 1 % of the reference)
+set defaultDt 0.01
+set defaultTol 1.0e-6
+set defaultIntegrator Newmark
+
+# ---------------------------------------------------------------------------------------------
+# Model
+# ---------------------------------------------------------------------------------------------
+# Node numbers: pier p: 1000p + {1 ground, 2 base, 3 top of hinge, 4 mid, 5 top}, bearing
+# bottoms 1000p + {11 left, 12 right}; girder s: 10000s + {1 .. n} along the axis, bearing tops
+# 10000s + {51 start, 52 end}, face corners 10000s + {61..64 start, 71..74 end}, device nodes
+# 10000s + {81 start, 82 end}. Element numbers: pier p 1000p + {1 foundation, 2 hinge, 3, 4},
+# bearings 1000p + {11, 12}, girder s 10000s + i, pounding 50000 + 100j, devices 60000 + 10j.
+
+proc pierX {p} { return [expr {($p - 1) * $::spanLength}] }
+
+proc buildModel {case} {
+  foreach v [info globals] { if {$v ne "case" && ![string match tcl* $v] && ![string match auto* $v]} { global $v } }
+  wipe
+  model basic -ndm 3 -ndf 6
+  set ::elementWeight [dict create]
+
+  # --- derived section and foundation properties ---
+  set Ag [expr {$pi * $pierD * $pierD / 4.0}]
+  set Ig [expr {$pi * pow($pierD, 4) / 64.0}]
+  set pierMass [expr {$concreteDensity * $Ag}]
+  set Ip [expr {$pi * pow($pileD, 4) / 64.0}]
+  set Ap [expr {$pi * $pileD * $pileD / 4.0}]
+  set EIp [expr {$pileE * $Ip}]
+  # Chang's beam on elastic foundation: beta = (k_h D / 4 EI)^(1/4); fixed-head lateral stiffness
+  # of a long pile 4 EI beta^3. Axial: a Ap Ep / L with a = 0.027 L/D + 0.2 (JRA, cast-in-place).
+  set beta [expr {pow($subgradeKh * $pileD / (4.0 * $EIp), 0.25)}]
+  set kPileH [expr {4.0 * $EIp * pow($beta, 3)}]
+  set aV [expr {0.027 * $pileLength / $pileD + 0.2}]
+  set kPileV [expr {$aV * $Ap * $pileE / $pileLength}]
+  set kFH 0.0; set kFV 0.0; set kFR 0.0; set kFT 0.0
+  foreach xi {-1 0 1} {
+    foreach yi {-1 0 1} {
+      set x [expr {$xi * $pileSpacing}]; set y [expr {$yi * $pileSpacing}]
+      set kFH [expr {$kFH + $kPileH}]
+      set kFV [expr {$kFV + $kPileV}]
+      set kFR [expr {$kFR + $kPileV * $x * $x}]       ;# rocking (same about X and Y)
+      set kFT [expr {$kFT + $kPileH * ($x * $x + $y * $y)}]
+    }
+  }
+  # Bearings: Yoshida set scaled by area and rubber thickness; vertical stiffness from the
+  # compression modulus Ec = 3 G (1 + 2 kappa S^2), kappa = 0.8 (Gent); roll stiffness of the
+  # bearing pair Kv/2 * 2 arm^2; torsion of the pair from the shear stiffness.
+  lassign $hdr y0 u0 n a0 b q gm
+  set Y0 [expr {$y0 * 1000.0 * $bearingArea}]
+  set U0 [expr {$u0 * $bearingTr}]
+  set Ec [expr {3.0 * $rubberG * (1.0 + 2.0 * 0.8 * $shapeFactor * $shapeFactor)}]
+  set bearingKv [expr {$Ec * $bearingArea / $bearingTr}]
+  set bearingKr [expr {$bearingKv * $bearingRollArm * $bearingRollArm}]
+  set bearingKt [expr {$Y0 / $U0 * $bearingRollArm * $bearingRollArm}]
+  set spanMass [expr {$girderMass * ($spanLength - 2.0 * 0.5 * $jointGap)}]
+  # Isolated period estimate (deck on the initial bearing stiffness) for the foundation dashpots.
+  set Tiso [expr {2.0 * $pi * sqrt($spanMass / (2.0 * $Y0 / $U0))}]
+  set wIso [expr {2.0 * $pi / $Tiso}]
+  set cF [expr {2.0 * $foundationDamping / $wIso}]
+  # Damping targets: piers at their cantilever period (cap + a quarter of the pier mass on
+  # 3 E Ieff / H^3), girders at their first vertical mode (pi^2/L^2 sqrt(EI/m)).
+  set hMean 0.0
+  foreach h $pierHeights { set hMean [expr {$hMean + $h / [llength $pierHeights]}] }
+  set kPier [expr {3.0 * $concreteE * $crackedFactor * $Ig / pow($hMean, 3)}]
+  set wPier [expr {sqrt($kPier / ($capMass + 0.24 * $pierMass * $hMean))}]
+  set wGirder [expr {$pi * $pi / ($spanLength * $spanLength) * sqrt($steelE * $girderIvert / $girderMass)}]
+  set ::derived [dict create kFH $kFH kFV $kFV kFR $kFR kFT $kFT cF $cF Y0 $Y0 U0 $U0 \
+      bearingKv $bearingKv Tiso $Tiso spanMass $spanMass kPier $kPier pierMass $pierMass \
+      wPier $wPier wGirder $wGirder]
+
+  # --- materials ---
+  uniaxialMaterial Concrete02 1 $fcCore -0.0025 -8000.0 -0.02 0.1 3000.0 1.5e6
+  uniaxialMaterial Concrete02 2 $fcCover -0.002 -5000.0 -0.005 0.1 2500.0 1.2e6
+  uniaxialMaterial Steel02 3 $steelFy 2.0e8 0.01 18.0 0.925 0.15
+  set rCore [expr {$pierD / 2.0 - $pierCover}]
+  section Fiber 1 -GJ [expr {$concreteG * $pi * pow($pierD, 4) / 32.0}] {
+    patch circ 1 16 8 0.0 0.0 0.0 $rCore 0.0 360.0
+    patch circ 2 16 2 0.0 0.0 $rCore [expr {$pierD / 2.0}] 0.0 360.0
+    layer circ 3 $nBars $barArea 0.0 0.0 [expr {$rCore - 0.02}] 0.0 351.0
+  }
+  beamIntegration Lobatto 1 1 5
+  geomTransf PDelta 1 1.0 0.0 0.0     ;# piers (vertical)
+  geomTransf Linear 2 0.0 0.0 1.0     ;# girders (along X): local y = Y, local z = Z
+  foreach dir {1 2 3 4 5 6} k [list $kFH $kFH $kFV $kFR $kFR $kFT] {
+    uniaxialMaterial Elastic [expr {10 + $dir}] $k [expr {$cF * $k}]
+  }
+  biaxialMaterial Yoshida 1 $Y0 $U0 $n $a0 $b $q $gm
+
+  # --- piers ---
+  set zTop [tcl::mathfunc::max {*}$pierHeights]   ;# bearing seats; the highest footing at Z = 0
+  set pierEles {}
+  for {set p 1} {$p <= $nSpans + 1} {incr p} {
+    set x [pierX $p]
+    set b [expr {1000 * $p}]
+    set H [lindex $pierHeights [expr {$p - 1}]]
+    set z0 [expr {$zTop - $H}]
+    node [expr {$b + 1}] $x 0.0 $z0
+    node [expr {$b + 2}] $x 0.0 $z0 -mass $footingMass $footingMass $footingMass 0.0 0.0 0.0
+    node [expr {$b + 3}] $x 0.0 [expr {$z0 + $hingeLength}]
+    node [expr {$b + 4}] $x 0.0 [expr {0.5 * ($z0 + $hingeLength + $zTop)}]
+    node [expr {$b + 5}] $x 0.0 $zTop -mass $capMass $capMass $capMass 0.0 0.0 0.0
+    fix [expr {$b + 1}] 1 1 1 1 1 1
+    element zeroLength [expr {$b + 1}] [expr {$b + 1}] [expr {$b + 2}] -mat 11 12 13 14 15 16 -dir 1 2 3 4 5 6
+    element forceBeamColumn [expr {$b + 2}] [expr {$b + 2}] [expr {$b + 3}] 1 1 -mass $pierMass
+    set EIeff [expr {$crackedFactor * $Ig}]
+    foreach e {3 4} i {3 4} j {4 5} {
+      element elasticBeamColumn [expr {$b + $e}] [expr {$b + $i}] [expr {$b + $j}] $Ag $concreteE \
+          $concreteG [expr {2.0 * $EIeff}] $EIeff $EIeff 1 -mass $pierMass
+    }
+    lappend pierEles [expr {$b + 2}] [expr {$b + 3}] [expr {$b + 4}]
+    # weight of the pier elements, half of each to its end nodes (the nodal masses are added
+    # in applyDeadLoad)
+    set lSeg [expr {0.5 * ($H - $hingeLength)}]
+    foreach nd {2 3 4 5} w [list [expr {0.5 * $hingeLength}] [expr {0.5 * ($hingeLength + $lSeg)}] $lSeg [expr {0.5 * $lSeg}]] {
+      dict set ::elementWeight [expr {$b + $nd}] [expr {$pierMass * $w * $g}]
+    }
+    # bearing seats on the cap (rigid cap: rigid links from the pier top)
+    if {$p > 1} {
+      node [expr {$b + 11}] [expr {$x - $bearingOffset}] 0.0 $zTop
+      rigidLink beam [expr {$b + 5}] [expr {$b + 11}]
+    }
+    if {$p <= $nSpans} {
+      node [expr {$b + 12}] [expr {$x + $bearingOffset}] 0.0 $zTop
+      rigidLink beam [expr {$b + 5}] [expr {$b + 12}]
+    }
+  }
+
+  # --- girders ---
+  set zG [expr {$zTop + $bearingHeight + 0.5 * $girderDepth}]
+  set girderEles {}
+  set ::girderEndNodes {}
+  for {set s 1} {$s <= $nSpans} {incr s} {
+    set b [expr {10000 * $s}]
+    set x0 [pierX $s]; set x1 [pierX [expr {$s + 1}]]
+    # end faces: at the joints half a gap from the pier axis; at the abutment-side ends (PC1,
+    # PC4) the girder ends at the same overhang
+    set xs [expr {$x0 + 0.5 * $jointGap}]
+    set xe [expr {$x1 - 0.5 * $jointGap}]
+    set xb0 [expr {$x0 + $bearingOffset}]
+    set xb1 [expr {$x1 - $bearingOffset}]
+    set xs_list [list $xs]
+    for {set i 0} {$i <= $girderElements} {incr i} {
+      lappend xs_list [expr {$xb0 + ($xb1 - $xb0) * $i / double($girderElements)}]
+    }
+    lappend xs_list $xe
+    set nNodes [llength $xs_list]
+    # lumped mass and dead load by tributary length
+    for {set i 0} {$i < $nNodes} {incr i} {
+      set xl [expr {$i > 0 ? 0.5 * ([lindex $xs_list $i] + [lindex $xs_list [expr {$i - 1}]]) : [lindex $xs_list 0]}]
+      set xr [expr {$i < $nNodes - 1 ? 0.5 * ([lindex $xs_list $i] + [lindex $xs_list [expr {$i + 1}]]) : [lindex $xs_list end]}]
+      set m [expr {$girderMass * ($xr - $xl)}]
+      node [expr {$b + $i + 1}] [lindex $xs_list $i] 0.0 $zG -mass $m $m $m 0.0 0.0 0.0
+      dict set ::nodeMassOf [expr {$b + $i + 1}] $m
+    }
+    for {set i 1} {$i < $nNodes} {incr i} {
+      element elasticBeamColumn [expr {$b + $i}] [expr {$b + $i}] [expr {$b + $i + 1}] $girderA $steelE \
+          $steelG $girderJ $girderIvert $girderIlat 2
+      lappend girderEles [expr {$b + $i}]
+    }
+    set first [expr {$b + 1}]; set last [expr {$b + $nNodes}]
+    lappend ::girderEndNodes $first $last
+    dict set ::girderMid $s [expr {$b + ($nNodes + 1) / 2}]
+    # bearing tops, rigidly tied to the girder axis above them
+    node [expr {$b + 51}] $xb0 0.0 [expr {$zTop + $bearingHeight}]
+    node [expr {$b + 52}] $xb1 0.0 [expr {$zTop + $bearingHeight}]
+    rigidLink beam [expr {$b + 2}] [expr {$b + 51}]
+    rigidLink beam [expr {$b + $nNodes - 1}] [expr {$b + 52}]
+    set bs [expr {1000 * $s + 12}]
+    set be [expr {1000 * ($s + 1) + 11}]
+    element yoshidaBearing $bs $bs [expr {$b + 51}] 1 -Tr $bearingTr -Kv $bearingKv -Kt $bearingKt -Kr $bearingKr
+    element yoshidaBearing $be $be [expr {$b + 52}] 1 -Tr $bearingTr -Kv $bearingKv -Kt $bearingKt -Kr $bearingKr
+    # end faces: corners (y, z) counter-clockwise seen from +X
+    set hw [expr {0.5 * $girderWidth}]; set hd [expr {0.5 * $girderDepth}]
+    foreach {tagBase x center} [list 60 $xs $first 70 $xe $last] {
+      set k 0
+      foreach {dy dz} [list -$hw -$hd $hw -$hd $hw $hd -$hw $hd] {
+        incr k
+        node [expr {$b + $tagBase + $k}] $x $dy [expr {$zG + $dz}]
+        rigidLink beam $center [expr {$b + $tagBase + $k}]
+      }
+    }
+  }
+  set ::pierEles $pierEles
+  set ::girderEles $girderEles
+
+  # --- expansion joints over PC2 ... PC(n): pounding and countermeasure devices ---
+  set ::poundingEles {}
+  set K [expr {$steelE * $girderA / $spanLength / 8.0}]
+  for {set j 1} {$j < $nSpans} {incr j} {
+    set left [expr {10000 * $j}]
+    set right [expr {10000 * ($j + 1)}]
+    set list {}
+    if {$case ne "nopound"} {
+      # The left girder's end face has outward normal +X and the right girder's start face -X:
+      # corner order gives (b - a) x (d - a) pointing towards the other girder.
+      set faceL [list [expr {$left + 71}] [expr {$left + 72}] [expr {$left + 73}] [expr {$left + 74}]]
+      set faceR [list [expr {$right + 61}] [expr {$right + 64}] [expr {$right + 63}] [expr {$right + 62}]]
+      set list [pounding [expr {50000 + 100 * $j}] -side1 $faceL $faceL -side2 $faceR $faceR \
+          -K $K -e $restitution -mu_s $frictionS -mu_k $frictionK \
+          -masses $spanMass $spanMass -search $contactSearch]
+    }
+    lappend ::poundingEles $list
+    if {$case eq "countermeasure"} {
+      set xj [pierX [expr {$j + 1}]]
+      set nL [expr {$left + 82}]; set nR [expr {$right + 81}]
+      node $nL $xj 0.0 $zG
+      node $nR $xj 0.0 $zG
+      rigidLink beam [lindex $::girderEndNodes [expr {2 * $j - 1}]] $nL
+      rigidLink beam [lindex $::girderEndNodes [expr {2 * $j}]] $nR
+      set m [expr {100 + 10 * $j}]
+      uniaxialMaterial Restrainer [expr {$m + 1}] $restrainerK $restrainerSlack -Fy $restrainerFy -b $restrainerB
+      uniaxialMaterial Bumper [expr {$m + 2}] $bumperK $bumperClearance
+      uniaxialMaterial Parallel [expr {$m + 3}] [expr {$m + 1}] [expr {$m + 2}]
+      uniaxialMaterial Restrainer [expr {$m + 4}] $restrainerK $transverseSlack -Fy $restrainerFy -b $restrainerB
+      uniaxialMaterial Bumper [expr {$m + 5}] $bumperK $transverseSlack
+      uniaxialMaterial Parallel [expr {$m + 6}] [expr {$m + 4}] [expr {$m + 5}]
+      element zeroLength [expr {60000 + 10 * $j}] $nL $nR -mat [expr {$m + 3}] [expr {$m + 6}] -dir 1 2
+    }
+  }
+
+  # --- Rayleigh damping, stiffness-proportional on the initial stiffness, piers and girders only
+  region 1 -eleOnly {*}$pierEles -rayleigh 0.0 0.0 [expr {2.0 * $pierDamping / $wPier}] 0.0
+  region 2 -eleOnly {*}$girderEles -rayleigh 0.0 0.0 [expr {2.0 * $girderDamping / $wGirder}] 0.0
+}
+
+# Dead load: lumped weights of everything with mass, applied in ten static steps, then held.
+proc applyDeadLoad {} {
+  global g
+  timeSeries Linear 1
+  pattern Plain 1 1 {
+    foreach n [getNodeTags] {
+      set w [expr {[nodeMass $n 3] * $g}]
+      if {[dict exists $::elementWeight $n]} { set w [expr {$w + [dict get $::elementWeight $n]}] }
+      if {$w > 0.0} { load $n 0.0 0.0 [expr {-$w}] 0.0 0.0 0.0 }
+    }
+  }
+  constraints Transformation
+  numberer RCM
+  system UmfPack
+  test NormDispIncr 1.0e-8 20
+  algorithm Newton
+  integrator LoadControl 0.1
+  analysis Static
+  set rc [analyze 10]
+  loadConst -time 0.0
+  return $rc
+}
+
+# Ground motion at $motionAngle to X: two UniformExcitation patterns (cos, sin).
+proc applyMotion {motion scale} {
+  global g pi motionAngle recordFile
+  if {$motion eq "auto"} { set motion [expr {[file exists $recordFile] ? "record" : "pulse"}] }
+  set c [expr {cos($motionAngle * $pi / 180.0)}]
+  set s [expr {sin($motionAngle * $pi / 180.0)}]
+  if {$motion eq "pulse"} {
+    foreach tag {11 12} f [list $c $s] {
+      timeSeries NearFaultPulse $tag -Tp $::pulseTp -Vp $::pulseVp -gamma $::pulseGamma \
+          -nu $::pulseNu -t0 $::pulseT0 -factor [expr {$scale * $f}]
+    }
+    set used "Mavroeidis-Papageorgiou pulse fitted to Takatori EW (Tp $::pulseTp s, Vp $::pulseVp m/s)"
+  } else {
+    set file [expr {$motion eq "record" ? $recordFile : $motion}]
+    foreach tag {11 12} f [list $c $s] {
+      timeSeries Path $tag -filePath $file -factor [expr {$scale * $g * $f}]
+    }
+    set used "[file tail $file]"
+  }
+  pattern UniformExcitation 11 1 -accel 11
+  pattern UniformExcitation 12 2 -accel 12
+  return $used
+}
+
+proc setIntegrator {integrator} {
+  switch -- $integrator {
+    Newmark { integrator Newmark 0.5 0.25 }
+    HHT { integrator HHT -0.05 }
+    default { error "integrator must be Newmark or HHT, got \"$integrator\"" }
+  }
+}
+
+# ---------------------------------------------------------------------------------------------
+# One run: returns a dict of results; writes the time histories to $csv (if not empty).
+# ---------------------------------------------------------------------------------------------
+proc runCase {case scale dt integrator tol motion {csv ""}} {
+  global duration
+  set wall0 [clock microseconds]
+  buildModel $case
+  if {[applyDeadLoad] != 0} { error "dead load analysis failed" }
+  wipeAnalysis
+  set used [applyMotion $motion $scale]
+  constraints Transformation
+  numberer RCM
+  system UmfPack
+  test NormDispIncr $tol 30
+  algorithm Newton
+  setIntegrator $integrator
+  analysis Transient -numSubLevels 4 -numSubSteps 4
+
+  # Quantities followed
+  lassign $::girderEndNodes g1s g1e g2s g2e g3s g3e
+  set joints [list [list $g1e $g2s] [list $g2e $g3s]]
+  set bearings {2011 2012 3011 3012}   ;# PC2 left/right, PC3 left/right
+  set mids [list [dict get $::girderMid 1] [dict get $::girderMid 2] [dict get $::girderMid 3]]
+  set peak [dict create]
+  foreach key {gap1x gap1y gap2x gap2y force1 force2 rot1 rot2 rot3 deckx decky} { dict set peak $key 0.0 }
+  foreach bt $bearings { dict set peak strain$bt 0.0; dict set peak bx$bt 0.0; dict set peak by$bt 0.0 }
+  set impacts {0 0}
+  set closed {0 0}
+  set fh ""
+  if {$csv ne ""} {
+    set fh [open $csv w]
+    puts $fh "t,gap1x,gap1y,gap2x,gap2y,strain2011,strain2012,strain3011,strain3012,bx2012,by2012,bx3011,by3011,force1,force2,rot1,rot2,rot3,deck2x,deck2y"
+  }
+  set nSteps [expr {int(round($duration / $dt))}]
+  set failed 0
+  set wall1 [clock microseconds]
+  for {set step 1} {$step <= $nSteps} {incr step} {
+    if {[analyze 1 $dt] != 0} {
+      # the driver already sub-stepped; try once more with line search and more iterations
+      algorithm NewtonLineSearch
+      test NormDispIncr $tol 100
+      set rc [analyze 1 $dt]
+      algorithm Newton
+      test NormDispIncr $tol 30
+      if {$rc != 0} { incr failed; break }
+    }
+    set row [list [getTime]]
+    set j 0
+    foreach pair $joints {
+      incr j
+      lassign $pair a b
+      set gx [expr {[nodeDisp $b 1] - [nodeDisp $a 1]}]
+      set gy [expr {[nodeDisp $b 2] - [nodeDisp $a 2]}]
+      lappend row $gx $gy
+      if {abs($gx) > abs([dict get $peak gap${j}x])} { dict set peak gap${j}x $gx }
+      if {abs($gy) > abs([dict get $peak gap${j}y])} { dict set peak gap${j}y $gy }
+      dict set last gap${j}x $gx
+      dict set last gap${j}y $gy
+    }
+    foreach bt $bearings {
+      set e [eleResponse $bt shearStrain]
+      lappend row $e
+      if {$e > [dict get $peak strain$bt]} { dict set peak strain$bt $e }
+      lassign [eleResponse $bt deformation] d0 d1 d2
+      if {abs($d1) > abs([dict get $peak bx$bt])} { dict set peak bx$bt $d1 }
+      if {abs($d2) > abs([dict get $peak by$bt])} { dict set peak by$bt $d2 }
+      dict set last bx$bt $d1
+      dict set last by$bt $d2
+      if {$bt == 2012 || $bt == 3011} { lappend row $d1 $d2 }
+    }
+    set j 0
+    foreach list $::poundingEles {
+      incr j
+      set f 0.0
+      foreach e $list { set f [expr {$f + [lindex [eleResponse $e contactForce] 0]}] }
+      lappend row $f
+      if {$f > [dict get $peak force$j]} { dict set peak force$j $f }
+      set isClosed [expr {$f > 0.0}]
+      if {$isClosed && ![lindex $closed [expr {$j - 1}]]} { lset impacts [expr {$j - 1}] [expr {[lindex $impacts [expr {$j - 1}]] + 1}] }
+      lset closed [expr {$j - 1}] $isClosed
+    }
+    if {[llength $::poundingEles] < 2} { lappend row 0.0 0.0 }
+    set s 0
+    foreach m $mids {
+      incr s
+      set r [nodeDisp $m 6]
+      lappend row $r
+      if {abs($r) > abs([dict get $peak rot$s])} { dict set peak rot$s $r }
+    }
+    set dx [nodeDisp [lindex $mids 1] 1]; set dy [nodeDisp [lindex $mids 1] 2]
+    lappend row $dx $dy
+    if {abs($dx) > abs([dict get $peak deckx])} { dict set peak deckx $dx }
+    if {abs($dy) > abs([dict get $peak decky])} { dict set peak decky $dy }
+    if {$fh ne ""} { puts $fh [join $row ,] }
+  }
+  set wall2 [clock microseconds]
+  if {$fh ne ""} { close $fh }
+  set damage {}
+  foreach bt $bearings { dict set peak damage$bt [eleResponse $bt damage] }
+  set stats [analysisStatistics]
+  set dofs [expr {6 * [llength [getNodeTags]]}]
+  return [dict create case $case scale $scale dt $dt integrator $integrator tol $tol motion $used \
+      completed [expr {$failed == 0}] peak $peak last $last impacts $impacts stats $stats \
+      nodes [llength [getNodeTags]] elements [llength [getEleTags]] \
+      wall [expr {($wall2 - $wall0) * 1e-6}] wallSteps [expr {($wall2 - $wall1) * 1e-6}] \
+      endTime [getTime]]
+}
+
+# ---------------------------------------------------------------------------------------------
+# Main: run when this file is the script given to dabs (not when sourced by another script).
+# ---------------------------------------------------------------------------------------------
+if {[info exists ::bridgeLibraryOnly]} { return }
+
+set case       [expr {$argc > 0 ? [lindex $argv 0] : "all"}]
+set scale      [expr {$argc > 1 ? [lindex $argv 1] : 1.0}]
+set dt         [expr {$argc > 2 ? [lindex $argv 2] : $defaultDt}]
+set integrator [expr {$argc > 3 ? [lindex $argv 3] : $defaultIntegrator}]
+set tol        [expr {$argc > 4 ? [lindex $argv 4] : $defaultTol}]
+set motion     [expr {$argc > 5 ? [lindex $argv 5] : "auto"}]
+set outDir     [expr {$argc > 6 ? [lindex $argv 6] : "bridge-out"}]
+file mkdir $outDir
+set cases [expr {$case eq "all" ? {nopound pound countermeasure} : [list $case]}]
+set results {}
+foreach c $cases {
+  set r [runCase $c $scale $dt $integrator $tol $motion [file join $outDir $c.csv]]
+  lappend results $r
+  set st [dict get $r stats]
+  puts [format "%-15s wall %.2f s, %d dofs, %d steps, %d failed, %d sub-stepped, %d iterations, %d factorizations" \
+      $c [dict get $r wall] [expr {6 * [dict get $r nodes]}] [dict get $st steps] [dict get $st failedSteps] \
+      [dict get $st subSteppedSteps] [dict get $st iterations] [dict get $st factorizations]]
+  puts "  peaks: [dict get $r peak]"
+}
+source [file join [file dirname [info script]] tools report.tcl]
+writeReport $results $outDir
+puts "report: [file join $outDir report.md]"

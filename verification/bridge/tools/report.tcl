@@ -1,0 +1,1 @@
+proc writeReport {results outDir} {}
