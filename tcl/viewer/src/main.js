@@ -146,6 +146,8 @@ function main() {
     const d = data.disp[i];
     return [c[0] + magnification * d[0][f], c[1] + magnification * d[1][f], c[2] + magnification * d[2][f]];
   };
+  const yAxis = new THREE.Vector3(0, 1, 0);
+  const zAxis = new THREE.Vector3(0, 0, 1);
   const tmpA = new THREE.Vector3();
   const tmpB = new THREE.Vector3();
   function place() {
@@ -160,9 +162,12 @@ function main() {
       tmpA.fromArray(position, 3 * b.idx[0]);
       tmpB.fromArray(position, 3 * b.idx[b.idx.length - 1]);
       b.mesh.position.copy(tmpA).add(tmpB).multiplyScalar(0.5);
-      const height = Math.max(tmpA.distanceTo(tmpB), 0.5 * bearingSize);
-      b.mesh.scale.set(bearingSize, bearingSize, bearingSize);
-      if (zUp) b.mesh.scale.z = height; else b.mesh.scale.y = height;
+      // The box spans the bearing's two nodes (its axis along their connecting line, so shear
+      // deformation tilts it); coincident nodes give a flat box.
+      const length = tmpA.distanceTo(tmpB);
+      b.mesh.scale.set(bearingSize, Math.max(length, 0.5 * bearingSize), bearingSize);
+      if (length > 1e-9 * size) b.mesh.quaternion.setFromUnitVectors(yAxis, tmpB.sub(tmpA).normalize());
+      else b.mesh.quaternion.setFromUnitVectors(yAxis, zUp ? zAxis : yAxis);
       const dmg = b.damage ? b.damage[frame] : 0;
       b.mesh.material.color.setHex(dmg >= 2 ? kColors.bearingFailed : dmg >= 1 ? kColors.bearingDesign : kColors.bearing);
     }
@@ -306,6 +311,8 @@ function main() {
   const vec = new THREE.Vector3();
   window.dabsViewer = {
     ready: true,
+    /** Milliseconds from navigation start until the first frame was drawn. */
+    readyMs: performance.now(),
     frames: data.frames,
     time: (f) => data.time[f],
     frame: () => frame,

@@ -1,0 +1,64 @@
+# SPDX-License-Identifier: MIT
+# A small isolated bridge for the viewer's browser test (viewer.test.mjs), run as
+#   dabs bridge.tcl outDir
+# Units kN, m, t, s. Two piers (elasticBeamColumn, 8 m) carry a 20 m girder (two elasticBeamColumn)
+# on two yoshidaBearing elements; the girder end at x = 20 m pounds against a fixed abutment face
+# 0.05 m away (nodeToSurface). A 1 Hz sine of 3 m/s^2 along x shakes the bridge for 3 s.
+# Writes outDir/bridge.html (recorder Viewer) and, to check the page against, outDir/disp.out
+# (Node recorder: time, then x y z of every node) and outDir/gap.out (Element recorder: contact gap).
+set out [lindex $argv 0]
+file mkdir $out
+
+model basic -ndm 3 -ndf 6
+# piers: bases 1, 11 fixed, tops 2, 12
+node 1 0.0 0.0 0.0
+node 2 0.0 0.0 8.0
+node 11 20.0 0.0 0.0
+node 12 20.0 0.0 8.0
+fix 1 1 1 1 1 1 1
+fix 11 1 1 1 1 1 1
+geomTransf Linear 1 0.0 1.0 0.0
+geomTransf Linear 2 0.0 0.0 1.0
+element elasticBeamColumn 1 1 2 3.0 3.0e7 1.25e7 1.0 0.7 0.7 1
+element elasticBeamColumn 2 11 12 3.0 3.0e7 1.25e7 1.0 0.7 0.7 1
+# girder nodes 3, 4, 13 with 100 t each
+node 3 0.0 0.0 8.0 -mass 100.0 100.0 100.0 0.0 0.0 0.0
+node 4 10.0 0.0 8.0 -mass 100.0 100.0 100.0 0.0 0.0 0.0
+node 13 20.0 0.0 8.0 -mass 100.0 100.0 100.0 0.0 0.0 0.0
+element elasticBeamColumn 31 3 4 2.0 3.0e7 1.25e7 1.0 0.5 2.0 2
+element elasticBeamColumn 32 4 13 2.0 3.0e7 1.25e7 1.0 0.5 2.0 2
+# bearings: HDR (Yoshida set of verification/bench/bearing-deck.tcl), low limits so they fail
+set A 0.64
+set Tr 0.2
+biaxialMaterial Yoshida 1 [expr {0.265147e3 * $A}] [expr {0.145833 * $Tr}] 1.0 4.33547 3.49049 0.058481 0.00170082
+element yoshidaBearing 21 2 3 1 -Tr $Tr -Kv 2.0e6 -Kt 500.0 -Kr 8000.0 -limits 0.25 0.5
+element yoshidaBearing 22 12 13 1 -Tr $Tr -Kv 2.0e6 -Kt 500.0 -Kr 8000.0 -limits 0.25 0.5
+# abutment face at x = 20.05 (corners ordered so that its normal points to -x, towards node 13)
+node 41 20.05 -1.0 7.0
+node 42 20.05 -1.0 9.0
+node 43 20.05 1.0 9.0
+node 44 20.05 1.0 7.0
+foreach n {41 42 43 44} { fix $n 1 1 1 1 1 1 }
+element nodeToSurface 51 13 41 42 43 44 -K 1.0e6
+
+set nodes {1 2 3 4 11 12 13 41 42 43 44}
+recorder Node -file [file join $out disp.out] -time -precision 12 -node {*}$nodes -dof 1 2 3 disp
+recorder Element -file [file join $out gap.out] -time -precision 12 -ele 51 gap
+recorder Viewer -file [file join $out bridge.html] -title "viewer test bridge" -plots {
+  {"girder end x" node 13 1 disp}
+  {"contact gap" ele 51 gap 1}
+  {"bearing 21 shear strain" ele 21 shearStrain 1}
+}
+
+timeSeries Trig 1 0.0 3.0 1.0 -factor 3.0
+pattern UniformExcitation 1 1 -accel 1
+constraints Plain
+numberer Plain
+system BandGeneral
+test NormDispIncr 1.0e-8 50
+algorithm Newton
+integrator Newmark 0.5 0.25
+analysis Transient
+set ok [analyze 300 0.01]
+if {$ok != 0} { error "analysis failed at t = [getTime]" }
+puts "viewer test bridge: 300 steps to t = [getTime]"
