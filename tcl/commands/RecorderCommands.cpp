@@ -6,6 +6,7 @@
 #include "tcl/commands/Registry.h"
 #include "tcl/commands/SeriesParser.h"
 #include "tcl/commands/TclResult.h"
+#include "tcl/commands/ViewerCommands.h"
 #include "tcl/domain/DriftRecorder.h"
 #include "tcl/domain/ElementRecorder.h"
 #include "tcl/domain/NodeRecorder.h"
@@ -104,7 +105,8 @@ void recorderCmd(Runtime& rt, ArgReader& a) {
   else if (type == "Element") elementRecorder(rt, a, false);
   else if (type == "EnvelopeElement") elementRecorder(rt, a, true);
   else if (type == "Drift") driftRecorder(rt, a);
-  else a.fail(1, "type", "expected Node, EnvelopeNode, Element, EnvelopeElement or Drift, got \"" + type + "\"");
+  else if (type == "Viewer") viewerRecorderCommand(rt, a);
+  else a.fail(1, "type", "expected Node, EnvelopeNode, Element, EnvelopeElement, Drift or Viewer, got \"" + type + "\"");
 }
 
 void recordCmd(Runtime& rt, ArgReader& a) {
@@ -117,7 +119,8 @@ constexpr CommandEntry kCommands[] = {
     {"recorder",
      "recorder Node|EnvelopeNode -file f ?-time? ?-dT dt? ?-precision p? -node tags|-nodeRange a b -dof dofs "
      "disp|vel|accel|incrDisp|reaction|eigen i; recorder Element|EnvelopeElement -file f ?-time? -ele tags|-eleRange a b "
-     "response; recorder Drift -file f -iNode .. -jNode .. -dof .. -perpDirn ..",
+     "response; recorder Drift -file f -iNode .. -jNode .. -dof .. -perpDirn ..; "
+     "recorder Viewer -file page.html ?-dT dt? ?-nodes tags? ?-plots {..}? ?-title text?",
      recorderCmd},
     {"record", "record", recordCmd},
 };
