@@ -1,0 +1,127 @@
+# SPDX-License-Identifier: MIT
+# Speed against error of the bridge case study (issue 6) and its stability runs.
+#
+#   dabs verification/bridge/tools/speed-study.tcl ?case? ?motion? ?outDir?
+#
+# Speed: the case (default pound) is run at dt = 0.01 ... 0.0005 s with Newmark (average
+# acceleration) and HHT (alpha = -0.05), each at NormDispIncr tolerances 1e-4 and 1e-6 m. The
+# finest run (dt 0.0005, Newmark, 1e-6) is the reference; each run's error is the largest
+# relative difference from it over the reported quantities: peak and residual gaps (both joints,
+# both directions; residuals relative to the peak of the same gap, since they are near zero) and
+# peak bearing shear strains. Writes speed.csv, speed.md and speed.png in outDir (default
+# ./bridge-speed) and names the fastest run within 1 % on every quantity.
+#
+# Stability: the three cases at scales 0.5, 1.0 and 1.5 at the default settings; reports
+# completion, failed (then sub-stepped) steps and the peak bearing strain (stability.md).
+set ::bridgeLibraryOnly 1
+source [file join [file dirname [info script]] .. bridge.tcl]
+set case   [expr {$argc > 0 ? [lindex $argv 0] : "pound"}]
+set motion [expr {$argc > 1 ? [lindex $argv 1] : "auto"}]
+set outDir [expr {$argc > 2 ? [lindex $argv 2] : "bridge-speed"}]
+file mkdir $outDir
+
+proc quantities {r} {
+  set q {}
+  foreach k {gap1x gap1y gap2x gap2y} {
+    dict set q peak_$k [dict get $r peak $k]
+    dict set q residual_$k [dict get $r last $k]
+  }
+  foreach bt {2011 2012 3011 3012} { dict set q strain$bt [dict get $r peak strain$bt] }
+  return $q
+}
+proc errorOf {q ref} {
+  set worst 0.0; set which ""
+  dict for {k v} $q {
+    set rv [dict get $ref $k]
+    if {[string match residual_* $k]} {
+      set scale [expr {abs([dict get $ref peak_[string range $k 9 end]])}]
+    } else { set scale [expr {abs($rv)}] }
+    set e [expr {abs($v - $rv) / max($scale, 1e-12)}]
+    if {$e > $worst} { set worst $e; set which $k }
+  }
+  return [list $worst $which]
+}
+
+set runs {}
+set dts {0.01 0.005 0.0025 0.001 0.0005}
+set ref [runCase $case 1.0 0.0005 Newmark 1e-6 $motion]
+set refQ [quantities $ref]
+set csv [open [file join $outDir speed.csv] w]
+puts $csv "integrator,tol,dt,wall_s,steps,iterations,factorizations,failed,max_rel_error,worst_quantity"
+set best ""
+foreach integrator {Newmark HHT} {
+  foreach tol {1e-4 1e-6} {
+    foreach dt $dts {
+      if {$integrator eq "Newmark" && $tol == 1e-6 && $dt == 0.0005} { set r $ref } else {
+        set r [runCase $case 1.0 $dt $integrator $tol $motion]
+      }
+      lassign [errorOf [quantities $r] $refQ] err which
+      set st [dict get $r stats]
+      set line [format "%s,%g,%g,%.2f,%d,%d,%d,%d,%.4g,%s" $integrator $tol $dt [dict get $r wall] \
+          [dict get $st steps] [dict get $st iterations] [dict get $st factorizations] [dict get $st failedSteps] $err $which]
+      puts $csv $line; flush $csv
+      puts $line
+      lappend runs [list $integrator $tol $dt [dict get $r wall] $err $which [dict get $r completed]]
+      if {$err <= 0.01 && [dict get $r completed] && !($integrator eq "Newmark" && $tol == 1e-6 && $dt == 0.0005)} {
+        if {$best eq "" || [dict get $r wall] < [lindex $best 3]} { set best [lindex $runs end] }
+      }
+    }
+  }
+}
+close $csv
+set md [open [file join $outDir speed.md] w]
+puts $md "# Speed against error ($case case, reference: Newmark, dt 0.0005 s, tol 1e-6)\n"
+puts $md "| integrator | tol (m) | dt (s) | wall (s) | largest relative error | on |"
+puts $md "|---|---:|---:|---:|---:|---|"
+foreach r $runs {
+  lassign $r i t d w e q c
+  puts $md [format "| %s | %g | %g | %.2f | %.2f%% | %s |" $i $t $d $w [expr {100 * $e}] $q]
+}
+if {$best ne ""} {
+  puts $md "\nFastest within 1 % on every quantity: [lindex $best 0], tol [lindex $best 1], dt [lindex $best 2] s ([format %.2f [lindex $best 3]] s)."
+} else { puts $md "\nNo run other than the reference is within 1 % on every quantity." }
+puts $md "\n![wall time against error](speed.png)"
+close $md
+if {[auto_execok gnuplot] ne ""} {
+  set gp [open [file join $outDir speed.gp] w]
+  puts $gp "set terminal pngcairo size 900,600 font ',10'; set output '[file join $outDir speed.png]'"
+  puts $gp "set datafile separator ','; set logscale xy; set grid; set key bottom left"
+  puts $gp "set xlabel 'wall time (s)'; set ylabel 'largest relative error vs reference'"
+  puts $gp "set title 'Bridge case study: speed against error'"
+  set parts {}
+  set pt 5
+  foreach integrator {Newmark HHT} {
+    foreach tol {1e-4 1e-6} {
+      incr pt 2
+      lappend parts "'[file join $outDir speed.csv]' using ((strcol(1) eq '$integrator' && \$2 == $tol && \$9 > 0) ? \$4 : 1/0):9 with linespoints pt $pt title '$integrator tol $tol'"
+    }
+  }
+  lappend parts "0.01 with lines dt 2 lc rgb 'black' title '1 %'"
+  puts $gp "plot [join $parts {, }]"
+  close $gp
+  catch {exec gnuplot [file join $outDir speed.gp] 2>@1} err
+}
+if {$best ne ""} { puts "fastest within 1 %: $best" }
+
+# Stability runs at the default settings.
+set md [open [file join $outDir stability.md] w]
+puts $md "# Stability: three cases, motion scaled by 0.5, 1.0, 1.5 (defaults: $defaultIntegrator, dt $defaultDt, tol $defaultTol)\n"
+puts $md "| case | scale | completed | steps | failed steps | sub-stepped steps | iterations | peak bearing strain | failed bearings | wall (s) |"
+puts $md "|---|---:|---|---:|---:|---:|---:|---:|---:|---:|"
+foreach c {nopound pound countermeasure} {
+  foreach s {0.5 1.0 1.5} {
+    set r [runCase $c $s $defaultDt $defaultIntegrator $defaultTol $motion]
+    set st [dict get $r stats]
+    set peakStrain 0.0; set nFailed 0
+    foreach bt {2011 2012 3011 3012} {
+      set peakStrain [expr {max($peakStrain, [dict get $r peak strain$bt])}]
+      if {[dict get $r peak damage$bt] >= 2} { incr nFailed }
+    }
+    set line [format "| %s | %.1f | %s | %d | %d | %d | %d | %.0f%% | %d | %.1f |" $c $s \
+        [expr {[dict get $r completed] ? "yes" : "NO"}] [dict get $st steps] [dict get $st failedSteps] \
+        [dict get $st subSteppedSteps] [dict get $st iterations] [expr {100 * $peakStrain}] $nFailed [dict get $r wall]]
+    puts $md $line; flush $md
+    puts $line
+  }
+}
+close $md
