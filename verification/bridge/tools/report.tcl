@@ -82,6 +82,8 @@ proc writeReport {results outDir} {
     set v {}; foreach r $results { lappend v [dict get $r stats $key] }
     row $md $label - $v
   }
+  set v {}; foreach r $results { lappend v [dict get $r loosened] }
+  row $md "steps accepted at 100x the tolerance (last resort)" - $v
   set v {}; foreach r $results { lappend v [expr {[dict get $r completed] ? "yes" : "NO"}] }
   row $md "completed" - $v
 
