@@ -1,7 +1,7 @@
 # SPDX-License-Identifier: MIT
 # Speed against error of the bridge case study (issue 6) and its stability runs.
 #
-#   dabs verification/bridge/tools/speed-study.tcl ?case? ?motion? ?outDir?
+#   dabs verification/bridge/tools/speed-study.tcl ?case? ?motion? ?outDir? ?speed|stability|both?
 #
 # Speed: the case (default pound) is run at dt = 0.01 ... 0.0005 s with Newmark (average
 # acceleration) and HHT (alpha = 0.95, OpenSees convention), each at NormDispIncr tolerances 1e-4 and 1e-6 m. The
@@ -18,6 +18,7 @@ source [file join [file dirname [info script]] .. bridge.tcl]
 set case   [expr {$argc > 0 ? [lindex $argv 0] : "pound"}]
 set motion [expr {$argc > 1 ? [lindex $argv 1] : "auto"}]
 set outDir [expr {$argc > 2 ? [lindex $argv 2] : "bridge-speed"}]
+set parts  [expr {$argc > 3 ? [lindex $argv 3] : "both"}]
 file mkdir $outDir
 
 proc quantities {r} {
@@ -42,6 +43,7 @@ proc errorOf {q ref} {
   return [list $worst $which]
 }
 
+if {$parts ne "stability"} {
 set runs {}
 set dts {0.01 0.005 0.0025 0.001 0.0005}
 set ref [runCase $case 1.0 0.0005 Newmark 1e-6 $motion]
@@ -80,7 +82,7 @@ foreach r $runs {
 if {$best ne ""} {
   puts $md "\nFastest within 1 % on every quantity: [lindex $best 0], tol [lindex $best 1], dt [lindex $best 2] s ([format %.2f [lindex $best 3]] s)."
 } else { puts $md "\nNo run other than the reference is within 1 % on every quantity." }
-puts $md "\n![wall time against error](speed.png)"
+puts $md "\n!\[wall time against error\](speed.png)"
 close $md
 if {[auto_execok gnuplot] ne ""} {
   set gp [open [file join $outDir speed.gp] w]
@@ -88,36 +90,39 @@ if {[auto_execok gnuplot] ne ""} {
   puts $gp "set datafile separator ','; set logscale xy; set grid; set key bottom left"
   puts $gp "set xlabel 'wall time (s)'; set ylabel 'largest relative error vs reference'"
   puts $gp "set title 'Bridge case study: speed against error'"
-  set parts {}
+  set plotParts {}
   set pt 5
   foreach integrator {Newmark HHT} {
     foreach tol {1e-4 1e-6} {
       incr pt 2
-      lappend parts "'[file join $outDir speed.csv]' using ((strcol(1) eq '$integrator' && \$2 == $tol && \$9 > 0) ? \$4 : 1/0):9 with linespoints pt $pt title '$integrator tol $tol'"
+      lappend plotParts "'[file join $outDir speed.csv]' using ((strcol(1) eq '$integrator' && \$2 == $tol && \$9 > 0) ? \$4 : 1/0):9 with linespoints pt $pt title '$integrator tol $tol'"
     }
   }
-  lappend parts "0.01 with lines dt 2 lc rgb 'black' title '1 %'"
-  puts $gp "plot [join $parts {, }]"
+  lappend plotParts "0.01 with lines dt 2 lc rgb 'black' title '1 %'"
+  puts $gp "plot [join $plotParts {, }]"
   close $gp
   catch {exec gnuplot [file join $outDir speed.gp] 2>@1} err
 }
 if {$best ne ""} { puts "fastest within 1 %: $best" }
 
+}
+
 # Stability runs at the default settings.
+if {$parts eq "speed"} { return }
 set md [open [file join $outDir stability.md] w]
 puts $md "# Stability: three cases, motion scaled by 0.5, 1.0, 1.5 (defaults: $defaultIntegrator, dt $defaultDt, tol $defaultTol)\n"
 puts $md "| case | scale | completed | steps | failed steps | sub-stepped steps | loosened steps | iterations | peak bearing strain | failed bearings | wall (s) |"
 puts $md "|---|---:|---|---:|---:|---:|---:|---:|---:|---:|---:|"
 foreach c {nopound pound countermeasure} {
-  foreach s {0.5 1.0 1.5} {
-    set r [runCase $c $s $defaultDt $defaultIntegrator $defaultTol $motion]
+  foreach sc {0.5 1.0 1.5} {
+    set r [runCase $c $sc $defaultDt $defaultIntegrator $defaultTol $motion]
     set st [dict get $r stats]
     set peakStrain 0.0; set nFailed 0
     foreach bt {2011 2012 3011 3012} {
       set peakStrain [expr {max($peakStrain, [dict get $r peak strain$bt])}]
       if {[dict get $r peak damage$bt] >= 2} { incr nFailed }
     }
-    set line [format "| %s | %.1f | %s | %d | %d | %d | %d | %d | %.0f%% | %d | %.1f |" $c $s \
+    set line [format "| %s | %.1f | %s | %d | %d | %d | %d | %d | %.0f%% | %d | %.1f |" $c $sc \
         [expr {[dict get $r completed] ? "yes" : "NO"}] [dict get $st steps] [dict get $st failedSteps] \
         [dict get $st subSteppedSteps] [dict get $r loosened] [dict get $st iterations] [expr {100 * $peakStrain}] $nFailed [dict get $r wall]]
     puts $md $line; flush $md
