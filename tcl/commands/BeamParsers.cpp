@@ -402,9 +402,9 @@ std::unique_ptr<T> transformFor(const Runtime& rt, int tag) {
 }
 
 constexpr const char* kElasticUsage2d =
-    "element elasticBeamColumn tag iNode jNode A E Iz transfTag ?-mass m? ?-cMass?";
+    "element elasticBeamColumn tag iNode jNode A E Iz transfTag ?-mass m? ?-cMass|-lMass?";
 constexpr const char* kElasticUsage3d =
-    "element elasticBeamColumn tag iNode jNode A E G J Iy Iz transfTag ?-mass m? ?-cMass?";
+    "element elasticBeamColumn tag iNode jNode A E G J Iy Iz transfTag ?-mass m? ?-cMass|-lMass?";
 
 // element elasticBeamColumn tag i j A E Iz transfTag ?-mass m? ?-cMass?          (2D)
 // element elasticBeamColumn tag i j A E G J Iy Iz transfTag ?-mass m? ?-cMass?   (3D)
@@ -424,6 +424,7 @@ std::unique_ptr<elements::Element> parseElasticBeam(Runtime& rt, ArgReader& args
     const int transfTag = args.integer("transfTag");
     p.massPerLength = args.option("-mass", 0.0);
     p.consistentMass = args.flag("-cMass");
+  if (args.flag("-lMass")) p.consistentMass = false;  // lumped, the default
     args.finish();
     p.validate();
     return std::make_unique<elements::ElasticBeam3d>(tag, iNode, jNode, p,
@@ -437,6 +438,7 @@ std::unique_ptr<elements::Element> parseElasticBeam(Runtime& rt, ArgReader& args
   const int transfTag = args.integer("transfTag");
   p.massPerLength = args.option("-mass", 0.0);
   p.consistentMass = args.flag("-cMass");
+  if (args.flag("-lMass")) p.consistentMass = false;  // lumped, the default
   args.finish();
   p.validate();
   return std::make_unique<elements::ElasticBeam2d>(tag, iNode, jNode, p,
