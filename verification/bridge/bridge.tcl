@@ -434,6 +434,11 @@ proc runCase {case scale dt integrator tol motion {csv ""}} {
   set closed {0 0}
   set fh ""
   if {$csv ne ""} {
+    # The animated page of this case: deformed bridge, bearings by damage, closed contacts.
+    recorder Viewer -file "[file rootname $csv].html" -dT 0.05 -title "Three-span bridge: $case" \
+      -plots [list [list "girder G2 left end, longitudinal (m)" node $g2s 1 disp] \
+                   [list "PC3 bearing of G2, shear strain" ele 3011 shearStrain 1] \
+                   [list "PC2 bearing of G2, shear strain" ele 2012 shearStrain 1]]
     set fh [open $csv w]
     puts $fh "t,gap1x,gap1y,gap2x,gap2y,strain2011,strain2012,strain3011,strain3012,bx2012,by2012,bx3011,by3011,force1,force2,rot1,rot2,rot3,deck2x,deck2y"
   }

@@ -106,6 +106,11 @@ proc writeReport {results outDir} {
     puts $md "  ([expr {$tc < $tp ? "reduced, as in the paper" : "not reduced"}])."
   }
 
+  # One animated page per case, written by `recorder Viewer` (open them in a browser).
+  set pages {}
+  foreach n $names { if {[file exists [file join $outDir $n.html]]} { lappend pages "\[$n\]($n.html)" } }
+  if {[llength $pages] > 0} { puts $md "\n## See the bridge move\n\n[join $pages {, }]" }
+
   # Plots
   set plots [makePlots $names $outDir]
   if {$plots ne ""} {
