@@ -24,29 +24,7 @@
 #include "materials/section/geometry/CircPatch.h"
 #include "materials/section/geometry/StraightLayer.h"
 
-// ------------------------------------------------------------------ counting allocator
-namespace {
-std::atomic<long> gAllocations{0};
-}  // namespace
-
-// GCC 12 reports a false -Wmismatched-new-delete for a malloc-based replacement pair.
-#pragma GCC diagnostic push
-#pragma GCC diagnostic ignored "-Wmismatched-new-delete"
-void* operator new(std::size_t n) {
-  gAllocations.fetch_add(1, std::memory_order_relaxed);
-  if (void* p = std::malloc(n == 0 ? 1 : n)) return p;
-  throw std::bad_alloc();
-}
-void* operator new[](std::size_t n) {
-  gAllocations.fetch_add(1, std::memory_order_relaxed);
-  if (void* p = std::malloc(n == 0 ? 1 : n)) return p;
-  throw std::bad_alloc();
-}
-void operator delete(void* p) noexcept { std::free(p); }
-void operator delete[](void* p) noexcept { std::free(p); }
-void operator delete(void* p, std::size_t) noexcept { std::free(p); }
-void operator delete[](void* p, std::size_t) noexcept { std::free(p); }
-#pragma GCC diagnostic pop
+#include "verification/bench/CountingAllocator.h"
 
 namespace {
 
