@@ -3,7 +3,7 @@
 
 #include <memory>
 
-#include "elements/FixedSizeElement.h"
+#include "elements/beam/ElasticBeamColumn.h"
 #include "elements/transform/CrdTransf2d.h"
 
 namespace dabs::elements {
@@ -24,36 +24,17 @@ struct ElasticBeam2dParams {
 /// undeformed length L, mapped by any 2D transformation (Linear, PDelta, Corotational).
 /// Mass: lumped m L/2 on each node's translations (no rotational mass), or with -cMass the cubic
 /// consistent mass (Przemieniecki 1968, Theory of Matrix Structural Analysis, eq. 11.23).
-class ElasticBeam2d final : public FixedSizeElement<2, 3> {
+class ElasticBeam2d final : public ElasticBeamColumn<CrdTransf2d, 3> {
  public:
   using Params = ElasticBeam2dParams;
   ElasticBeam2d(int tag, int nodeI, int nodeJ, const Params& params,
                 std::unique_ptr<CrdTransf2d> transf);
 
-  std::string_view typeName() const override { return "elasticBeamColumn"; }
   void initialize(const NodalCoordinates& x) override;
-  [[nodiscard]] Status update(const Kinematics& trial) override;
-  bool isLinear() const override { return transf_->isLinear(); }
-  void commitState() override;
-  void revertToLastCommit() override;
-  void revertToStart() override;
-  std::optional<Eigen::VectorXd> response(std::span<const std::string> args) const override;
   std::string describe() const override;
 
-  /// Basic forces [N, M_i, M_j] at the last update.
-  const CrdTransf2d::Basic& basicForce() const noexcept { return q_; }
-  const CrdTransf2d& transformation() const noexcept { return *transf_; }
-
  private:
-  void formState(const Vector& u);
-
   Params params_;
-  std::unique_ptr<CrdTransf2d> transf_;
-  CrdTransf2d::BasicMatrix kb_ = CrdTransf2d::BasicMatrix::Zero();
-  CrdTransf2d::Basic q_ = CrdTransf2d::Basic::Zero();
-  bool constantCompat_ = false;  ///< B constant: k_ = k0_ + geometric part
-  Vector uTrial_ = Vector::Zero();
-  Vector uCommitted_ = Vector::Zero();
 };
 
 }  // namespace dabs::elements

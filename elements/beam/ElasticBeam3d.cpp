@@ -1,7 +1,6 @@
 // SPDX-License-Identifier: MIT
 #include "elements/beam/ElasticBeam3d.h"
 
-#include <cassert>
 #include <sstream>
 
 #include "elements/beam/ConsistentMass.h"
@@ -21,9 +20,7 @@ void ElasticBeam3dParams::validate() const {
 
 ElasticBeam3d::ElasticBeam3d(int tag, int nodeI, int nodeJ, const Params& params,
                              std::unique_ptr<CrdTransf3d> transf)
-    : FixedSizeElement(tag, {nodeI, nodeJ}), params_(params), transf_(std::move(transf)) {
-  assert(transf_);
-}
+    : ElasticBeamColumn(tag, nodeI, nodeJ, std::move(transf)), params_(params) {}
 
 void ElasticBeam3d::initialize(const NodalCoordinates& x) {
   if (x.size() != 2) throw InputError("element", "elasticBeamColumn needs 2 nodes");
@@ -37,11 +34,7 @@ void ElasticBeam3d::initialize(const NodalCoordinates& x) {
   kb_(3, 3) = kb_(4, 4) = 4.0 * e * params_.inertiaY;
   kb_(3, 4) = kb_(4, 3) = 2.0 * e * params_.inertiaY;
   kb_(5, 5) = params_.shearModulus * params_.torsion / length;
-  k0_ = transf_->initialGlobalStiffness(kb_);
-  // Linear and PDelta transformations have a constant B, so B^T kb B is formed here once and an
-  // update only adds the geometric part (nothing for Linear).
-  constantCompat_ = transf_->hasConstantCompatibility();
-  k_ = k0_;
+  initializeStiffness();
 
   m_.setZero();
   const double mass = params_.massPerLength * length;
@@ -51,57 +44,7 @@ void ElasticBeam3d::initialize(const NodalCoordinates& x) {
     m_ = transf_->globalFromLocal(
         consistentMass3d(mass, length, params_.torsion / params_.area));
   }
-  uTrial_.setZero();
-  uCommitted_.setZero();
-  formState(uTrial_);
-}
-
-void ElasticBeam3d::formState(const Vector& u) {
-  transf_->update(u);
-  q_ = kb_ * transf_->basicDeformation();
-  f_ = transf_->globalForce(q_);
-  if (!constantCompat_) {
-    k_ = transf_->globalStiffness(kb_, q_);
-  } else if (!transf_->isLinear()) {
-    k_ = k0_;
-    transf_->addGeometricStiffness(k_, q_);
-  }
-}
-
-Status ElasticBeam3d::update(const Kinematics& trial) {
-  uTrial_ = trial.u;
-  formState(uTrial_);
-  return f_.allFinite() ? Status::Ok : Status::NonFinite;
-}
-
-void ElasticBeam3d::commitState() {
-  transf_->commitState();
-  uCommitted_ = uTrial_;
-}
-
-void ElasticBeam3d::revertToLastCommit() {
-  transf_->revertToLastCommit();
-  uTrial_ = uCommitted_;
-  formState(uTrial_);
-}
-
-void ElasticBeam3d::revertToStart() {
-  transf_->revertToStart();
-  uTrial_.setZero();
-  uCommitted_.setZero();
-  formState(uTrial_);
-}
-
-std::optional<Eigen::VectorXd> ElasticBeam3d::response(std::span<const std::string> args) const {
-  if (args.empty()) return std::nullopt;
-  const std::string& name = args[0];
-  if (name == "force" || name == "forces" || name == "globalForce" || name == "globalForces")
-    return Eigen::VectorXd(f_);
-  if (name == "localForce" || name == "localForces") return Eigen::VectorXd(transf_->localForce(q_));
-  if (name == "basicForce" || name == "basicForces") return Eigen::VectorXd(q_);
-  if (name == "deformations" || name == "basicDeformation" || name == "basicDeformations")
-    return Eigen::VectorXd(transf_->basicDeformation());
-  return std::nullopt;
+  resetState();
 }
 
 std::string ElasticBeam3d::describe() const {
@@ -111,7 +54,7 @@ std::string ElasticBeam3d::describe() const {
     << params_.torsion << ", Iy " << params_.inertiaY << ", Iz " << params_.inertiaZ
     << ", geomTransf " << transf_->typeName() << " " << transf_->tag() << ", mass/length "
     << params_.massPerLength << (params_.consistentMass ? " (consistent)" : "")
-    << ", basic forces " << q_.transpose();
+    << ", basic forces " << basicForce().transpose();
   return s.str();
 }
 

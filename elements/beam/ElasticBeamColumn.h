@@ -1,0 +1,102 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include <cassert>
+#include <memory>
+#include <optional>
+#include <span>
+#include <string>
+
+#include "elements/FixedSizeElement.h"
+
+namespace dabs::elements {
+
+/// What the 2D and 3D elastic beam-columns share: basic forces q = kb v through a coordinate
+/// transformation, the stiffness formed once for transformations with a constant compatibility
+/// matrix (Linear, PDelta: only the geometric part is added per update), the trial/commit state
+/// and the responses. The derived class sets kb_ and the mass in initialize().
+template <class Transf, int Ndf>
+class ElasticBeamColumn : public FixedSizeElement<2, Ndf> {
+ public:
+  using Vector = typename FixedSizeElement<2, Ndf>::Vector;
+
+  ElasticBeamColumn(int tag, int nodeI, int nodeJ, std::unique_ptr<Transf> transf)
+      : FixedSizeElement<2, Ndf>(tag, {nodeI, nodeJ}), transf_(std::move(transf)) {
+    assert(transf_);
+  }
+
+  std::string_view typeName() const override { return "elasticBeamColumn"; }
+  bool isLinear() const override { return transf_->isLinear(); }
+
+  [[nodiscard]] Status update(const Kinematics& trial) override {
+    uTrial_ = trial.u;
+    formState(uTrial_);
+    return this->f_.allFinite() ? Status::Ok : Status::NonFinite;
+  }
+  void commitState() override {
+    transf_->commitState();
+    uCommitted_ = uTrial_;
+  }
+  void revertToLastCommit() override {
+    transf_->revertToLastCommit();
+    uTrial_ = uCommitted_;
+    formState(uTrial_);
+  }
+  void revertToStart() override {
+    transf_->revertToStart();
+    resetState();
+  }
+
+  std::optional<Eigen::VectorXd> response(std::span<const std::string> args) const override {
+    if (args.empty()) return std::nullopt;
+    const std::string& name = args[0];
+    if (name == "force" || name == "forces" || name == "globalForce" || name == "globalForces")
+      return Eigen::VectorXd(this->f_);
+    if (name == "localForce" || name == "localForces") return Eigen::VectorXd(transf_->localForce(q_));
+    if (name == "basicForce" || name == "basicForces") return Eigen::VectorXd(q_);
+    if (name == "deformations" || name == "basicDeformation" || name == "basicDeformations")
+      return Eigen::VectorXd(transf_->basicDeformation());
+    return std::nullopt;
+  }
+
+  /// Basic forces at the last update (2D: N, M_i, M_j; 3D: N, Mz_i, Mz_j, My_i, My_j, T).
+  const typename Transf::Basic& basicForce() const noexcept { return q_; }
+  const Transf& transformation() const noexcept { return *transf_; }
+
+ protected:
+  /// After kb_ is set: the initial global stiffness, formed once.
+  void initializeStiffness() {
+    this->k0_ = transf_->initialGlobalStiffness(kb_);
+    constantCompat_ = transf_->hasConstantCompatibility();
+    this->k_ = this->k0_;
+  }
+  /// Zero displacement, state formed from it.
+  void resetState() {
+    uTrial_.setZero();
+    uCommitted_.setZero();
+    formState(uTrial_);
+  }
+
+  std::unique_ptr<Transf> transf_;
+  typename Transf::BasicMatrix kb_ = Transf::BasicMatrix::Zero();
+
+ private:
+  void formState(const Vector& u) {
+    transf_->update(u);
+    q_ = kb_ * transf_->basicDeformation();
+    this->f_ = transf_->globalForce(q_);
+    if (!constantCompat_) {
+      this->k_ = transf_->globalStiffness(kb_, q_);
+    } else if (!transf_->isLinear()) {
+      this->k_ = this->k0_;
+      transf_->addGeometricStiffness(this->k_, q_);
+    }
+  }
+
+  typename Transf::Basic q_ = Transf::Basic::Zero();
+  bool constantCompat_ = false;  ///< B constant: k_ = k0_ + geometric part
+  Vector uTrial_ = Vector::Zero();
+  Vector uCommitted_ = Vector::Zero();
+};
+
+}  // namespace dabs::elements
