@@ -26,14 +26,15 @@ void YoshidaBearing3d::Params::validate() const {
   requireFinite(Tr, "Tr");
   requireFinite(Kv, "Kv");
   requireFinite(Kt, "Kt");
-  requireFinite(Kr, "Kr");
+  requireFinite(Kry, "Kr");
+  requireFinite(Krz, "Kr");
   requireFinite(mass, "mass");
   requireFinite(designLimit, "design");
   requireFinite(failureLimit, "failure");
   if (Tr <= 0.0) throw InputError("Tr", "must be positive");
   if (Kv <= 0.0) throw InputError("Kv", "must be positive");
   if (Kt < 0.0) throw InputError("Kt", "must not be negative");
-  if (Kr < 0.0) throw InputError("Kr", "must not be negative");
+  if (Kry < 0.0 || Krz < 0.0) throw InputError("Kr", "must not be negative");
   if (mass < 0.0) throw InputError("mass", "must not be negative");
   if (designLimit <= 0.0) throw InputError("design", "must be positive");
   if (failureLimit < designLimit) throw InputError("failure", "must not be below the design limit");
@@ -111,8 +112,8 @@ Status YoshidaBearing3d::update(const Kinematics& trial) {
   BasicMatrix kb = BasicMatrix::Zero();
   kb(0, 0) = p_.Kv;
   kb(3, 3) = p_.Kt;
-  kb(4, 4) = p_.Kr;
-  kb(5, 5) = p_.Kr;
+  kb(4, 4) = p_.Kry;
+  kb(5, 5) = p_.Krz;
   Basic q = kb * t.deformation;
   if (!released()) {
     const Status s = material_->setTrialStrain(u, rate, trial.dt);
@@ -154,8 +155,8 @@ void YoshidaBearing3d::revertToStart() {
   BasicMatrix kb = BasicMatrix::Zero();
   kb(0, 0) = p_.Kv;
   kb(3, 3) = p_.Kt;
-  kb(4, 4) = p_.Kr;
-  kb(5, 5) = p_.Kr;
+  kb(4, 4) = p_.Kry;
+  kb(5, 5) = p_.Krz;
   kb.block<2, 2>(1, 1) = material_->getInitialTangent();
   assemble(Basic::Zero(), kb);
 }
@@ -192,7 +193,7 @@ std::optional<Eigen::VectorXd> YoshidaBearing3d::response(std::span<const std::s
 std::string YoshidaBearing3d::describe() const {
   std::ostringstream out;
   out << Element::describe() << " material " << material_->tag() << " Tr " << p_.Tr << " Kv "
-      << p_.Kv << " Kt " << p_.Kt << " Kr " << p_.Kr << " mass " << p_.mass << " limits "
+      << p_.Kv << " Kt " << p_.Kt << " Kr " << p_.Kry << " " << p_.Krz << " mass " << p_.mass << " limits "
       << p_.designLimit << " " << p_.failureLimit << " afterFailure "
       << (p_.afterFailure == AfterFailure::Keep ? "keep" : "release") << " damage " << damage();
   return out.str();

@@ -22,7 +22,7 @@ namespace dabs::elements {
 ///   shear y  d1 = u_jy - u_iy - L (th_iz + th_jz)/2           (Vy, Vz) from the bi-axial material
 ///   shear z  d2 = u_jz - u_iz + L (th_iy + th_jy)/2            with U = (d1, d2)
 ///   torsion  d3 = th_jx - th_ix                                T  = Kt d3
-///   rocking  d4 = th_jy - th_iy,  d5 = th_jz - th_iz           My = Kr d4, Mz = Kr d5
+///   rocking  d4 = th_jy - th_iy,  d5 = th_jz - th_iz           My = Kry d4, Mz = Krz d5
 /// The nodal forces are B^T q, so the moment L V of the shear force over the bearing's height is
 /// shared equally between its ends and every rigid-body motion gives zero deformation.
 ///
@@ -44,7 +44,8 @@ class YoshidaBearing3d final : public FixedSizeElement<2, 6> {
     double Tr = 0.0;   ///< total rubber thickness (length), for the shear strain |U|/Tr
     double Kv = 0.0;   ///< axial stiffness (force/length)
     double Kt = 0.0;   ///< torsional stiffness (moment/radian)
-    double Kr = 0.0;   ///< rocking stiffness about local y and z (moment/radian)
+    double Kry = 0.0;  ///< rocking stiffness about local y (moment/radian)
+    double Krz = 0.0;  ///< rocking stiffness about local z (moment/radian)
     std::optional<Eigen::Vector3d> orientX;  ///< local x (global frame), with orientY
     std::optional<Eigen::Vector3d> orientY;  ///< vector in the local x-y plane (global frame)
     double mass = 0.0;            ///< total mass, lumped half to each node's translations

@@ -30,7 +30,8 @@ constexpr double kU0 = 0.02;    // m
 constexpr double kTr = 0.2;     // m
 constexpr double kKv = 2.0e6;   // kN/m
 constexpr double kKt = 500.0;   // kN m/rad
-constexpr double kKr = 8000.0;  // kN m/rad
+constexpr double kKry = 8000.0;   // kN m/rad, about local y
+constexpr double kKrz = 20000.0;  // kN m/rad, about local z
 constexpr double kFdRelTol = 1e-5;
 constexpr double kZeroForce = 1e-9;  // kN, rigid-body force tolerance
 
@@ -55,7 +56,8 @@ YoshidaBearing3d::Params element() {
   p.Tr = kTr;
   p.Kv = kKv;
   p.Kt = kKt;
-  p.Kr = kKr;
+  p.Kry = kKry;
+  p.Krz = kKrz;
   return p;
 }
 
@@ -114,6 +116,24 @@ TEST(YoshidaBearing3dTest, DefaultAxesForCoincidentNodes) {
   ASSERT_TRUE(ok(e->update(s.kinematics())));
   EXPECT_NEAR(e->resistingForce()(8), kKv * d, 1e-9 * kKv * d);
   EXPECT_NEAR(e->resistingForce()(2), -kKv * d, 1e-9 * kKv * d);
+}
+
+TEST(YoshidaBearing3dTest, RockingStiffnessPerLocalAxis) {
+  // Coincident nodes: local y = global X, local z = global Y. A relative rotation theta of node j
+  // about global X is rocking about local y (M = Kry theta), about global Y rocking about local z
+  // (M = Krz theta); no shear, so no other force.
+  auto e = make(kCoincidentNodes);
+  TrialState s = zeroState();
+  const double theta = 1e-4;
+  s.u(9) = theta;  // node j, rotation about global X
+  ASSERT_TRUE(ok(e->update(s.kinematics())));
+  EXPECT_NEAR(e->resistingForce()(9), kKry * theta, 1e-12 * kKry);
+  EXPECT_NEAR(e->resistingForce()(3), -kKry * theta, 1e-12 * kKry);
+  s.u.setZero();
+  s.u(10) = theta;  // about global Y
+  ASSERT_TRUE(ok(e->update(s.kinematics())));
+  EXPECT_NEAR(e->resistingForce()(10), kKrz * theta, 1e-12 * kKrz);
+  EXPECT_NEAR(e->resistingForce()(9), 0.0, 1e-12 * kKrz);
 }
 
 TEST(YoshidaBearing3dTest, ShearMomentIsSharedBetweenEnds) {
@@ -316,7 +336,10 @@ TEST(YoshidaBearing3dTest, ValidateAndInitializeRejectBadInput) {
   p.Kt = -1.0;
   expectField(p, "Kt");
   p = element();
-  p.Kr = NAN;
+  p.Kry = NAN;
+  expectField(p, "Kr");
+  p = element();
+  p.Krz = -1.0;
   expectField(p, "Kr");
   p = element();
   p.mass = -1.0;

@@ -18,7 +18,7 @@ constexpr const char* kBiaxialUsage = "biaxialMaterial type tag ...";
 constexpr const char* kYoshidaUsage =
     "biaxialMaterial Yoshida tag Y0 U0 n alpha0 beta q gamma ?-maxwell k eta?";
 constexpr const char* kBearingUsage =
-    "element yoshidaBearing tag iNode jNode matTag -Tr Tr -Kv Kv ?-Kt Kt? ?-Kr Kr? "
+    "element yoshidaBearing tag iNode jNode matTag -Tr Tr -Kv Kv ?-Kt Kt? ?-Kr Kr ?Krz?? "
     "?-orient x1 x2 x3 y1 y2 y3? ?-mass m? ?-limits design failure? ?-afterFailure keep|release?";
 
 // biaxialMaterial Yoshida tag Y0 U0 n alpha0 beta q gamma ?-maxwell k eta?
@@ -55,7 +55,7 @@ void biaxialMaterialCommand(Runtime& rt, ArgReader& args) {
   Tcl_SetObjResult(rt.interp, Tcl_NewIntObj(tag));
 }
 
-// element yoshidaBearing tag iNode jNode matTag -Tr Tr -Kv Kv ?-Kt Kt? ?-Kr Kr?
+// element yoshidaBearing tag iNode jNode matTag -Tr Tr -Kv Kv ?-Kt Kt? ?-Kr Kr ?Krz??
 //   ?-orient x1 x2 x3 y1 y2 y3? ?-mass m? ?-limits design failure? ?-afterFailure keep|release?
 std::unique_ptr<elements::Element> parseYoshidaBearing(Runtime& rt, ArgReader& args, int tag) {
   using elements::YoshidaBearing3d;
@@ -67,7 +67,14 @@ std::unique_ptr<elements::Element> parseYoshidaBearing(Runtime& rt, ArgReader& a
   const auto tr = args.optionalOption("-Tr");
   const auto kv = args.optionalOption("-Kv");
   p.Kt = args.option("-Kt", 0.0);
-  p.Kr = args.option("-Kr", 0.0);
+  // -Kr Kr: the same rocking stiffness about local y and z; -Kr Kry Krz: one per axis (a pair
+  // of bearings under a girder end resists roll far more than the end's bending rotation).
+  if (auto kr = args.optionRealList("-Kr")) {
+    if (kr->size() > 2) args.fail("-Kr takes one value (both axes) or two (local y, local z), got " +
+                                  std::to_string(kr->size()));
+    p.Kry = kr->front();
+    p.Krz = kr->back();
+  }
   if (auto orient = args.optionReals("-orient", 6)) {
     const auto& v = *orient;
     p.orientX = Eigen::Vector3d(v[0], v[1], v[2]);

@@ -135,7 +135,7 @@ void elementBench(benchmark::State& state, bool maxwell) {
   ep.Tr = 0.2;
   ep.Kv = 2.0e6;
   ep.Kt = 500.0;
-  ep.Kr = 8000.0;
+  ep.Kry = ep.Krz = 8000.0;
   ep.failureLimit = 1e6;  // stay on the material path, no release
   ep.designLimit = 1e6;
   ep.validate();

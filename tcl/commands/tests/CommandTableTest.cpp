@@ -181,4 +181,20 @@ TEST_F(CommandTableTest, PathSeriesWithTimesGivesLastValueAtLastTime) {
   EXPECT_NEAR(number("nodeDisp 2 1"), 0.0, 1e-12);
 }
 
+TEST_F(CommandTableTest, YoshidaBearingTakesOneOrTwoRockingStiffnesses) {
+  // Coincident nodes: local y = global X, local z = global Y, so a moment M about X turns node 2
+  // by M / Kry and about Y by M / Krz.
+  ok("model basic -ndm 3 -ndf 6; node 1 0 0 0; node 2 0 0 0; fix 1 1 1 1 1 1 1");
+  ok("biaxialMaterial Yoshida 1 300.0 0.02 2.0 0.0 0.0 1.0 0.0");
+  EXPECT_NE(error("element yoshidaBearing 1 1 2 1 -Tr 0.2 -Kv 1e6 -Kt 50.0 -Kr 1 2 3").find("-Kr takes one value"),
+            std::string::npos);
+  EXPECT_NE(error("element yoshidaBearing 1 1 2 1 -Tr 0.2 -Kv 1e6 -Kt 50.0 -Kr -1").find("Kr"), std::string::npos);
+  ok("element yoshidaBearing 1 1 2 1 -Tr 0.2 -Kv 1e6 -Kt 50.0 -Kr 100.0 400.0");
+  ok("timeSeries Linear 1; pattern Plain 1 1 { load 2 0 0 0 2.0 3.0 0 }");
+  ok("system FullGeneral; test NormDispIncr 1e-12 10; algorithm Newton; integrator LoadControl 1.0; analysis Static");
+  EXPECT_EQ(number("analyze 1"), 0.0);
+  EXPECT_NEAR(number("nodeDisp 2 4"), 2.0 / 100.0, 1e-12);
+  EXPECT_NEAR(number("nodeDisp 2 5"), 3.0 / 400.0, 1e-12);
+}
+
 }  // namespace dabs::tcl::testing
