@@ -136,6 +136,7 @@ Status AnalysisBuilder::analyzeStep(double dt) {
     return s;
   }
   ++stats_.steps;
+  stats_.equations = model_->numEquations();
   return Status::Ok;
 }
 

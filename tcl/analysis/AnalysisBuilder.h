@@ -22,6 +22,7 @@ struct AnalysisStatistics {
   long subSteppedSteps = 0;   ///< steps that were recovered by sub-stepping
   long iterations = 0;        ///< algorithm iterations
   long factorizations = 0;    ///< numeric factorisations
+  long equations = 0;         ///< equations of the last committed step (free dofs after constraints)
 };
 
 /// The analysis strategy of one interpreter (style.md section 4: one per Runtime, no globals):

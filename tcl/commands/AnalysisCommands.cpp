@@ -262,7 +262,8 @@ void analysisStatisticsCmd(Runtime& rt, ArgReader& a) {
   const auto& s = rt.analysis->statistics();
   const std::string text = "steps " + std::to_string(s.steps) + " failedSteps " + std::to_string(s.failedSteps) +
                            " subSteppedSteps " + std::to_string(s.subSteppedSteps) + " iterations " +
-                           std::to_string(s.iterations) + " factorizations " + std::to_string(s.factorizations);
+                           std::to_string(s.iterations) + " factorizations " + std::to_string(s.factorizations) +
+                           " equations " + std::to_string(s.equations);
   setResult(rt, text);
 }
 

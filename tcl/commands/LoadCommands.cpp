@@ -182,6 +182,20 @@ void getTimeCmd(Runtime& rt, ArgReader& a) {
   setResult(rt, rt.domain.committedTime());
 }
 
+// getLoadFactor patternTag: the pattern's factor at the current time. For a UniformExcitation
+// pattern that is the ground acceleration (series times -fact), the value the analysis multiplies
+// by -M r; an energy balance needs it for the input work.
+void getLoadFactorCmd(Runtime& rt, ArgReader& a) {
+  const int tag = a.integer("patternTag");
+  a.finish();
+  const domain::LoadPattern* p = rt.domain.findPattern(tag);
+  if (p == nullptr) a.fail(1, "patternTag", "load pattern " + std::to_string(tag) + " does not exist");
+  if (p->kind() == domain::LoadPattern::Kind::MultipleSupport)
+    a.fail(1, "patternTag", "pattern " + std::to_string(tag) +
+                                " is MultipleSupport, whose ground motions have no single factor");
+  setResult(rt, p->factor(rt.domain.time()));
+}
+
 void removeCmd(Runtime& rt, ArgReader& a) {
   const std::string what = a.word("what");
   if (what == "recorders") {
@@ -255,6 +269,7 @@ constexpr CommandEntry kCommands[] = {
     {"loadConst", "loadConst ?-time t?", loadConstCmd},
     {"setTime", "setTime t", setTimeCmd},
     {"getTime", "getTime", getTimeCmd},
+    {"getLoadFactor", "getLoadFactor patternTag", getLoadFactorCmd},
     {"remove", "remove element|node|loadPattern|timeSeries|sp|recorder|recorders ?tag? ?dof?", removeCmd},
     {"rayleigh", "rayleigh alphaM betaK betaKinit betaKcomm", rayleighCmd},
     {"modalDamping", "modalDamping zeta ?zeta2 ...?", modalDampingCmd},

@@ -71,7 +71,7 @@ void eleResponseCmd(Runtime& rt, ArgReader& a) {
   const elements::Element* e = rt.domain.findElement(tag);
   if (e == nullptr) a.fail(1, "eleTag", "element " + std::to_string(tag) + " does not exist");
   if (args.empty()) a.fail("needs a response name");
-  const auto r = e->response(args);
+  const auto r = rt.domain.elementResponse(tag, args);
   if (!r) {
     std::string what;
     for (const auto& w : args) what += (what.empty() ? "" : " ") + w;

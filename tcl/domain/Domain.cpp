@@ -272,26 +272,43 @@ Eigen::VectorXd Domain::nodalLoad(int nodeTag) const {
   return p;
 }
 
+Eigen::VectorXd Domain::gatherElement(const elements::Element& e, Eigen::VectorXd Node::*field) const {
+  Eigen::VectorXd out(e.numDof());
+  Eigen::Index offset = 0;
+  for (int nt : e.nodeTags()) {
+    const Node& n = nodes_.at(nt);
+    out.segment(offset, n.ndf()) = n.*field;
+    offset += n.ndf();
+  }
+  return out;
+}
+
+Eigen::VectorXd Domain::elementRayleighForce(int elementTag) const {
+  const elements::Element* e = findElement(elementTag);
+  if (e == nullptr) throw InputError("eleTag", "element " + std::to_string(elementTag) + " does not exist");
+  const RayleighFactors r = elementRayleigh(elementTag);
+  // The same rule as the analysis (AnalysisModel): factors set on the element and accepted by it.
+  if (!r.any() || !e->rayleighByDefault()) return Eigen::VectorXd::Zero(e->numDof());
+  const Eigen::VectorXd v = gatherElement(*e, &Node::vel);
+  return (r.alphaM * e->mass() + r.betaK * e->tangentStiff() + r.betaK0 * e->initialStiff() +
+          r.betaKc * e->committedStiff()) * v;
+}
+
+std::optional<Eigen::VectorXd> Domain::elementResponse(int elementTag,
+                                                       std::span<const std::string> args) const {
+  const elements::Element* e = findElement(elementTag);
+  if (e == nullptr || args.empty()) return std::nullopt;
+  if (args.size() == 1 && (args[0] == "dampingForces" || args[0] == "dampingForce" ||
+                           args[0] == "rayleighForces" || args[0] == "RayleighForces"))
+    return elementRayleighForce(elementTag);
+  return e->response(args);
+}
+
 void Domain::calculateNodalReactions(bool includeInertia) {
   for (auto& [tag, n] : nodes_) n.reaction = -nodalLoad(tag);
   for (const auto& [etag, e] : elements_) {
     Eigen::VectorXd f = e->resistingForce();
-    if (includeInertia) {
-      Eigen::Index offset = 0;
-      Eigen::VectorXd a(e->numDof()), v(e->numDof());
-      for (int nt : e->nodeTags()) {
-        const Node& n = nodes_.at(nt);
-        a.segment(offset, n.ndf()) = n.accel;
-        v.segment(offset, n.ndf()) = n.vel;
-        offset += n.ndf();
-      }
-      f += e->mass() * a;
-      const RayleighFactors r = elementRayleigh(etag);
-      if (r.any() && e->rayleighByDefault()) {
-        f += (r.alphaM * e->mass() + r.betaK * e->tangentStiff() + r.betaK0 * e->initialStiff() +
-              r.betaKc * e->committedStiff()) * v;
-      }
-    }
+    if (includeInertia) f += e->mass() * gatherElement(*e, &Node::accel) + elementRayleighForce(etag);
     Eigen::Index offset = 0;
     for (int nt : e->nodeTags()) {
       Node& n = nodes_.at(nt);

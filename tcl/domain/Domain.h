@@ -4,6 +4,9 @@
 #include <Eigen/Core>
 #include <map>
 #include <memory>
+#include <optional>
+#include <span>
+#include <string>
 #include <vector>
 
 #include "elements/Element.h"
@@ -86,6 +89,14 @@ class Domain {
   RayleighFactors elementRayleigh(int elementTag) const;
   /// Rayleigh mass factor of a node.
   double nodeAlphaM(int nodeTag) const;
+  /// Rayleigh damping force of an element at the current state, (alphaM M + betaK K + betaK0 K0 +
+  /// betaKc Kc) v in the element's global dofs; zero when the element has no Rayleigh damping.
+  /// Throws InputError("eleTag") when the element does not exist.
+  Eigen::VectorXd elementRayleighForce(int elementTag) const;
+  /// A named element response: the element's own responses, plus `dampingForces` (also
+  /// `dampingForce`, `rayleighForces`, `RayleighForces`, as in OpenSees), the Rayleigh force,
+  /// which the domain forms. nullopt when the element or the name is unknown.
+  std::optional<Eigen::VectorXd> elementResponse(int elementTag, std::span<const std::string> args) const;
   /// Modal damping ratio per mode (empty when none).
   std::vector<double> modalDamping;
 
@@ -136,6 +147,8 @@ class Domain {
   std::map<int, std::unique_ptr<LoadPattern>> patterns_;
   std::map<int, RayleighFactors> elementRayleigh_;
   std::map<int, double> nodeAlphaM_;
+  /// An element's slice of a nodal vector (disp, vel, accel), node by node.
+  Eigen::VectorXd gatherElement(const elements::Element& e, Eigen::VectorXd Node::*field) const;
   std::map<int, std::unique_ptr<Recorder>> recorders_;
   int nextRecorderTag_ = 0;
   double time_ = 0.0;

@@ -19,7 +19,7 @@ void ElementRecorder::initialize(const Domain& domain) {
   for (int tag : elements_) {
     const elements::Element* e = domain.findElement(tag);
     if (e == nullptr) throw InputError("-ele", "element " + std::to_string(tag) + " does not exist");
-    const auto r = e->response(response_);
+    const auto r = domain.elementResponse(tag, response_);
     if (!r) {
       std::string what;
       for (const auto& w : response_) what += (what.empty() ? "" : " ") + w;
@@ -34,7 +34,7 @@ void ElementRecorder::values(const Domain& domain, std::vector<double>& out) {
   for (std::size_t k = 0; k < elements_.size(); ++k) {
     const elements::Element* e = domain.findElement(elements_[k]);
     std::optional<Eigen::VectorXd> r;
-    if (e != nullptr) r = e->response(response_);
+    if (e != nullptr) r = domain.elementResponse(elements_[k], response_);
     for (Eigen::Index i = 0; i < sizes_[k]; ++i)
       out.push_back(r && i < r->size() ? (*r)(i) : 0.0);
   }

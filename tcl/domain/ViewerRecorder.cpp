@@ -186,7 +186,7 @@ void ViewerRecorder::initialize(const Domain& domain) {
     if (e == nullptr)
       throw InputError("-plots", "\"" + p.label + "\": element " + std::to_string(p.tag) +
                                      " does not exist");
-    const auto r = e->response(p.response);
+    const auto r = domain.elementResponse(p.tag, p.response);
     if (!r || p.component < 0 || p.component >= r->size())
       throw InputError("-plots", "\"" + p.label + "\": element " + std::to_string(p.tag) + " (" +
                                      std::string(e->typeName()) +
@@ -220,8 +220,8 @@ void ViewerRecorder::record(const Domain& domain) {
     double v = 0.0;
     if (p.source == ViewerPlot::Source::Node) {
       if (const Node* n = domain.findNode(p.tag)) v = nodeValue(*n, p.dof, p.quantity);
-    } else if (const elements::Element* e = domain.findElement(p.tag)) {
-      const auto r = e->response(p.response);
+    } else if (domain.findElement(p.tag) != nullptr) {
+      const auto r = domain.elementResponse(p.tag, p.response);
       if (r && p.component < r->size()) v = (*r)(p.component);
     }
     plotValues_.push_back(v);

@@ -1,8 +1,11 @@
 // SPDX-License-Identifier: MIT
 // Error paths of the model, load and analysis commands: every bad input is a Tcl error naming the
 // command and argument, and leaves the model unchanged.
+#include <cmath>
 #include <fstream>
+#include <iterator>
 #include <sstream>
+#include <vector>
 
 #include "tcl/commands/tests/TclFixture.h"
 
@@ -179,6 +182,44 @@ TEST_F(CommandTableTest, PathSeriesWithTimesGivesLastValueAtLastTime) {
   EXPECT_NEAR(number("nodeDisp 2 1"), 3.0, 1e-12);
   ok("analyze 1");
   EXPECT_NEAR(number("nodeDisp 2 1"), 0.0, 1e-12);
+}
+
+TEST_F(CommandTableTest, DampingForcesResponseIsTheElementRayleighForce) {
+  // Axial bar (2D elastic beam, lumped mass m L / 2 per node) pushed along its axis: only the
+  // axial velocity of node 2 is non-zero, so the Rayleigh force of the element is
+  // (alphaM m L / 2 + betaK0 E A / L) v at node 2, dof 1, and -betaK0 E A / L v at node 1, dof 1.
+  const double E = 200.0, A = 3.0, L = 2.0, m = 0.5, alphaM = 0.3, betaK0 = 0.01;
+  ok("model basic -ndm 2 -ndf 3; node 1 0 0; node 2 2.0 0; fix 1 1 1 1; fix 2 0 1 1");
+  ok("geomTransf Linear 1; element elasticBeamColumn 1 1 2 3.0 200.0 1.0 1 -mass 0.5");
+  ok("uniaxialMaterial Elastic 9 50.0; element zeroLength 2 1 2 -mat 9 -dir 1");
+  ok("rayleigh 0.3 0.0 0.01 0.0");
+  ok("timeSeries Constant 1; pattern Plain 1 1 { load 2 10.0 0 0 }");
+  ok("system FullGeneral; test NormDispIncr 1e-12 10; algorithm Newton; integrator Newmark 0.5 0.25");
+  ok("analysis Transient");
+  EXPECT_EQ(number("analyze 3 0.01"), 0.0);
+  const double v = number("nodeVel 2 1");
+  ASSERT_GT(std::abs(v), 1e-6);
+  std::istringstream f(ok("eleResponse 1 dampingForces"));
+  std::vector<double> values{std::istream_iterator<double>(f), std::istream_iterator<double>()};
+  ASSERT_EQ(values.size(), 6u);
+  EXPECT_NEAR(values[3], (alphaM * m * L / 2.0 + betaK0 * E * A / L) * v, 1e-12);
+  EXPECT_NEAR(values[0], -betaK0 * E * A / L * v, 1e-12);
+  for (int i : {1, 2, 4, 5}) EXPECT_NEAR(values[i], 0.0, 1e-12);
+  EXPECT_EQ(ok("eleResponse 1 rayleighForces"), ok("eleResponse 1 dampingForces"));
+  // A zeroLength declines Rayleigh damping (OpenSees' default): its damping force is zero.
+  EXPECT_EQ(ok("eleResponse 2 dampingForces"), "0.0 0.0 0.0 0.0 0.0 0.0");
+  EXPECT_NE(error("eleResponse 7 dampingForces").find("element 7 does not exist"), std::string::npos);
+}
+
+TEST_F(CommandTableTest, GetLoadFactorGivesSeriesTimesFactor) {
+  ok("model basic -ndm 1 -ndf 1; node 1 0.0; node 2 0.0 -mass 1.0; fix 1 1");
+  ok("timeSeries Path 1 -dt 0.1 -values {0 1 2} -factor 9.81; timeSeries Linear 2");
+  ok("pattern UniformExcitation 1 1 -accel 1 -fact 2.0; pattern Plain 2 2 { load 2 1.0 }");
+  ok("setTime 0.15");
+  EXPECT_NEAR(number("getLoadFactor 1"), 2.0 * 9.81 * 1.5, 1e-12);  // linear interpolation
+  EXPECT_NEAR(number("getLoadFactor 2"), 0.15, 1e-15);
+  EXPECT_NE(error("getLoadFactor 3").find("load pattern 3 does not exist"), std::string::npos);
+  EXPECT_NE(error("getLoadFactor").find("patternTag"), std::string::npos);
 }
 
 TEST_F(CommandTableTest, YoshidaBearingTakesOneOrTwoRockingStiffnesses) {
