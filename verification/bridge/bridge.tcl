@@ -28,6 +28,8 @@
 #   damping      stiffness-proportional Rayleigh damping on the piers and girders only; bearings,
 #                contact and the restrainers decline Rayleigh damping; foundation dashpots
 #   motion       one horizontal component applied at angle $motionAngle to the bridge axis
+#   stepping     dt, shortened to at most $contactDt while a joint is closed or closing and cut at
+#                each predicted first contact (nextStepLength)
 
 # ---------------------------------------------------------------------------------------------
 # Parameters
@@ -99,6 +101,7 @@ set restitution 0.65
 set frictionS 0.5
 set frictionK 0.4
 set contactSearch 0.5       ;# m, pairs further apart cost one bounding-sphere test
+set contactInset 0.25       ;# m, contactor points sit this far inside the face edges (see below)
 
 # Countermeasure at each joint: cable restrainers and rubber bumpers, in X and in Y
 set restrainerK 4.0e4       ;# kN/m
@@ -119,18 +122,22 @@ set recordFile [file normalize [file join [file dirname [info script]] .. .. .. 
 set pulseTp 1.612; set pulseVp 1.179; set pulseGamma 1.923; set pulseNu 1.792; set pulseT0 5.762
 set duration 20.0           ;# s of analysis
 
-# Analysis defaults (chosen by tools/speed-study.tcl: fastest run within 1 % of the reference)
-set defaultDt 0.01
-set defaultTol 1.0e-6
+# Analysis defaults, chosen by tools/speed-study.tcl (results in tools/results/speed.md): the
+# fastest run within 1 % of the reference (dt 0.0005 s, tol 1e-6) on every reported quantity
+set defaultDt 0.005
+set defaultTol 1.0e-4
 set defaultIntegrator Newmark
+set contactDt 0.0005        ;# s, longest step while a joint is closed or closing (nextStepLength)
+set contactLookahead 2.0    ;# steps: sub-step when the gap would close within this many steps
+set contactOvershoot 1.2    ;# a step cut at a predicted first contact ends at 1.2 x that time
 
 # ---------------------------------------------------------------------------------------------
 # Model
 # ---------------------------------------------------------------------------------------------
 # Node numbers: pier p: 1000p + {1 ground, 2 base, 3 top of hinge, 4 mid, 5 top}, bearing
 # bottoms 1000p + {11 left, 12 right}; girder s: 10000s + {1 .. n} along the axis, bearing tops
-# 10000s + {51 start, 52 end}, face corners 10000s + {61..64 start, 71..74 end}, device nodes
-# 10000s + {81 start, 82 end}. Element numbers: pier p 1000p + {1 foundation, 2 hinge, 3, 4},
+# 10000s + {51 start, 52 end}, face corners 10000s + {61..64 start, 71..74 end}, contactor points
+# 10000s + {65..68 start, 75..78 end}, device nodes 10000s + {81 start, 82 end}. Element numbers: pier p 1000p + {1 foundation, 2 hinge, 3, 4},
 # bearings 1000p + {11, 12}, girder s 10000s + i, pounding 50000 + 100j, devices 60000 + 10j.
 
 proc pierX {p} { return [expr {($p - 1) * $::spanLength}] }
@@ -139,7 +146,6 @@ proc buildModel {case} {
   foreach v [info globals] { if {$v ne "case" && ![string match tcl* $v] && ![string match auto* $v]} { global $v } }
   wipe
   model basic -ndm 3 -ndf 6
-  set ::elementWeight [dict create]
 
   # --- derived section and foundation properties ---
   set Ag [expr {$pi * $pierD * $pierD / 4.0}]
@@ -172,11 +178,14 @@ proc buildModel {case} {
   set U0 [expr {$u0 * $bearingTr}]
   set Ec [expr {3.0 * $rubberG * (1.0 + 2.0 * 0.8 * $shapeFactor * $shapeFactor)}]
   set bearingKv [expr {$Ec * $bearingArea / $bearingTr}]
-  # rotation (both horizontal axes, one value in yoshidaBearing): between the free bending
-  # rotation of the pads ((Ec/3) I / Tr ~ 1.7e5 kNm/rad) and the roll stiffness of the bearing
-  # pair (Kv arm^2 ~ 3.5e7); 1e6 keeps the girder roll stable and restrains its end bending
-  # rotation by ~6 % of 4EI/L (dead-load reactions within 1 %, statics-periods.tcl)
-  set bearingKr 1.0e6
+  # rocking of one girder end on its pair of bearings (-Kr Kry Krz; local y = X, local z = Y):
+  # roll about the bridge axis X is carried by the two bearings' axial springs at +-arm,
+  # Kv arm^2; the end's bending rotation about Y by the pads' own bending, (Ec/3) I / Tr, with
+  # Ec/3 = E (1 + 2/3 kappa S^2) the bending modulus of a bonded layer (Gent) and I that of two
+  # square pads of half the area each
+  set bearingKroll [expr {$bearingKv * $bearingRollArm * $bearingRollArm}]
+  set padSide [expr {sqrt(0.5 * $bearingArea)}]
+  set bearingKbend [expr {$Ec / 3.0 * 2.0 * pow($padSide, 4) / 12.0 / $bearingTr}]
   set bearingKt [expr {$Y0 / $U0 * $bearingRollArm * $bearingRollArm}]
   set spanMass [expr {$girderMass * ($spanLength - 2.0 * 0.5 * $jointGap)}]
   # Isolated period estimate (deck on the initial bearing stiffness) for the foundation dashpots.
@@ -220,26 +229,28 @@ proc buildModel {case} {
     set b [expr {1000 * $p}]
     set H [lindex $pierHeights [expr {$p - 1}]]
     set z0 [expr {$zTop - $H}]
+    # Pier mass lumped at the nodes, half of each segment to its end nodes (what a lumped element
+    # mass gives), so that every mass is a nodal mass: the dead load, the ground-motion input -M r
+    # a_g and the energy balance (energy.tcl) then read it with nodeMass.
+    set lSeg [expr {0.5 * ($H - $hingeLength)}]
+    set m2 [expr {$footingMass + 0.5 * $pierMass * $hingeLength}]
+    set m3 [expr {0.5 * $pierMass * ($hingeLength + $lSeg)}]
+    set m4 [expr {$pierMass * $lSeg}]
+    set m5 [expr {$capMass + 0.5 * $pierMass * $lSeg}]
     node [expr {$b + 1}] $x 0.0 $z0
-    node [expr {$b + 2}] $x 0.0 $z0 -mass $footingMass $footingMass $footingMass 0.0 0.0 0.0
-    node [expr {$b + 3}] $x 0.0 [expr {$z0 + $hingeLength}]
-    node [expr {$b + 4}] $x 0.0 [expr {0.5 * ($z0 + $hingeLength + $zTop)}]
-    node [expr {$b + 5}] $x 0.0 $zTop -mass $capMass $capMass $capMass 0.0 0.0 0.0
+    node [expr {$b + 2}] $x 0.0 $z0 -mass $m2 $m2 $m2 0.0 0.0 0.0
+    node [expr {$b + 3}] $x 0.0 [expr {$z0 + $hingeLength}] -mass $m3 $m3 $m3 0.0 0.0 0.0
+    node [expr {$b + 4}] $x 0.0 [expr {0.5 * ($z0 + $hingeLength + $zTop)}] -mass $m4 $m4 $m4 0.0 0.0 0.0
+    node [expr {$b + 5}] $x 0.0 $zTop -mass $m5 $m5 $m5 0.0 0.0 0.0
     fix [expr {$b + 1}] 1 1 1 1 1 1
     element zeroLength [expr {$b + 1}] [expr {$b + 1}] [expr {$b + 2}] -mat 11 12 13 14 15 16 -dir 1 2 3 4 5 6
-    element forceBeamColumn [expr {$b + 2}] [expr {$b + 2}] [expr {$b + 3}] 1 1 -mass $pierMass
+    element forceBeamColumn [expr {$b + 2}] [expr {$b + 2}] [expr {$b + 3}] 1 1
     set EIeff [expr {$crackedFactor * $Ig}]
     foreach e {3 4} i {3 4} j {4 5} {
       element elasticBeamColumn [expr {$b + $e}] [expr {$b + $i}] [expr {$b + $j}] $Ag $concreteE \
-          $concreteG [expr {2.0 * $EIeff}] $EIeff $EIeff 1 -mass $pierMass
+          $concreteG [expr {2.0 * $EIeff}] $EIeff $EIeff 1
     }
     lappend pierEles [expr {$b + 2}] [expr {$b + 3}] [expr {$b + 4}]
-    # weight of the pier elements, half of each to its end nodes (the nodal masses are added
-    # in applyDeadLoad)
-    set lSeg [expr {0.5 * ($H - $hingeLength)}]
-    foreach nd {2 3 4 5} w [list [expr {0.5 * $hingeLength}] [expr {0.5 * ($hingeLength + $lSeg)}] $lSeg [expr {0.5 * $lSeg}]] {
-      dict set ::elementWeight [expr {$b + $nd}] [expr {$pierMass * $w * $g}]
-    }
     # bearing seats on the cap (rigid cap: rigid links from the pier top)
     if {$p > 1} {
       node [expr {$b + 11}] [expr {$x - $bearingOffset}] 0.0 $zTop
@@ -293,16 +304,24 @@ proc buildModel {case} {
     rigidLink beam [expr {$b + $nNodes - 1}] [expr {$b + 52}]
     set bs [expr {1000 * $s + 12}]
     set be [expr {1000 * ($s + 1) + 11}]
-    element yoshidaBearing $bs $bs [expr {$b + 51}] 1 -Tr $bearingTr -Kv $bearingKv -Kt $bearingKt -Kr $bearingKr
-    element yoshidaBearing $be $be [expr {$b + 52}] 1 -Tr $bearingTr -Kv $bearingKv -Kt $bearingKt -Kr $bearingKr
+    element yoshidaBearing $bs $bs [expr {$b + 51}] 1 -Tr $bearingTr -Kv $bearingKv -Kt $bearingKt -Kr $bearingKroll $bearingKbend
+    element yoshidaBearing $be $be [expr {$b + 52}] 1 -Tr $bearingTr -Kv $bearingKv -Kt $bearingKt -Kr $bearingKroll $bearingKbend
     # end faces: corners (y, z) counter-clockwise seen from +X
     set hw [expr {0.5 * $girderWidth}]; set hd [expr {0.5 * $girderDepth}]
+    # Contactor points (+4): inset from the corners by $contactInset. Two equal faces have their
+    # corners on each other's edges, so a corner would enter and leave the other face with every
+    # sub-millimetre relative movement (force jumps that stall Newton and make the peaks depend on
+    # round-off); inset points stay on the other face while the relative transverse and vertical
+    # offsets are below the inset, and all eight pairs share a flat impact (K below is EA/L / 8).
+    set iw [expr {$hw - $contactInset}]; set id [expr {$hd - $contactInset}]
     foreach {tagBase x center} [list 60 $xs $first 70 $xe $last] {
       set k 0
-      foreach {dy dz} [list -$hw -$hd $hw -$hd $hw $hd -$hw $hd] {
+      foreach {dy dz cy cz} [list -$hw -$hd -$iw -$id $hw -$hd $iw -$id $hw $hd $iw $id -$hw $hd -$iw $id] {
         incr k
         node [expr {$b + $tagBase + $k}] $x $dy [expr {$zG + $dz}]
         rigidLink beam $center [expr {$b + $tagBase + $k}]
+        node [expr {$b + $tagBase + 4 + $k}] $x $cy [expr {$zG + $cz}]
+        rigidLink beam $center [expr {$b + $tagBase + 4 + $k}]
       }
     }
   }
@@ -321,7 +340,9 @@ proc buildModel {case} {
       # corner order gives (b - a) x (d - a) pointing towards the other girder.
       set faceL [list [expr {$left + 71}] [expr {$left + 72}] [expr {$left + 73}] [expr {$left + 74}]]
       set faceR [list [expr {$right + 61}] [expr {$right + 64}] [expr {$right + 63}] [expr {$right + 62}]]
-      set list [pounding [expr {50000 + 100 * $j}] -side1 $faceL $faceL -side2 $faceR $faceR \
+      set pointsL [list [expr {$left + 75}] [expr {$left + 76}] [expr {$left + 77}] [expr {$left + 78}]]
+      set pointsR [list [expr {$right + 65}] [expr {$right + 66}] [expr {$right + 67}] [expr {$right + 68}]]
+      set list [pounding [expr {50000 + 100 * $j}] -side1 $pointsL $faceL -side2 $pointsR $faceR \
           -K $K -e $restitution -mu_s $frictionS -mu_k $frictionK \
           -masses $spanMass $spanMass -search $contactSearch]
     }
@@ -349,14 +370,13 @@ proc buildModel {case} {
   region 2 -eleOnly {*}$girderEles -rayleigh 0.0 0.0 [expr {2.0 * $girderDamping / $wGirder}] 0.0
 }
 
-# Dead load: lumped weights of everything with mass, applied in ten static steps, then held.
+# Dead load: the weight of every nodal mass, applied in ten static steps, then held.
 proc applyDeadLoad {} {
   global g
   timeSeries Linear 1
   pattern Plain 1 1 {
     foreach n [getNodeTags] {
       set w [expr {[nodeMass $n 3] * $g}]
-      if {[dict exists $::elementWeight $n]} { set w [expr {$w + [dict get $::elementWeight $n]}] }
       if {$w > 0.0} { load $n 0.0 0.0 [expr {-$w}] 0.0 0.0 0.0 }
     }
   }
@@ -404,10 +424,41 @@ proc setIntegrator {integrator} {
   }
 }
 
+# Length of the next analysis step, at most $remaining (the rest of the current output step).
+# Impacts last a few hundredths of a second and start with a jump of the dashpot force, so while a
+# pair is closed or, from its gap and gap rate over the last step, would close within
+# $contactLookahead steps, the step is at most $contactDt; and a step in which a pair is predicted
+# to close is cut to end just past that instant, so the jump falls on a step boundary (event
+# location; without it the impacts' error is of order dt whatever the step).
+proc nextStepLength {remaining} {
+  upvar #0 contactGapLast last contactStepLast lastH
+  set h $remaining
+  set near 0
+  set hMin [expr {0.01 * $::contactDt}]
+  foreach list $::poundingEles {
+    foreach e $list {
+      set gap [eleResponse $e gap]
+      if {$gap < 0.0 || [eleResponse $e status] != 0} { set near 1 }
+      if {[info exists last($e)] && $lastH > 0.0 && $gap > 0.0 && $gap < $last($e)} {
+        set tClose [expr {$gap * $lastH / ($last($e) - $gap)}]
+        if {$tClose <= $::contactLookahead * $remaining} { set near 1 }
+        if {$tClose < $h} { set h [expr {max($::contactOvershoot * $tClose, $hMin)}] }
+      }
+      set last($e) $gap
+    }
+  }
+  if {$near} { set h [expr {min($h, $::contactDt)}] }
+  if {$remaining - $h < $hMin} { set h $remaining }
+  set lastH $h
+  return $h
+}
+
 # ---------------------------------------------------------------------------------------------
-# One run: returns a dict of results; writes the time histories to $csv (if not empty).
+# One run: returns a dict of results; writes the time histories to $csv (if not empty). perStep,
+# if given, is a command prefix evaluated once before the first step and after every converged
+# step (energy.tcl follows the energy balance with it).
 # ---------------------------------------------------------------------------------------------
-proc runCase {case scale dt integrator tol motion {csv ""}} {
+proc runCase {case scale dt integrator tol motion {csv ""} {perStep ""}} {
   global duration
   set wall0 [clock microseconds]
   buildModel $case
@@ -445,73 +496,86 @@ proc runCase {case scale dt integrator tol motion {csv ""}} {
   set nSteps [expr {int(round($duration / $dt))}]
   set failed 0
   set loosened 0
+  set contactSubsteps 0
+  array unset ::contactGapLast
+  set ::contactStepLast 0.0
   set wall1 [clock microseconds]
-  for {set step 1} {$step <= $nSteps} {incr step} {
-    if {[analyze 1 $dt] != 0} {
-      # the driver already sub-stepped; try line search, then Krylov-Newton, with more iterations
-      set rc -1
-      # and last a tolerance 100 times looser for this step (contact stick-slip chattering
-      # can make Newton cycle at the 1e-4 m level); such steps are counted as "loosened"
-      foreach alg {NewtonLineSearch KrylovNewton Newton} t [list $tol $tol [expr {100.0 * $tol}]] {
-        algorithm $alg
-        test NormDispIncr $t 100
-        set rc [analyze 1 $dt]
-        if {$rc == 0} { if {$t != $tol} { incr loosened }; break }
+  if {$perStep ne ""} { {*}$perStep }
+  for {set step 1} {$step <= $nSteps && !$failed} {incr step} {
+    set tEnd [expr {$step * $dt}]
+    while {!$failed} {
+      set remaining [expr {$tEnd - [getTime]}]
+      if {$remaining <= 1e-9 * $dt} { break }
+      set h [nextStepLength $remaining]
+      if {[analyze 1 $h] != 0} {
+        # the driver already sub-stepped; try line search, then Krylov-Newton, with more
+        # iterations, and last a tolerance 100 times looser for this step (contact stick-slip
+        # chattering can make Newton cycle at the 1e-4 m level); such steps are counted as
+        # "loosened"
+        set rc -1
+        foreach alg {NewtonLineSearch KrylovNewton Newton} t [list $tol $tol [expr {100.0 * $tol}]] {
+          algorithm $alg
+          test NormDispIncr $t 100
+          set rc [analyze 1 $h]
+          if {$rc == 0} { if {$t != $tol} { incr loosened }; break }
+        }
+        algorithm Newton
+        test NormDispIncr $tol 30
+        if {$rc != 0} { incr failed; break }
       }
-      algorithm Newton
-      test NormDispIncr $tol 30
-      if {$rc != 0} { incr failed; break }
+      if {$h < 0.999 * $dt} { incr contactSubsteps }
+      set row [list [getTime]]
+      set j 0
+      foreach pair $joints {
+        incr j
+        lassign $pair a b
+        set gx [expr {[nodeDisp $b 1] - [nodeDisp $a 1]}]
+        set gy [expr {[nodeDisp $b 2] - [nodeDisp $a 2]}]
+        lappend row $gx $gy
+        if {abs($gx) > abs([dict get $peak gap${j}x])} { dict set peak gap${j}x $gx }
+        if {abs($gy) > abs([dict get $peak gap${j}y])} { dict set peak gap${j}y $gy }
+        dict set last gap${j}x $gx
+        dict set last gap${j}y $gy
+      }
+      set disps {}
+      foreach bt $bearings {
+        set e [eleResponse $bt shearStrain]
+        lappend row $e
+        if {$e > [dict get $peak strain$bt]} { dict set peak strain$bt $e }
+        lassign [eleResponse $bt deformation] d0 d1 d2
+        if {abs($d1) > abs([dict get $peak bx$bt])} { dict set peak bx$bt $d1 }
+        if {abs($d2) > abs([dict get $peak by$bt])} { dict set peak by$bt $d2 }
+        dict set last bx$bt $d1
+        dict set last by$bt $d2
+        if {$bt == 2012 || $bt == 3011} { lappend disps $d1 $d2 }
+      }
+      lappend row {*}$disps
+      set j 0
+      foreach list $::poundingEles {
+        incr j
+        set f 0.0
+        foreach e $list { set f [expr {$f + [lindex [eleResponse $e contactForce] 0]}] }
+        lappend row $f
+        if {$f > [dict get $peak force$j]} { dict set peak force$j $f }
+        set isClosed [expr {$f > 0.0}]
+        if {$isClosed && ![lindex $closed [expr {$j - 1}]]} { lset impacts [expr {$j - 1}] [expr {[lindex $impacts [expr {$j - 1}]] + 1}] }
+        lset closed [expr {$j - 1}] $isClosed
+      }
+      if {[llength $::poundingEles] < 2} { lappend row 0.0 0.0 }
+      set s 0
+      foreach m $mids {
+        incr s
+        set r [nodeDisp $m 6]
+        lappend row $r
+        if {abs($r) > abs([dict get $peak rot$s])} { dict set peak rot$s $r }
+      }
+      set dx [nodeDisp [lindex $mids 1] 1]; set dy [nodeDisp [lindex $mids 1] 2]
+      lappend row $dx $dy
+      if {abs($dx) > abs([dict get $peak deckx])} { dict set peak deckx $dx }
+      if {abs($dy) > abs([dict get $peak decky])} { dict set peak decky $dy }
+      if {$fh ne "" && $tEnd - [getTime] <= 1e-9 * $dt} { puts $fh [join $row ,] }
+      if {$perStep ne ""} { {*}$perStep }
     }
-    set row [list [getTime]]
-    set j 0
-    foreach pair $joints {
-      incr j
-      lassign $pair a b
-      set gx [expr {[nodeDisp $b 1] - [nodeDisp $a 1]}]
-      set gy [expr {[nodeDisp $b 2] - [nodeDisp $a 2]}]
-      lappend row $gx $gy
-      if {abs($gx) > abs([dict get $peak gap${j}x])} { dict set peak gap${j}x $gx }
-      if {abs($gy) > abs([dict get $peak gap${j}y])} { dict set peak gap${j}y $gy }
-      dict set last gap${j}x $gx
-      dict set last gap${j}y $gy
-    }
-    set disps {}
-    foreach bt $bearings {
-      set e [eleResponse $bt shearStrain]
-      lappend row $e
-      if {$e > [dict get $peak strain$bt]} { dict set peak strain$bt $e }
-      lassign [eleResponse $bt deformation] d0 d1 d2
-      if {abs($d1) > abs([dict get $peak bx$bt])} { dict set peak bx$bt $d1 }
-      if {abs($d2) > abs([dict get $peak by$bt])} { dict set peak by$bt $d2 }
-      dict set last bx$bt $d1
-      dict set last by$bt $d2
-      if {$bt == 2012 || $bt == 3011} { lappend disps $d1 $d2 }
-    }
-    lappend row {*}$disps
-    set j 0
-    foreach list $::poundingEles {
-      incr j
-      set f 0.0
-      foreach e $list { set f [expr {$f + [lindex [eleResponse $e contactForce] 0]}] }
-      lappend row $f
-      if {$f > [dict get $peak force$j]} { dict set peak force$j $f }
-      set isClosed [expr {$f > 0.0}]
-      if {$isClosed && ![lindex $closed [expr {$j - 1}]]} { lset impacts [expr {$j - 1}] [expr {[lindex $impacts [expr {$j - 1}]] + 1}] }
-      lset closed [expr {$j - 1}] $isClosed
-    }
-    if {[llength $::poundingEles] < 2} { lappend row 0.0 0.0 }
-    set s 0
-    foreach m $mids {
-      incr s
-      set r [nodeDisp $m 6]
-      lappend row $r
-      if {abs($r) > abs([dict get $peak rot$s])} { dict set peak rot$s $r }
-    }
-    set dx [nodeDisp [lindex $mids 1] 1]; set dy [nodeDisp [lindex $mids 1] 2]
-    lappend row $dx $dy
-    if {abs($dx) > abs([dict get $peak deckx])} { dict set peak deckx $dx }
-    if {abs($dy) > abs([dict get $peak decky])} { dict set peak decky $dy }
-    if {$fh ne ""} { puts $fh [join $row ,] }
   }
   set wall2 [clock microseconds]
   if {$fh ne ""} { close $fh }
@@ -520,7 +584,7 @@ proc runCase {case scale dt integrator tol motion {csv ""}} {
   set stats [analysisStatistics]
   set dofs [expr {6 * [llength [getNodeTags]]}]
   return [dict create case $case scale $scale dt $dt integrator $integrator tol $tol motion $used \
-      completed [expr {$failed == 0}] loosened $loosened peak $peak last $last impacts $impacts stats $stats \
+      completed [expr {$failed == 0}] loosened $loosened contactSubsteps $contactSubsteps peak $peak last $last impacts $impacts stats $stats \
       nodes [llength [getNodeTags]] elements [llength [getEleTags]] \
       wall [expr {($wall2 - $wall0) * 1e-6}] wallSteps [expr {($wall2 - $wall1) * 1e-6}] \
       endTime [getTime]]
@@ -545,9 +609,9 @@ foreach c $cases {
   set r [runCase $c $scale $dt $integrator $tol $motion [file join $outDir $c.csv]]
   lappend results $r
   set st [dict get $r stats]
-  puts [format "%-15s wall %.2f s, %d dofs, %d steps, %d failed, %d sub-stepped, %d iterations, %d factorizations" \
-      $c [dict get $r wall] [expr {6 * [dict get $r nodes]}] [dict get $st steps] [dict get $st failedSteps] \
-      [dict get $st subSteppedSteps] [dict get $st iterations] [dict get $st factorizations]]
+  puts [format "%-15s wall %.2f s, %d equations, %d steps (%d in contact sub-steps), %d failed, %d sub-stepped, %d iterations, %d factorizations" \
+      $c [dict get $r wall] [dict get $st equations] [dict get $st steps] [dict get $r contactSubsteps] \
+      [dict get $st failedSteps] [dict get $st subSteppedSteps] [dict get $st iterations] [dict get $st factorizations]]
   puts "  peaks: [dict get $r peak]"
 }
 source [file join [file dirname [info script]] tools report.tcl]

@@ -20,7 +20,8 @@ proc writeReport {results outDir} {
   puts $md "# Three-span isolated bridge under a near-fault motion\n"
   puts $md "Motion: [dict get $r0 motion], scaled by [dict get $r0 scale], at $::motionAngle degrees to the"
   puts $md "bridge axis; $::duration s analysed, integrator [dict get $r0 integrator],"
-  puts $md "dt = [dict get $r0 dt] s, NormDispIncr tolerance [dict get $r0 tol] m. Model: verification/bridge/bridge.tcl"
+  puts $md "dt = [dict get $r0 dt] s (at most $::contactDt s while a joint is closed or closing), NormDispIncr"
+  puts $md "tolerance [dict get $r0 tol] m. Model: verification/bridge/bridge.tcl"
   puts $md "(spans $::nSpans x $::spanLength m, pier heights $::pierHeights m, joint gap $::jointGap m, HDR bearings"
   puts $md "$::bearingArea m^2 x $::bearingTr m rubber per girder end). Gap = right girder end minus left girder end"
   puts $md "(longitudinal: + opening, - closing); bearing displacement = top minus bottom.\n"
@@ -75,13 +76,13 @@ proc writeReport {results outDir} {
     set v {}; foreach r $results { lappend v [format %.1f [dict get $r $key]] }
     row $md $label $unit $v
   }
-  set v {}; foreach r $results { lappend v [expr {6 * [dict get $r nodes]}] }
-  row $md "dofs (6 per node, before constraints)" - $v
-  foreach {key label} {steps "steps" failedSteps "failed steps (then sub-stepped)" subSteppedSteps "sub-stepped steps"
+  foreach {key label} {equations "equations (free dofs after the rigid links)" steps "steps" failedSteps "failed steps (then sub-stepped)" subSteppedSteps "sub-stepped steps"
                        iterations "Newton iterations" factorizations "factorizations"} {
     set v {}; foreach r $results { lappend v [dict get $r stats $key] }
     row $md $label - $v
   }
+  set v {}; foreach r $results { lappend v [dict get $r contactSubsteps] }
+  row $md "of the steps, shorter contact steps (joint closed or closing)" - $v
   set v {}; foreach r $results { lappend v [dict get $r loosened] }
   row $md "steps accepted at 100x the tolerance (last resort)" - $v
   set v {}; foreach r $results { lappend v [expr {[dict get $r completed] ? "yes" : "NO"}] }
