@@ -125,7 +125,7 @@ void YoshidaBearingMaterial::Params::validate() const {
   requireFinite(gamma, "gamma");
   requireFinite(k, "k");
   requireFinite(eta, "eta");
-  requireFinite(maxSubIncrement, "maxSubIncrement");
+  requireFinite(maxSubIncrement, "subIncrement");
   if (Y0 <= 0.0) throw InputError("Y0", "must be positive");
   if (U0 <= 0.0) throw InputError("U0", "must be positive");
   if (n < 1.0) throw InputError("n", "must be at least 1");
@@ -137,7 +137,7 @@ void YoshidaBearingMaterial::Params::validate() const {
   if (eta < 0.0) throw InputError("eta", "must not be negative");
   if ((k > 0.0) != (eta > 0.0))
     throw InputError("eta", "and k must both be positive (Maxwell part) or both zero (none)");
-  if (maxSubIncrement <= 0.0) throw InputError("maxSubIncrement", "must be positive");
+  if (maxSubIncrement <= 0.0) throw InputError("subIncrement", "must be positive");
 }
 
 YoshidaBearingMaterial::YoshidaBearingMaterial(int tag, const Params& p)

@@ -388,7 +388,7 @@ TEST(YoshidaBearingMaterialTest, ValidateRejectsBadInput) {
       {"eta", [](Params& p) { p.eta = -5.0; }},
       {"eta", [](Params& p) { p.k = 5.0; }},
       {"eta", [](Params& p) { p.eta = 5.0; }},
-      {"maxSubIncrement", [](Params& p) { p.maxSubIncrement = 0.0; }},
+      {"subIncrement", [](Params& p) { p.maxSubIncrement = 0.0; }},
       {"U0", [](Params& p) { p.U0 = INFINITY; }},
   };
   EXPECT_NO_THROW(basic(2.0).validate());

@@ -16,12 +16,13 @@ namespace {
 
 constexpr const char* kBiaxialUsage = "biaxialMaterial type tag ...";
 constexpr const char* kYoshidaUsage =
-    "biaxialMaterial Yoshida tag Y0 U0 n alpha0 beta q gamma ?-maxwell k eta?";
+    "biaxialMaterial Yoshida tag Y0 U0 n alpha0 beta q gamma ?-maxwell k eta? ?-subIncrement s?";
 constexpr const char* kBearingUsage =
     "element yoshidaBearing tag iNode jNode matTag -Tr Tr -Kv Kv ?-Kt Kt? ?-Kr Kr ?Krz?? "
     "?-orient x1 x2 x3 y1 y2 y3? ?-mass m? ?-limits design failure? ?-afterFailure keep|release?";
 
-// biaxialMaterial Yoshida tag Y0 U0 n alpha0 beta q gamma ?-maxwell k eta?
+// biaxialMaterial Yoshida tag Y0 U0 n alpha0 beta q gamma ?-maxwell k eta? ?-subIncrement s?
+// (s: largest backward-Euler sub-step of the hysteretic part, as a fraction of U0; default 0.02)
 std::unique_ptr<materials::BiaxialMaterial> parseYoshida(ArgReader& args, int tag) {
   materials::YoshidaBearingMaterial::Params p;
   p.Y0 = args.real("Y0");
@@ -35,6 +36,7 @@ std::unique_ptr<materials::BiaxialMaterial> parseYoshida(ArgReader& args, int ta
     p.k = (*maxwell)[0];
     p.eta = (*maxwell)[1];
   }
+  p.maxSubIncrement = args.option("-subIncrement", p.maxSubIncrement);
   args.finish();
   p.validate();
   return std::make_unique<materials::YoshidaBearingMaterial>(tag, p);

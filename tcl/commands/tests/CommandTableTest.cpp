@@ -230,6 +230,9 @@ TEST_F(CommandTableTest, YoshidaBearingTakesOneOrTwoRockingStiffnesses) {
   EXPECT_NE(error("element yoshidaBearing 1 1 2 1 -Tr 0.2 -Kv 1e6 -Kt 50.0 -Kr 1 2 3").find("-Kr takes one value"),
             std::string::npos);
   EXPECT_NE(error("element yoshidaBearing 1 1 2 1 -Tr 0.2 -Kv 1e6 -Kt 50.0 -Kr -1").find("Kr"), std::string::npos);
+  EXPECT_NE(error("biaxialMaterial Yoshida 2 300.0 0.02 2.0 0.0 0.0 1.0 0.0 -subIncrement 0").find("subIncrement"),
+            std::string::npos);
+  ok("biaxialMaterial Yoshida 3 300.0 0.02 2.0 0.0 0.0 1.0 0.0 -subIncrement 0.005");
   ok("element yoshidaBearing 1 1 2 1 -Tr 0.2 -Kv 1e6 -Kt 50.0 -Kr 100.0 400.0");
   ok("timeSeries Linear 1; pattern Plain 1 1 { load 2 0 0 0 2.0 3.0 0 }");
   ok("system FullGeneral; test NormDispIncr 1e-12 10; algorithm Newton; integrator LoadControl 1.0; analysis Static");
