@@ -76,10 +76,12 @@ set crackedFactor 0.7       ;# effective EI / gross EI of the elastic segments
 set hingeLength 3.0         ;# m, fiber (forceBeamColumn) segment at the base
 set concreteDensity 2.5     ;# t/m^3
 set capMass 150.0           ;# t, pier cap (lumped at the pier top)
+set capSize {3.0 10.0 2.0}  ;# m, cap length along X, width along Y, depth (for its rotary inertia)
 set pierDamping 0.05        ;# damping ratio of the piers at their own cantilever period
 
 # Foundation: footing on a 3 x 3 group of cast-in-place piles (Japan Road Association style)
 set footingMass 400.0       ;# t
+set footingSize {9.0 9.0 2.0} ;# m, footing plan X, Y and depth (for its rotary inertia)
 set pileD 1.2               ;# m
 set pileLength 20.0         ;# m
 set pileE 2.5e7             ;# kPa
@@ -124,12 +126,15 @@ set duration 20.0           ;# s of analysis
 
 # Analysis defaults, chosen by tools/speed-study.tcl (results in tools/results/speed.md): the
 # fastest run within 1 % of the reference (dt 0.0005 s, tol 1e-6) on every reported quantity
-set defaultDt 0.005
+set defaultDt 0.01
 set defaultTol 1.0e-4
 set defaultIntegrator Newmark
 set contactDt 0.0005        ;# s, longest step while a joint is closed or closing (nextStepLength)
 set contactLookahead 2.0    ;# steps: sub-step when the gap would close within this many steps
 set contactOvershoot 1.2    ;# a step cut at a predicted first contact ends at 1.2 x that time
+# The parameters above, which buildModel reads (a script that sources this file keeps its own
+# later globals out of buildModel's reach).
+set parameterNames [info globals]
 
 # ---------------------------------------------------------------------------------------------
 # Model
@@ -141,9 +146,15 @@ set contactOvershoot 1.2    ;# a step cut at a predicted first contact ends at 1
 # bearings 1000p + {11, 12}, girder s 10000s + i, pounding 50000 + 100j, devices 60000 + 10j.
 
 proc pierX {p} { return [expr {($p - 1) * $::spanLength}] }
+# Mass moments of inertia about X, Y, Z of a solid block of mass m and sides {a b c} along X, Y, Z.
+proc blockInertia {m sides} {
+  lassign $sides a b c
+  return [list [expr {$m * ($b * $b + $c * $c) / 12.0}] [expr {$m * ($a * $a + $c * $c) / 12.0}] \
+               [expr {$m * ($a * $a + $b * $b) / 12.0}]]
+}
 
 proc buildModel {case} {
-  foreach v [info globals] { if {$v ne "case" && ![string match tcl* $v] && ![string match auto* $v]} { global $v } }
+  foreach v $::parameterNames { if {$v ne "case" && ![string match tcl* $v] && ![string match auto* $v]} { global $v } }
   wipe
   model basic -ndm 3 -ndf 6
 
@@ -237,11 +248,15 @@ proc buildModel {case} {
     set m3 [expr {0.5 * $pierMass * ($hingeLength + $lSeg)}]
     set m4 [expr {$pierMass * $lSeg}]
     set m5 [expr {$capMass + 0.5 * $pierMass * $lSeg}]
+    # rotary inertia of the footing and the cap (solid blocks), so that no rotation carrying a
+    # spring and dashpot or a rigid link to heavy parts is massless
+    lassign [blockInertia $footingMass $footingSize] fIx fIy fIz
+    lassign [blockInertia $capMass $capSize] cIx cIy cIz
     node [expr {$b + 1}] $x 0.0 $z0
-    node [expr {$b + 2}] $x 0.0 $z0 -mass $m2 $m2 $m2 0.0 0.0 0.0
+    node [expr {$b + 2}] $x 0.0 $z0 -mass $m2 $m2 $m2 $fIx $fIy $fIz
     node [expr {$b + 3}] $x 0.0 [expr {$z0 + $hingeLength}] -mass $m3 $m3 $m3 0.0 0.0 0.0
     node [expr {$b + 4}] $x 0.0 [expr {0.5 * ($z0 + $hingeLength + $zTop)}] -mass $m4 $m4 $m4 0.0 0.0 0.0
-    node [expr {$b + 5}] $x 0.0 $zTop -mass $m5 $m5 $m5 0.0 0.0 0.0
+    node [expr {$b + 5}] $x 0.0 $zTop -mass $m5 $m5 $m5 $cIx $cIy $cIz
     fix [expr {$b + 1}] 1 1 1 1 1 1
     element zeroLength [expr {$b + 1}] [expr {$b + 1}] [expr {$b + 2}] -mat 11 12 13 14 15 16 -dir 1 2 3 4 5 6
     element forceBeamColumn [expr {$b + 2}] [expr {$b + 2}] [expr {$b + 3}] 1 1
@@ -286,7 +301,15 @@ proc buildModel {case} {
       set xl [expr {$i > 0 ? 0.5 * ([lindex $xs_list $i] + [lindex $xs_list [expr {$i - 1}]]) : [lindex $xs_list 0]}]
       set xr [expr {$i < $nNodes - 1 ? 0.5 * ([lindex $xs_list $i] + [lindex $xs_list [expr {$i + 1}]]) : [lindex $xs_list end]}]
       set m [expr {$girderMass * ($xr - $xl)}]
-      node [expr {$b + $i + 1}] [lindex $xs_list $i] 0.0 $zG -mass $m $m $m 0.0 0.0 0.0
+      # rotary inertia of the deck section (a W x D rectangle of the same mass): roll about X,
+      # pitch about Y, yaw about Z (the yaw of the whole girder also comes from the masses'
+      # spread along X). Without it roll is massless, and impacts at the face corners drive it
+      # into the undamped period-2 oscillation that average acceleration leaves in massless
+      # modes (the dashpot force then alternates from step to step)
+      set Ix [expr {$m * ($girderWidth * $girderWidth + $girderDepth * $girderDepth) / 12.0}]
+      set Iy [expr {$m * $girderDepth * $girderDepth / 12.0}]
+      set Iz [expr {$m * $girderWidth * $girderWidth / 12.0}]
+      node [expr {$b + $i + 1}] [lindex $xs_list $i] 0.0 $zG -mass $m $m $m $Ix $Iy $Iz
       dict set ::nodeMassOf [expr {$b + $i + 1}] $m
     }
     for {set i 1} {$i < $nNodes} {incr i} {

@@ -10,7 +10,8 @@
 #   E_in + W_g = E_k + W_R + W_el
 # with E_in = -sum (M r a_g) . du, the ground-motion input (a_g from getLoadFactor of the two
 # UniformExcitation patterns, M from nodeMass: every mass of the bridge is a nodal mass);
-# W_g = sum P_g . du, the work of the dead load held constant; E_k = v.M.v / 2; W_R the work of
+# W_g = sum P_g . du, the work of the dead load held constant; E_k = v.M.v / 2 (translations and
+# the rotary inertia of girders, caps and footings); W_R the work of
 # the Rayleigh forces (eleResponse dampingForces); W_el = sum over the elements of their own
 # resisting forces (eleForce) on their nodal displacement increments: strain energy plus the
 # hysteresis of bearings and pier hinges, foundation dashpots, contact springs, dashpots and
@@ -104,9 +105,7 @@ proc energyStep {} {
   }
   set ke 0.0
   foreach n $E(massNodes) {
-    lassign [nodeVel $n] vx vy vz
-    lassign $E(mass,$n) mx my mz
-    set ke [expr {$ke + 0.5 * ($mx * $vx * $vx + $my * $vy * $vy + $mz * $vz * $vz)}]
+    foreach m $E(mass,$n) v [nodeVel $n] { set ke [expr {$ke + 0.5 * $m * $v * $v}] }
   }
   set E(k) $ke
   set E(disp) $disp; set E(forces) $forces; set E(rayleigh) $rayleigh; set E(ag) $ag
@@ -127,9 +126,9 @@ proc energyStart {} {
   set E(massNodes) {}
   foreach n $E(nodes) {
     set m [nodeMass $n]
-    if {[lindex $m 0] > 0.0 || [lindex $m 1] > 0.0 || [lindex $m 2] > 0.0} {
+    if {[tcl::mathfunc::max {*}$m] > 0.0} {
       lappend E(massNodes) $n
-      set E(mass,$n) [lrange $m 0 2]
+      set E(mass,$n) $m
     }
   }
   foreach e $E(elements) {
