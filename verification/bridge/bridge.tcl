@@ -465,6 +465,8 @@ proc nextStepLength {remaining} {
       if {[info exists last($e)] && $lastH > 0.0 && $gap > 0.0 && $gap < $last($e)} {
         set tClose [expr {$gap * $lastH / ($last($e) - $gap)}]
         if {$tClose <= $::contactLookahead * $remaining} { set near 1 }
+        # (1.2 tClose may pass the end of the output step by a fraction of a contact step; the
+        # row is then written at that time and the next output step is that much shorter)
         if {$tClose < $h} { set h [expr {max($::contactOvershoot * $tClose, $hMin)}] }
       }
       set last($e) $gap
