@@ -250,7 +250,7 @@ void AnalysisModel::buildScatter() {
     ElementLink link;
     link.element = e.get();
     link.rayleigh = domain_.elementRayleigh(etag);
-    link.rayleighOn = link.rayleigh.any() && e->rayleighByDefault();
+    link.rayleighOn = link.rayleigh.any();
     const int n = e->numDof();
     link.u = link.v = link.a = link.force = Eigen::VectorXd::Zero(n);
     link.work = Eigen::MatrixXd::Zero(n, n);

@@ -198,7 +198,9 @@ void Domain::setRayleigh(const RayleighFactors& f, const std::vector<int>& eleme
 
 RayleighFactors Domain::elementRayleigh(int elementTag) const {
   auto it = elementRayleigh_.find(elementTag);
-  return it == elementRayleigh_.end() ? RayleighFactors{} : it->second;
+  if (it == elementRayleigh_.end()) return RayleighFactors{};
+  const elements::Element* e = findElement(elementTag);
+  return e != nullptr && e->rayleighByDefault() ? it->second : RayleighFactors{};
 }
 
 double Domain::nodeAlphaM(int nodeTag) const {
@@ -287,8 +289,7 @@ Eigen::VectorXd Domain::elementRayleighForce(int elementTag) const {
   const elements::Element* e = findElement(elementTag);
   if (e == nullptr) throw InputError("eleTag", "element " + std::to_string(elementTag) + " does not exist");
   const RayleighFactors r = elementRayleigh(elementTag);
-  // The same rule as the analysis (AnalysisModel): factors set on the element and accepted by it.
-  if (!r.any() || !e->rayleighByDefault()) return Eigen::VectorXd::Zero(e->numDof());
+  if (!r.any()) return Eigen::VectorXd::Zero(e->numDof());
   const Eigen::VectorXd v = gatherElement(*e, &Node::vel);
   return (r.alphaM * e->mass() + r.betaK * e->tangentStiff() + r.betaK0 * e->initialStiff() +
           r.betaKc * e->committedStiff()) * v;

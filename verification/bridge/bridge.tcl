@@ -142,8 +142,9 @@ set parameterNames [info globals]
 # Node numbers: pier p: 1000p + {1 ground, 2 base, 3 top of hinge, 4 mid, 5 top}, bearing
 # bottoms 1000p + {11 left, 12 right}; girder s: 10000s + {1 .. n} along the axis, bearing tops
 # 10000s + {51 start, 52 end}, face corners 10000s + {61..64 start, 71..74 end}, contactor points
-# 10000s + {65..68 start, 75..78 end}, device nodes 10000s + {81 start, 82 end}. Element numbers: pier p 1000p + {1 foundation, 2 hinge, 3, 4},
-# bearings 1000p + {11, 12}, girder s 10000s + i, pounding 50000 + 100j, devices 60000 + 10j.
+# 10000s + {65..68 start, 75..78 end}, device nodes 10000s + {81 start, 82 end}. Element
+# numbers: pier p 1000p + {1 foundation, 2 hinge, 3, 4}, bearings 1000p + {11, 12}, girder s
+# 10000s + i, pounding 50000 + 100j, devices 60000 + 10j.
 
 proc pierX {p} { return [expr {($p - 1) * $::spanLength}] }
 # Mass moments of inertia about X, Y, Z of a solid block of mass m and sides {a b c} along X, Y, Z.
@@ -310,7 +311,6 @@ proc buildModel {case} {
       set Iy [expr {$m * $girderDepth * $girderDepth / 12.0}]
       set Iz [expr {$m * $girderWidth * $girderWidth / 12.0}]
       node [expr {$b + $i + 1}] [lindex $xs_list $i] 0.0 $zG -mass $m $m $m $Ix $Iy $Iz
-      dict set ::nodeMassOf [expr {$b + $i + 1}] $m
     }
     for {set i 1} {$i < $nNodes} {incr i} {
       element elasticBeamColumn [expr {$b + $i}] [expr {$b + $i}] [expr {$b + $i + 1}] $girderA $steelE \
