@@ -23,24 +23,25 @@ FiberSection<Ndm>::FiberSection(int tag, const std::vector<Fiber>& fibers, doubl
   for (const Fiber& f : fibers) {
     if (!(f.area > 0.0)) throw InputError("fiber area", "must be positive");
     if (f.material == nullptr) throw InputError("fiber material", "is missing");
-    y_.push_back(f.y);
-    z_.push_back(f.z);
-    area_.push_back(f.area);
-    mats_.push_back(f.material->clone());
+    std::size_t g = 0;
+    while (g < groups_.size() && !groups_[g]->accepts(*f.material)) ++g;
+    if (g == groups_.size()) groups_.push_back(FiberGroup::forMaterial(*f.material));
+    // 2D sections ignore z (the strain is eps - y kz); keep it for responses only.
+    groups_[g]->add(f.y, f.z, f.area, *f.material);
+    where_.emplace_back(g, groups_[g]->size() - 1);
   }
-  for (auto& m : mats_) m->revertToStart();
-  e_ = eCommitted_ = Eigen::VectorXd::Zero(kOrder);
-  s_ = Eigen::VectorXd::Zero(kOrder);
-  k_ = k0_ = Eigen::MatrixXd::Zero(kOrder, kOrder);
-  sumFibers(true);
-  sumFibers(false);
+  FiberSums initial;
+  for (const auto& g : groups_) g->addTo(initial, true);
+  store(initial, true);
+  sumCurrent();
 }
 
 template <int Ndm>
 FiberSection<Ndm>::FiberSection(const FiberSection& o)
-    : SectionForceDeformation(o), y_(o.y_), z_(o.z_), area_(o.area_), gj_(o.gj_), e_(o.e_), eCommitted_(o.eCommitted_),
-      s_(o.s_), k_(o.k_), k0_(o.k0_) {
-  for (const auto& m : o.mats_) mats_.push_back(m->clone());
+    : SectionForceDeformation(o), where_(o.where_), gj_(o.gj_), e_(o.e_),
+      eCommitted_(o.eCommitted_), s_(o.s_), k_(o.k_), k0_(o.k0_),
+      materialUpdates_(o.materialUpdates_) {
+  for (const auto& g : o.groups_) groups_.push_back(g->clone());
 }
 
 template <int Ndm>
@@ -52,67 +53,77 @@ std::span<const SectionCode> FiberSection<Ndm>::type() const {
 // Resultants and tangent by midpoint quadrature over the fibers: with the strain-displacement row
 // a = [1, -y] (2D) or [1, -y, z] (3D), s = sum(sigma A a), k = sum(Et A a a^T).
 template <int Ndm>
-void FiberSection<Ndm>::sumFibers(bool initial) {
-  Eigen::MatrixXd& k = initial ? k0_ : k_;
-  k.setZero();
-  if (!initial) s_.setZero();
-  const int n = numFibers();
-  for (int i = 0; i < n; ++i) {
-    Eigen::Vector3d a(1.0, -y_[i], z_[i]);
-    const double et =
-        (initial ? mats_[i]->getInitialTangent() : mats_[i]->getTangent()) * area_[i];
-    constexpr int m = Ndm == 2 ? 2 : 3;
-    k.topLeftCorner(m, m) += et * a.head<m>() * a.head<m>().transpose();
-    if (!initial) s_.head(m) += mats_[i]->getStress() * area_[i] * a.head<m>();
+void FiberSection<Ndm>::store(const FiberSums& f, bool initial) {
+  Matrix& k = initial ? k0_ : k_;
+  k(0, 0) = f.kPP;
+  k(0, 1) = k(1, 0) = f.kPz;
+  k(1, 1) = f.kzz;
+  if (!initial) {
+    s_(0) = f.p;
+    s_(1) = f.mz;
   }
   if constexpr (Ndm == 3) {
+    k(0, 2) = k(2, 0) = f.kPy;
+    k(1, 2) = k(2, 1) = f.kzy;
+    k(2, 2) = f.kyy;
     k(3, 3) = gj_;
-    if (!initial) s_(3) = gj_ * e_(3);
+    if (!initial) {
+      s_(2) = f.my;
+      s_(3) = gj_ * e_(3);
+    }
   }
+}
+
+template <int Ndm>
+void FiberSection<Ndm>::sumCurrent() {
+  FiberSums sums;
+  for (const auto& g : groups_) g->addTo(sums, false);
+  store(sums, false);
 }
 
 template <int Ndm>
 Status FiberSection<Ndm>::setTrialDeformation(const Eigen::Ref<const Eigen::VectorXd>& e) {
   e_ = e;
-  const double kz = e(1), ky = Ndm == 3 ? e(2) : 0.0;
+  const double kz = e_(1), ky = Ndm == 3 ? e_(2) : 0.0;
   Status status = Status::Ok;
-  const int n = numFibers();
-  for (int i = 0; i < n; ++i) {
-    const Status s = mats_[i]->setTrialStrain(e(0) - y_[i] * kz + z_[i] * ky);
+  FiberSums sums;
+  for (const auto& g : groups_) {
+    const Status s = g->setTrial(e_(0), kz, ky, sums);
     if (!ok(s)) status = s;
   }
-  sumFibers(false);
+  materialUpdates_ += numFibers();
+  store(sums, false);
   if (ok(status) && !s_.allFinite()) status = Status::NonFinite;
   return status;
 }
 
 template <int Ndm>
 void FiberSection<Ndm>::commitState() {
-  for (auto& m : mats_) m->commitState();
+  for (auto& g : groups_) g->commitState();
   eCommitted_ = e_;
 }
 
 template <int Ndm>
 void FiberSection<Ndm>::revertToLastCommit() {
-  for (auto& m : mats_) m->revertToLastCommit();
+  for (auto& g : groups_) g->revertToLastCommit();
   e_ = eCommitted_;
-  sumFibers(false);
+  sumCurrent();
 }
 
 template <int Ndm>
 void FiberSection<Ndm>::revertToStart() {
-  for (auto& m : mats_) m->revertToStart();
+  for (auto& g : groups_) g->revertToStart();
   e_.setZero();
   eCommitted_.setZero();
-  sumFibers(false);
+  sumCurrent();
 }
 
 template <int Ndm>
 std::optional<Eigen::VectorXd> FiberSection<Ndm>::response(
     std::span<const std::string> args) const {
   if (args.empty()) return std::nullopt;
-  if (args[0] == "force" || args[0] == "forces") return s_;
-  if (args[0] == "deformation" || args[0] == "deformations") return e_;
+  if (args[0] == "force" || args[0] == "forces") return Eigen::VectorXd(s_);
+  if (args[0] == "deformation" || args[0] == "deformations") return Eigen::VectorXd(e_);
   if (args[0] == "fiber" && args.size() >= 4) {
     char* end = nullptr;
     const double y = std::strtod(args[1].c_str(), &end);
@@ -126,8 +137,9 @@ std::optional<Eigen::VectorXd> FiberSection<Ndm>::response(
     int best = -1;
     double bestD = std::numeric_limits<double>::infinity();
     for (int i = 0; i < numFibers(); ++i) {
-      if (byMaterial && mats_[i]->tag() != matTag) continue;
-      const double d = (y_[i] - y) * (y_[i] - y) + (Ndm == 3 ? (z_[i] - z) * (z_[i] - z) : 0.0);
+      if (byMaterial && fiberMaterial(i).tag() != matTag) continue;
+      const double dy = fiberY(i) - y, dz = fiberZ(i) - z;
+      const double d = dy * dy + (Ndm == 3 ? dz * dz : 0.0);
       if (d < bestD) {
         bestD = d;
         best = i;
@@ -135,7 +147,7 @@ std::optional<Eigen::VectorXd> FiberSection<Ndm>::response(
     }
     if (best < 0 || args.back() != "stressStrain") return std::nullopt;
     Eigen::VectorXd out(2);
-    out << mats_[best]->getStress(), mats_[best]->getStrain();
+    out << fiberMaterial(best).getStress(), fiberMaterial(best).getStrain();
     return out;
   }
   return std::nullopt;

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "materials/UniaxialMaterial.h"
+#include "materials/section/FiberGroup.h"
 #include "materials/section/SectionForceDeformation.h"
 
 namespace dabs::materials::section {
@@ -16,7 +17,8 @@ namespace dabs::materials::section {
 ///  - 2D: resultants [P, Mz], deformations [eps, kz], fiber strain eps - y kz.
 ///  - 3D: resultants [P, Mz, My, T], deformations [eps, kz, ky, twist], fiber strain
 ///    eps - y kz + z ky, and an uncoupled linear torsion T = GJ twist.
-/// Fiber data are stored contiguously (y, z, area arrays); the section owns its materials' clones.
+/// Fibers are kept in groups by material type (FiberGroup): coordinates, areas and material states
+/// side by side, updated in one loop each; the section owns its materials' copies.
 template <int Ndm>
 class FiberSection final : public SectionForceDeformation {
  public:
@@ -30,6 +32,7 @@ class FiberSection final : public SectionForceDeformation {
   /// fiber has a nonpositive area.
   FiberSection(int tag, const std::vector<Fiber>& fibers, double torsionStiffness = 0.0);
   FiberSection(const FiberSection& other);
+  FiberSection(FiberSection&&) noexcept = default;
 
   int order() const override { return kOrder; }
   std::span<const SectionCode> type() const override;
@@ -48,20 +51,30 @@ class FiberSection final : public SectionForceDeformation {
   /// optionally among those of material matTag: [stress, strain]).
   std::optional<Eigen::VectorXd> response(std::span<const std::string> args) const override;
 
-  int numFibers() const noexcept { return static_cast<int>(area_.size()); }
-  double fiberY(int i) const { return y_[i]; }
-  double fiberZ(int i) const { return z_[i]; }
-  double fiberArea(int i) const { return area_[i]; }
-  const UniaxialMaterial& fiberMaterial(int i) const { return *mats_[i]; }
+  /// Fibers in the order they were given.
+  int numFibers() const noexcept { return static_cast<int>(where_.size()); }
+  double fiberY(int i) const { return group(i).y(index(i)); }
+  double fiberZ(int i) const { return group(i).z(index(i)); }
+  double fiberArea(int i) const { return group(i).area(index(i)); }
+  const UniaxialMaterial& fiberMaterial(int i) const { return group(i).material(index(i)); }
+  /// Fiber material updates (setTrialStrain calls) since construction, for benchmarks.
+  long materialUpdates() const noexcept override { return materialUpdates_; }
 
  private:
-  void sumFibers(bool initial);  // s_, k_ (or k0_) from the fibers' trial state
+  using Vector = Eigen::Matrix<double, kOrder, 1>;
+  using Matrix = Eigen::Matrix<double, kOrder, kOrder>;
+  /// s_ and k_ (or k0_) from fiber sums, plus the uncoupled torsion in 3D.
+  void store(const FiberSums& sums, bool initial);
+  void sumCurrent();
+  const FiberGroup& group(int i) const { return *groups_[where_[static_cast<std::size_t>(i)].first]; }
+  int index(int i) const { return where_[static_cast<std::size_t>(i)].second; }
 
-  std::vector<double> y_, z_, area_;
-  std::vector<std::unique_ptr<UniaxialMaterial>> mats_;
+  std::vector<std::unique_ptr<FiberGroup>> groups_;
+  std::vector<std::pair<std::size_t, int>> where_;  ///< fiber i -> (group, index in the group)
   double gj_ = 0.0;
-  Eigen::VectorXd e_, eCommitted_, s_;
-  Eigen::MatrixXd k_, k0_;
+  Vector e_ = Vector::Zero(), eCommitted_ = Vector::Zero(), s_ = Vector::Zero();
+  Matrix k_ = Matrix::Zero(), k0_ = Matrix::Zero();
+  long materialUpdates_ = 0;
 };
 
 using FiberSection2d = FiberSection<2>;

@@ -42,6 +42,10 @@ class SectionForceDeformation {
 
   [[nodiscard]] virtual std::unique_ptr<SectionForceDeformation> clone() const = 0;
 
+  /// Material updates (setTrialStrain calls of the section's materials) since construction: a
+  /// work count for benchmarks, not part of the state.
+  virtual long materialUpdates() const noexcept { return 0; }
+
   /// Named responses (e.g. {"fiber","0.1","0.2","stressStrain"}); nullopt when unknown.
   virtual std::optional<Eigen::VectorXd> response(std::span<const std::string> /*args*/) const {
     return std::nullopt;

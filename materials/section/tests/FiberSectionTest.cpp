@@ -6,8 +6,11 @@
 #include <cmath>
 #include <numbers>
 
+#include "materials/Concrete02.h"
+#include "materials/ENT.h"
 #include "materials/Elastic.h"
 #include "materials/ElasticPP.h"
+#include "materials/Steel02.h"
 #include "materials/InputError.h"
 #include "materials/section/FiberSection.h"
 #include "materials/section/geometry/CircPatch.h"
@@ -183,6 +186,56 @@ TEST(SectionGeometryTest, QuadPatchAndLayers) {
   CircLayer full{3, 8, 0.01, 0.0, 0.0, 1.0, 0.0, 360.0};
   full.discretize(bars);
   EXPECT_NEAR(std::atan2(bars[1].z, bars[1].y), std::numbers::pi / 4, 1e-12);
+}
+
+
+TEST(FiberSectionTest, MixedMaterialsSumLikeTheFibersOneByOne) {
+  // Fibers of three material types given interleaved (Concrete02 and Steel02 are kept in typed
+  // groups, ENT in the general one): resultants, tangent and the fiber order must be those of
+  // the fibers summed one by one with their own material copies, s = sum sigma A a and
+  // k = sum Et A a a^T with a = [1, -y, z].
+  const Concrete02 concrete(1, Concrete02::Params::withDefaults(-30e3, -0.002, -6e3, -0.006));
+  Steel02::Params sp;
+  sp.Fy = 4e5;
+  sp.E = 2e8;
+  sp.b = 0.01;
+  const Steel02 steel(2, sp);
+  ENT::Params ep;
+  ep.E = 1e6;
+  const ENT ent(3, ep);
+  const UniaxialMaterial* kinds[3] = {&concrete, &steel, &ent};
+  std::vector<FiberSection3d::Fiber> fibers;
+  std::vector<std::unique_ptr<UniaxialMaterial>> alone;
+  for (int i = 0; i < 30; ++i) {
+    const double y = 0.4 * std::cos(0.7 * i), z = 0.3 * std::sin(1.3 * i), area = 0.01 + 0.001 * (i % 4);
+    fibers.push_back({y, z, area, kinds[i % 3]});
+    alone.push_back(kinds[i % 3]->clone());
+  }
+  FiberSection3d sec(7, fibers, 100.0);
+  ASSERT_EQ(sec.numFibers(), 30);
+  for (const Eigen::Vector4d e : {Eigen::Vector4d(-4e-4, 2e-3, -1e-3, 1e-3), Eigen::Vector4d(1e-4, -3e-3, 2e-3, 0.0)}) {
+    ASSERT_TRUE(ok(sec.setTrialDeformation(e)));
+    Eigen::Vector4d s = Eigen::Vector4d::Zero();
+    Eigen::Matrix4d k = Eigen::Matrix4d::Zero();
+    for (int i = 0; i < 30; ++i) {
+      const auto& f = fibers[static_cast<std::size_t>(i)];
+      auto& m = *alone[static_cast<std::size_t>(i)];
+      ASSERT_TRUE(ok(m.setTrialStrain(e(0) - f.y * e(1) + f.z * e(2))));
+      const Eigen::Vector3d a(1.0, -f.y, f.z);
+      s.head<3>() += m.getStress() * f.area * a;
+      k.topLeftCorner<3, 3>() += m.getTangent() * f.area * a * a.transpose();
+      EXPECT_EQ(sec.fiberMaterial(i).tag(), m.tag());
+      EXPECT_EQ(sec.fiberY(i), f.y);
+      EXPECT_DOUBLE_EQ(sec.fiberMaterial(i).getStress(), m.getStress());
+    }
+    s(3) = 100.0 * e(3);
+    k(3, 3) = 100.0;
+    EXPECT_LT((sec.getStressResultant() - s).norm(), 1e-12 * s.norm());
+    EXPECT_LT((sec.getSectionTangent() - k).norm(), 1e-12 * k.norm());
+    sec.commitState();
+    for (auto& m : alone) m->commitState();
+  }
+  EXPECT_EQ(sec.materialUpdates(), 60);
 }
 
 }  // namespace
