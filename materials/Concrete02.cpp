@@ -34,18 +34,35 @@ void Concrete02::Params::validate() const {
 
 Concrete02::Concrete02(int tag, const Params& params) : StatefulUniaxial(tag), params_(params) {
   assert(params.fpc < 0.0 && params.epsc0 < 0.0 && params.Ets > 0.0);
+  const auto& p = params_;
+  Ec0_ = 2.0 * p.fpc / p.epsc0;
+  epsR_ = (p.fpcu - p.lambda * Ec0_ * p.epsU) / (Ec0_ * (1.0 - p.lambda));
+  sigR_ = Ec0_ * epsR_;
+  epsCrack_ = p.ft / Ec0_;
+  epsZero_ = p.ft * (1.0 / p.Ets + 1.0 / Ec0_);
   revertToStart();
 }
 
 Concrete02::State Concrete02::initialState() const {
   State s;
   s.tangent = getInitialTangent();
+  setMinimumStrain(s, 0.0, 0.0);
   return s;
+}
+
+// Reloading from the largest compression reached (envelope stress sigMin there): the slope Er
+// towards point R (EERC report eq. 2.35) and the strain ept where that line crosses zero stress
+// (eq. 2.36).
+void Concrete02::setMinimumStrain(State& s, double ecmin, double sigMin) const {
+  s.ecmin = ecmin;
+  s.sigMin = sigMin;
+  s.Er = (s.sigMin - sigR_) / (ecmin - epsR_);
+  s.ept = ecmin - s.sigMin / s.Er;
 }
 
 void Concrete02::compressionEnvelope(double eps, double& stress, double& tangent) const {
   const auto& p = params_;
-  const double Ec0 = getInitialTangent();
+  const double Ec0 = Ec0_;
   const double ratio = eps / p.epsc0;
   if (eps >= p.epsc0) {  // Hognestad/Kent-Park parabola
     stress = p.fpc * ratio * (2.0 - ratio);
@@ -61,9 +78,9 @@ void Concrete02::compressionEnvelope(double eps, double& stress, double& tangent
 
 void Concrete02::tensionEnvelope(double eps, double& stress, double& tangent) const {
   const auto& p = params_;
-  const double Ec0 = getInitialTangent();
-  const double epsCrack = p.ft / Ec0;
-  const double epsZero = p.ft * (1.0 / p.Ets + 1.0 / Ec0);
+  const double Ec0 = Ec0_;
+  const double epsCrack = epsCrack_;
+  const double epsZero = epsZero_;
   if (eps <= epsCrack) {
     stress = eps * Ec0;
     tangent = Ec0;
@@ -77,8 +94,7 @@ void Concrete02::tensionEnvelope(double eps, double& stress, double& tangent) co
 }
 
 Status Concrete02::setTrialStrain(double strain, double /*strainRate*/) {
-  const auto& p = params_;
-  const double Ec0 = getInitialTangent();
+  const double Ec0 = Ec0_;
   trial_ = committed_;
   // Deliberate difference: OpenSees keeps the previous TRIAL stress here, which breaks trial
   // idempotence; the committed state is the consistent answer.
@@ -88,19 +104,10 @@ Status Concrete02::setTrialStrain(double strain, double /*strainRate*/) {
 
   if (strain < trial_.ecmin) {
     compressionEnvelope(strain, trial_.stress, trial_.tangent);
-    trial_.ecmin = strain;
+    setMinimumStrain(trial_, strain, trial_.stress);
     return std::isfinite(trial_.stress) ? Status::Ok : Status::NonFinite;
   }
-  // Point R fixing the reloading slope (EERC report eqs. 2.31, 2.32), the envelope stress at the
-  // previous minimum strain, the reloading slope Er (eq. 2.35) and its zero-stress strain ept
-  // (eq. 2.36).
-  const double epsR = (p.fpcu - p.lambda * Ec0 * p.epsU) / (Ec0 * (1.0 - p.lambda));
-  const double sigR = Ec0 * epsR;
-  double sigMin = 0.0;
-  double unused = 0.0;
-  compressionEnvelope(trial_.ecmin, sigMin, unused);
-  const double Er = (sigMin - sigR) / (trial_.ecmin - epsR);
-  const double ept = trial_.ecmin - sigMin / Er;
+  const double sigMin = trial_.sigMin, Er = trial_.Er, ept = trial_.ept;
 
   if (strain <= ept) {
     // between the reloading line (lower bound) and half its slope through ept (upper bound)

@@ -12,6 +12,10 @@ struct Concrete02State {
   double tangent = 0.0;  ///< d(stress)/d(strain)
   double ecmin = 0.0;    ///< most compressive strain reached
   double dept = 0.0;     ///< largest tensile strain beyond the zero-stress strain ept
+  // Functions of ecmin alone, formed when ecmin changes rather than at every update:
+  double sigMin = 0.0;   ///< envelope stress at ecmin
+  double Er = 0.0;       ///< reloading slope (EERC report eq. 2.35)
+  double ept = 0.0;      ///< zero-stress strain of the reloading line (eq. 2.36)
 };
 
 /// Concrete with linear tension softening (Yassin 1994; FEDEAS Concr2 by Sze & Filippou):
@@ -45,7 +49,7 @@ class Concrete02 final : public StatefulUniaxial<Concrete02State> {
   double getStrain() const override { return trial_.strain; }
   double getStress() const override { return trial_.stress; }
   double getTangent() const override { return trial_.tangent; }
-  double getInitialTangent() const override { return 2.0 * params_.fpc / params_.epsc0; }
+  double getInitialTangent() const override { return Ec0_; }
   [[nodiscard]] std::unique_ptr<UniaxialMaterial> clone() const override;
   const Params& params() const noexcept { return params_; }
 
@@ -56,7 +60,15 @@ class Concrete02 final : public StatefulUniaxial<Concrete02State> {
 
  private:
   State initialState() const override;
+  /// Sets ecmin (envelope stress sigMin there) and the reloading data that follow from it.
+  void setMinimumStrain(State& s, double ecmin, double sigMin) const;
   Params params_;
+  // Constants of the parameters (formed once; divisions are the cost of this law's update):
+  double Ec0_ = 0.0;       ///< initial tangent 2 fpc / epsc0
+  double epsR_ = 0.0;      ///< strain of point R fixing the reloading slope (eqs. 2.31, 2.32)
+  double sigR_ = 0.0;      ///< stress of point R
+  double epsCrack_ = 0.0;  ///< cracking strain ft / Ec0
+  double epsZero_ = 0.0;   ///< strain where tension softening reaches zero stress
 };
 
 }  // namespace dabs::materials

@@ -18,6 +18,8 @@ struct Steel02State {
   double epsR = 0.0;     ///< strain at the last reversal
   double sigR = 0.0;     ///< stress at the last reversal
   int kon = 0;           ///< 0 virgin, 1 loading (towards tension), 2 towards compression, 3 virgin at sigInit
+  double R = 0.0;        ///< curvature of the current branch (a function of epsPl and eps0)
+  double invR = 0.0;     ///< 1 / R
 };
 
 /// Menegotto-Pinto steel with Filippou isotropic hardening (Menegotto & Pinto 1973; Filippou,
@@ -59,7 +61,12 @@ class Steel02 final : public StatefulUniaxial<Steel02State> {
 
  private:
   State initialState() const override;
+  /// R = R0 (1 - cR1 xi / (cR2 + xi)) for the branch that epsPl and eps0 of `s` define.
+  void setCurvature(State& s) const;
   Params params_;
+  double epsy_ = 0.0;    ///< Fy / E
+  double Esh_ = 0.0;     ///< b E
+  double epsIni_ = 0.0;  ///< sigInit / E
 };
 
 }  // namespace dabs::materials
