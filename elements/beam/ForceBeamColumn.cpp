@@ -91,6 +91,18 @@ Status ForceBeamColumn<Ndm>::iterate(State& s, const Basic& target) const {
 
 template <int Ndm>
 Status ForceBeamColumn<Ndm>::solve(const Basic& target) {
+  // First from the last trial state: within a global Newton iteration the change of the basic
+  // deformations is small, so one or two local iterations converge (OpenSees'
+  // ForceBeamColumn3d::update continues from its trial state too). The state struct holds section
+  // deformations, forces and flexibilities that belong together, and the materials start every
+  // update from their committed state, so any consistent trial state is a valid start.
+  if (!trialIsCommitted_) {
+    work_ = trial_;
+    if (ok(iterate(work_, target))) {
+      trial_ = work_;
+      return Status::Ok;
+    }
+  }
   Status last = Status::NotConverged;
   for (int parts : {1, 4, 16}) {
     work_ = committed_;
@@ -100,6 +112,7 @@ Status ForceBeamColumn<Ndm>::solve(const Basic& target) {
       last = iterate(work_, start + (target - start) * (double(k) / parts));
     if (ok(last)) {
       trial_ = work_;
+      trialIsCommitted_ = false;
       return last;
     }
   }
@@ -128,6 +141,7 @@ void ForceBeamColumn<Ndm>::commitState() {
   this->transf_->commitState();
   for (auto& p : this->points_) p.section->commitState();
   committed_ = trial_;
+  trialIsCommitted_ = true;
   this->uCommitted_ = this->uTrial_;
 }
 
@@ -136,6 +150,7 @@ void ForceBeamColumn<Ndm>::revertToLastCommit() {
   this->transf_->revertToLastCommit();
   for (auto& p : this->points_) p.section->revertToLastCommit();
   trial_ = committed_;
+  trialIsCommitted_ = true;
   this->uTrial_ = this->uCommitted_;
   this->transf_->update(this->uTrial_);
   finish();
@@ -157,6 +172,7 @@ void ForceBeamColumn<Ndm>::revertToStart() {
   (void)length;
   s.kb = fe_.inverse();
   committed_ = trial_ = s;
+  trialIsCommitted_ = true;
   this->uTrial_.setZero();
   this->uCommitted_.setZero();
   this->transf_->update(this->uTrial_);

@@ -13,9 +13,9 @@ namespace dabs::elements {
 /// OpenSees/OpenSees:SRC/element/forceBeamColumn/ForceBeamColumn3d.cpp). Element state
 /// determination iterates on q until the compatible section deformations integrate to the trial
 /// basic deformations (Neuenhofer & Filippou 1997, J. Struct. Eng. 123(7), the "iterative"
-/// scheme), starting from the committed state; if maxIter iterations do not converge, the
-/// increment is split into 4 and then 16 sub-increments; if those fail too, update() returns
-/// Status::NotConverged (never loops forever).
+/// scheme), starting from the last trial state; if maxIter iterations do not converge, it starts
+/// again from the committed state, then splits the increment into 4 and 16 sub-increments; if
+/// those fail too, update() returns Status::NotConverged (never loops forever).
 template <int Ndm>
 class ForceBeamColumn final : public SectionBeamColumn<Ndm> {
  public:
@@ -63,6 +63,7 @@ class ForceBeamColumn final : public SectionBeamColumn<Ndm> {
   std::vector<SectionBasicMatrix<kBasic>> bmat_;
   BasicMatrix fe_ = BasicMatrix::Zero();  ///< initial (elastic) flexibility
   State trial_, committed_, work_;
+  bool trialIsCommitted_ = true;  ///< trial_ equals committed_ (no update since commit/revert)
 };
 
 using ForceBeamColumn2d = ForceBeamColumn<2>;
