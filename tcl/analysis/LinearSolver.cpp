@@ -7,6 +7,7 @@
 #include <map>
 
 #include "materials/InputError.h"
+#include "tcl/analysis/SparseLdlt.h"
 
 namespace dabs::analysis {
 
@@ -18,25 +19,29 @@ constexpr double kRelativePivotTolerance = 1e-14;
 
 class SparseLdltSolver final : public LinearSolver {
  public:
-  void analyzePattern(const Eigen::SparseMatrix<double>& A) override { ldlt_.analyzePattern(A); }
+  /// `definiteOnly`: report Singular unless every pivot is positive, so a caller can fall back to
+  /// a pivoting LU (LDL^T without pivoting is backward stable for definite matrices only).
+  explicit SparseLdltSolver(bool definiteOnly) : definiteOnly_(definiteOnly) {}
+  void analyzePattern(const Eigen::SparseMatrix<double>& A) override { ldlt_.analyze(A); }
   Status factorize(const Eigen::SparseMatrix<double>& A) override {
     ++factorizations_;
-    ldlt_.factorize(A);
-    if (ldlt_.info() != Eigen::Success) return Status::Singular;
-    const auto& d = ldlt_.vectorD();
+    if (!ok(ldlt_.factorize(A))) return Status::Singular;
+    const auto& d = ldlt_.pivots();
     if (d.size() == 0) return Status::Ok;
     if (!d.allFinite()) return Status::Singular;
     const double largest = d.cwiseAbs().maxCoeff();
     if (d.cwiseAbs().minCoeff() <= kRelativePivotTolerance * largest) return Status::Singular;
+    if (definiteOnly_ && d.minCoeff() <= 0.0) return Status::Singular;
     return Status::Ok;
   }
   Status solve(const Eigen::VectorXd& b, Eigen::VectorXd& x) override {
-    x = ldlt_.solve(b);
+    ldlt_.solve(b, x);
     return x.allFinite() ? Status::Ok : Status::NonFinite;
   }
 
  private:
-  Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>, Eigen::Lower, Eigen::AMDOrdering<int>> ldlt_;
+  SparseLdlt ldlt_;
+  bool definiteOnly_;
 };
 
 class SparseLuSolver final : public LinearSolver {
@@ -104,7 +109,11 @@ SolverKind solverKindFromName(const std::string& name) {
 std::unique_ptr<LinearSolver> LinearSolver::create(SolverKind kind, bool nonSymmetric) {
   if (kind == SolverKind::DenseLU) return std::make_unique<DenseLuSolver>();
   if (kind == SolverKind::SparseLU || nonSymmetric) return std::make_unique<SparseLuSolver>();
-  return std::make_unique<SparseLdltSolver>();
+  return std::make_unique<SparseLdltSolver>(false);
+}
+
+std::unique_ptr<LinearSolver> LinearSolver::createDefiniteLdlt() {
+  return std::make_unique<SparseLdltSolver>(true);
 }
 
 }  // namespace dabs::analysis

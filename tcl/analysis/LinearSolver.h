@@ -33,6 +33,8 @@ class LinearSolver {
 
   /// Creates a solver; `nonSymmetric` forces an LU even when an LDL^T was asked for.
   static std::unique_ptr<LinearSolver> create(SolverKind kind, bool nonSymmetric);
+  /// A sparse LDL^T whose factorize() reports Singular unless the matrix is positive definite.
+  static std::unique_ptr<LinearSolver> createDefiniteLdlt();
 
  protected:
   long factorizations_ = 0;

@@ -17,13 +17,15 @@ void LinearSystem::patternChanged() {
   primary_ = LinearSolver::create(kind_, false);
   if (model_.numEquations() > 0) primary_->analyzePattern(model_.pattern());
   general_.reset();
+  definite_.reset();
   solver_ = primary_.get();
   factored_ = false;
   B = X = Eigen::VectorXd::Zero(model_.numEquations());
 }
 
 long LinearSystem::factorizations() const noexcept {
-  return (primary_ ? primary_->factorizations() : 0) + (general_ ? general_->factorizations() : 0);
+  return (primary_ ? primary_->factorizations() : 0) + (general_ ? general_->factorizations() : 0) +
+         (definite_ ? definite_->factorizations() : 0);
 }
 
 Status LinearSystem::formTangent(const AssemblyCoefficients& c, bool reuse) {
@@ -37,14 +39,30 @@ Status LinearSystem::formTangent(const AssemblyCoefficients& c, bool reuse) {
   const auto& A = model_.formTangent(c);
   factored_ = false;
   solver_ = primary_.get();
-  if (kind_ == SolverKind::SparseLDLT && model_.nonSymmetricNow()) {
+  const bool symmetric = !model_.nonSymmetricNow();
+  if (kind_ == SolverKind::SparseLDLT && !symmetric) {
     if (!general_) {
       general_ = LinearSolver::create(SolverKind::SparseLU, true);
       general_->analyzePattern(model_.pattern());
     }
     solver_ = general_.get();
   }
-  const Status s = solver_->factorize(A);
+  // A general solver was named (UmfPack, BandGeneral, ...) but the matrix is symmetric: a sparse
+  // LDL^T costs a fraction of an LU and gives the same solution to round-off while the matrix is
+  // positive definite, the usual case for K + c1 C + c2 M. When it is not (softening, buckling),
+  // the pivoting LU the script asked for takes over for that matrix.
+  bool factorized = false;
+  if (kind_ == SolverKind::SparseLU && symmetric) {
+    if (!definite_) {
+      definite_ = LinearSolver::createDefiniteLdlt();
+      definite_->analyzePattern(model_.pattern());
+    }
+    if (ok(definite_->factorize(A))) {
+      solver_ = definite_.get();
+      factorized = true;
+    }
+  }
+  const Status s = factorized ? Status::Ok : solver_->factorize(A);
   if (!ok(s)) return s;
   lastCoefficients_ = c;
   factored_ = true;

@@ -40,9 +40,11 @@ class LinearSystem {
   AnalysisModel& model_;
   SolverKind kind_;
   // A symmetric system is factorised with LDL^T while every active element is symmetric and with
-  // LU while one is not (a sliding contact); each solver analyses the pattern once.
+  // LU while one is not (a sliding contact); a general system with LDL^T while the matrix is
+  // symmetric and positive definite, with LU otherwise; each solver analyses the pattern once.
   std::unique_ptr<LinearSolver> primary_;
   std::unique_ptr<LinearSolver> general_;
+  std::unique_ptr<LinearSolver> definite_;  ///< LDL^T for symmetric definite matrices of a general system
   LinearSolver* solver_ = nullptr;
   bool factored_ = false;
   AssemblyCoefficients lastCoefficients_;

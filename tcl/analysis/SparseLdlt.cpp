@@ -1,0 +1,137 @@
+// SPDX-License-Identifier: MIT
+#include "tcl/analysis/SparseLdlt.h"
+
+#include <Eigen/OrderingMethods>
+#include <cmath>
+
+namespace dabs::analysis {
+
+void SparseLdlt::analyze(const Eigen::SparseMatrix<double>& A) {
+  n_ = static_cast<int>(A.rows());
+  const auto n = static_cast<std::size_t>(n_);
+  // Fill-reducing order: AMD computes the inverse permutation (Eigen's convention).
+  Eigen::PermutationMatrix<Eigen::Dynamic, Eigen::Dynamic, int> inverse;
+  Eigen::AMDOrdering<int> amd;
+  amd(A, inverse);
+  perm_.assign(n, 0);
+  if (inverse.size() == n_) {
+    for (int k = 0; k < n_; ++k) perm_[static_cast<std::size_t>(inverse.indices()(k))] = k;
+  } else {
+    for (int k = 0; k < n_; ++k) perm_[static_cast<std::size_t>(k)] = k;
+  }
+
+  // Upper triangle of P A P^T (row <= column), and where each of A's values goes in it.
+  std::vector<int> count(n + 1, 0);
+  for (int j = 0; j < n_; ++j)
+    for (Eigen::SparseMatrix<double>::InnerIterator it(A, j); it; ++it) {
+      const int pi = perm_[static_cast<std::size_t>(it.row())], pj = perm_[static_cast<std::size_t>(j)];
+      if (pi <= pj) ++count[static_cast<std::size_t>(pj) + 1];
+    }
+  cp_.assign(n + 1, 0);
+  for (std::size_t j = 0; j < n; ++j) cp_[j + 1] = cp_[j] + count[j + 1];
+  ci_.assign(static_cast<std::size_t>(cp_[n]), 0);
+  cx_.assign(static_cast<std::size_t>(cp_[n]), 0.0);
+  valueTo_.assign(static_cast<std::size_t>(A.nonZeros()), -1);
+  std::vector<int> next(cp_.begin(), cp_.end() - 1);
+  for (int j = 0; j < n_; ++j)
+    for (Eigen::SparseMatrix<double>::InnerIterator it(A, j); it; ++it) {
+      const int pi = perm_[static_cast<std::size_t>(it.row())], pj = perm_[static_cast<std::size_t>(j)];
+      if (pi > pj) continue;
+      const int place = next[static_cast<std::size_t>(pj)]++;
+      ci_[static_cast<std::size_t>(place)] = pi;
+      valueTo_[static_cast<std::size_t>(&it.value() - A.valuePtr())] = place;
+    }
+
+  // Elimination tree and column counts of L (Davis 2005, ldl_symbolic): row k of L has a
+  // nonzero in column i for every node i on the tree paths from the entries of column k of the
+  // upper triangle up to k.
+  parent_.assign(n, -1);
+  lnz_.assign(n, 0);
+  flag_.assign(n, -1);
+  for (int k = 0; k < n_; ++k) {
+    flag_[static_cast<std::size_t>(k)] = k;
+    for (int p = cp_[static_cast<std::size_t>(k)]; p < cp_[static_cast<std::size_t>(k) + 1]; ++p) {
+      for (int i = ci_[static_cast<std::size_t>(p)]; flag_[static_cast<std::size_t>(i)] != k;
+           i = parent_[static_cast<std::size_t>(i)]) {
+        if (parent_[static_cast<std::size_t>(i)] == -1) parent_[static_cast<std::size_t>(i)] = k;
+        ++lnz_[static_cast<std::size_t>(i)];
+        flag_[static_cast<std::size_t>(i)] = k;
+      }
+    }
+  }
+  lp_.assign(n + 1, 0);
+  for (std::size_t k = 0; k < n; ++k) lp_[k + 1] = lp_[k] + lnz_[k];
+  li_.assign(static_cast<std::size_t>(lp_[n]), 0);
+  lx_.assign(static_cast<std::size_t>(lp_[n]), 0.0);
+  d_ = Eigen::VectorXd::Zero(n_);
+  pattern_.assign(n, 0);
+  y_.assign(n, 0.0);
+  work_ = Eigen::VectorXd::Zero(n_);
+}
+
+Status SparseLdlt::factorize(const Eigen::SparseMatrix<double>& A) {
+  const double* values = A.valuePtr();
+  const auto nnz = valueTo_.size();
+  for (std::size_t k = 0; k < nnz; ++k)
+    if (valueTo_[k] >= 0) cx_[static_cast<std::size_t>(valueTo_[k])] = values[k];
+
+  // Row k of L by a sparse triangular solve with the rows above it (Davis 2005, ldl_numeric):
+  // the pattern of row k is the set of tree paths from the entries of column k.
+  for (int k = 0; k < n_; ++k) {
+    const auto uk = static_cast<std::size_t>(k);
+    y_[uk] = 0.0;
+    int top = n_;
+    flag_[uk] = k;
+    lnz_[uk] = 0;
+    for (int p = cp_[uk]; p < cp_[uk + 1]; ++p) {
+      int i = ci_[static_cast<std::size_t>(p)];
+      y_[static_cast<std::size_t>(i)] += cx_[static_cast<std::size_t>(p)];
+      int len = 0;
+      for (; flag_[static_cast<std::size_t>(i)] != k; i = parent_[static_cast<std::size_t>(i)]) {
+        pattern_[static_cast<std::size_t>(len++)] = i;
+        flag_[static_cast<std::size_t>(i)] = k;
+      }
+      while (len > 0) pattern_[static_cast<std::size_t>(--top)] = pattern_[static_cast<std::size_t>(--len)];
+    }
+    double dk = y_[uk];
+    y_[uk] = 0.0;
+    for (; top < n_; ++top) {
+      const int i = pattern_[static_cast<std::size_t>(top)];
+      const auto ui = static_cast<std::size_t>(i);
+      const double yi = y_[ui];
+      y_[ui] = 0.0;
+      const int end = lp_[ui] + lnz_[ui];
+      for (int p = lp_[ui]; p < end; ++p)
+        y_[static_cast<std::size_t>(li_[static_cast<std::size_t>(p)])] -= lx_[static_cast<std::size_t>(p)] * yi;
+      const double lki = yi / d_(i);
+      dk -= lki * yi;
+      li_[static_cast<std::size_t>(end)] = k;
+      lx_[static_cast<std::size_t>(end)] = lki;
+      ++lnz_[ui];
+    }
+    if (!(dk != 0.0) || !std::isfinite(dk)) return Status::Singular;
+    d_(k) = dk;
+  }
+  return Status::Ok;
+}
+
+void SparseLdlt::solve(const Eigen::VectorXd& b, Eigen::VectorXd& x) {
+  Eigen::VectorXd& z = work_;
+  for (int i = 0; i < n_; ++i) z(perm_[static_cast<std::size_t>(i)]) = b(i);
+  for (int j = 0; j < n_; ++j) {  // L z = P b
+    const double zj = z(j);
+    for (int p = lp_[static_cast<std::size_t>(j)]; p < lp_[static_cast<std::size_t>(j) + 1]; ++p)
+      z(li_[static_cast<std::size_t>(p)]) -= lx_[static_cast<std::size_t>(p)] * zj;
+  }
+  for (int j = 0; j < n_; ++j) z(j) /= d_(j);
+  for (int j = n_ - 1; j >= 0; --j) {  // L^T
+    double zj = z(j);
+    for (int p = lp_[static_cast<std::size_t>(j)]; p < lp_[static_cast<std::size_t>(j) + 1]; ++p)
+      zj -= lx_[static_cast<std::size_t>(p)] * z(li_[static_cast<std::size_t>(p)]);
+    z(j) = zj;
+  }
+  if (x.size() != n_) x.resize(n_);
+  for (int i = 0; i < n_; ++i) x(i) = z(perm_[static_cast<std::size_t>(i)]);
+}
+
+}  // namespace dabs::analysis

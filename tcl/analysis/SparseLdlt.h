@@ -1,0 +1,53 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include <Eigen/Core>
+#include <Eigen/SparseCore>
+#include <vector>
+
+#include "materials/Status.h"
+
+namespace dabs::analysis {
+
+/// Sparse L D L^T of a symmetric matrix, by the up-looking row algorithm of Davis (2005),
+/// "Algorithm 849: A concise sparse Cholesky factorization package", ACM TOMS 31(4).
+///
+/// analyze() takes the matrix's full (symmetric) pattern once: the AMD fill-reducing order, the
+/// upper triangle of the permuted matrix, a map from each value of the given matrix to its place
+/// there, the elimination tree and the column counts of L. factorize() then gathers the values
+/// through that map and factorises with no permutation pass and no allocation, and solve()
+/// allocates nothing once x has its size. No pivoting: stable for definite matrices.
+class SparseLdlt {
+ public:
+  /// Symbolic analysis of `A`'s pattern, which must be structurally symmetric with every
+  /// diagonal entry present (the assembled stiffness pattern is).
+  void analyze(const Eigen::SparseMatrix<double>& A);
+  /// Numeric factorisation of a matrix with the analysed pattern (values in the same order as
+  /// A.valuePtr() of the analysed matrix). Status::Singular on a zero or non-finite pivot.
+  [[nodiscard]] Status factorize(const Eigen::SparseMatrix<double>& A);
+  /// Solves A x = b with the last factorisation.
+  void solve(const Eigen::VectorXd& b, Eigen::VectorXd& x);
+
+  /// Pivots D of the last factorisation (in the permuted order).
+  const Eigen::VectorXd& pivots() const noexcept { return d_; }
+  int size() const noexcept { return n_; }
+  /// Nonzeros of L below the diagonal.
+  int factorNonZeros() const noexcept { return n_ > 0 ? lp_[static_cast<std::size_t>(n_)] : 0; }
+
+ private:
+  int n_ = 0;
+  std::vector<int> perm_;        ///< new index of old row i
+  std::vector<int> valueTo_;     ///< place of A's value k in the permuted upper triangle, or -1
+  std::vector<int> cp_, ci_;     ///< permuted upper triangle, compressed columns
+  std::vector<double> cx_;
+  std::vector<int> parent_;      ///< elimination tree
+  std::vector<int> lp_, li_;     ///< L, compressed columns (strictly lower part)
+  std::vector<double> lx_;
+  Eigen::VectorXd d_;
+  // Workspace of the numeric factorisation and the solve.
+  std::vector<int> lnz_, flag_, pattern_;
+  std::vector<double> y_;
+  Eigen::VectorXd work_;
+};
+
+}  // namespace dabs::analysis

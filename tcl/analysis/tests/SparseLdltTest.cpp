@@ -1,0 +1,140 @@
+// SPDX-License-Identifier: MIT
+// Sparse LDL^T against a dense factorisation of the same matrices: definite and indefinite
+// stiffness-like matrices, refactorisation with new values, singular matrices, and the solvers
+// that the `system` names map onto.
+#include "tcl/analysis/SparseLdlt.h"
+
+#include <gtest/gtest.h>
+
+#include <Eigen/Dense>
+#include <random>
+
+#include "tcl/analysis/LinearSolver.h"
+
+namespace dabs::analysis {
+namespace {
+
+constexpr double kSolveTol = 1e-11;  // relative residual of a well-conditioned solve
+
+/// A stiffness-like matrix: random symmetric 6x6 blocks coupling neighbouring 3-dof nodes of a
+/// chain with a few long-range links (so the order matters), plus `shift` on the diagonal.
+Eigen::SparseMatrix<double> chain(int nodes, double shift, unsigned seed) {
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  const int n = 3 * nodes;
+  Eigen::MatrixXd dense = Eigen::MatrixXd::Zero(n, n);
+  auto couple = [&](int a, int b) {
+    Eigen::Matrix<double, 6, 6> r;
+    for (int i = 0; i < 6; ++i)
+      for (int j = 0; j < 6; ++j) r(i, j) = u(rng);
+    const Eigen::Matrix<double, 6, 6> k = r * r.transpose();  // positive semidefinite
+    const int idx[6] = {3 * a, 3 * a + 1, 3 * a + 2, 3 * b, 3 * b + 1, 3 * b + 2};
+    for (int i = 0; i < 6; ++i)
+      for (int j = 0; j < 6; ++j) dense(idx[i], idx[j]) += k(i, j);
+  };
+  for (int e = 0; e + 1 < nodes; ++e) couple(e, e + 1);
+  for (int e = 0; e + 7 < nodes; e += 5) couple(e, e + 7);
+  dense.diagonal().array() += shift;
+  // Keep every entry of the block pattern, zero or not, as the assembled pattern does.
+  std::vector<Eigen::Triplet<double>> t;
+  for (int j = 0; j < n; ++j)
+    for (int i = 0; i < n; ++i)
+      if (dense(i, j) != 0.0 || i == j) t.emplace_back(i, j, dense(i, j));
+  Eigen::SparseMatrix<double> A(n, n);
+  A.setFromTriplets(t.begin(), t.end());
+  A.makeCompressed();
+  return A;
+}
+
+void addToDiagonal(Eigen::SparseMatrix<double>& A, double s) {
+  for (int i = 0; i < A.rows(); ++i) A.coeffRef(i, i) += s;
+}
+
+double relativeResidual(const Eigen::SparseMatrix<double>& A, const Eigen::VectorXd& x,
+                        const Eigen::VectorXd& b) {
+  return (A * x - b).norm() / b.norm();
+}
+
+TEST(SparseLdltTest, SolvesDefiniteMatrixLikeDenseCholesky) {
+  const Eigen::SparseMatrix<double> A = chain(40, 0.1, 1);
+  SparseLdlt ldlt;
+  ldlt.analyze(A);
+  ASSERT_TRUE(ok(ldlt.factorize(A)));
+  const Eigen::VectorXd b = Eigen::VectorXd::LinSpaced(A.rows(), -1.0, 2.0);
+  Eigen::VectorXd x;
+  ldlt.solve(b, x);
+  const Eigen::VectorXd expected = Eigen::MatrixXd(A).llt().solve(b);
+  EXPECT_LT((x - expected).norm(), kSolveTol * expected.norm());
+  EXPECT_LT(relativeResidual(A, x, b), kSolveTol);
+  EXPECT_GT(ldlt.pivots().minCoeff(), 0.0);
+}
+
+TEST(SparseLdltTest, RefactorisesNewValuesOnTheSamePattern) {
+  Eigen::SparseMatrix<double> A = chain(30, 0.5, 2);
+  SparseLdlt ldlt;
+  ldlt.analyze(A);
+  for (int round = 0; round < 3; ++round) {
+    for (int k = 0; k < A.nonZeros(); ++k) A.valuePtr()[k] *= 1.0 + 0.1 * round;
+    addToDiagonal(A, 0.2 * round);
+    ASSERT_TRUE(ok(ldlt.factorize(A)));
+    const Eigen::VectorXd b = Eigen::VectorXd::Ones(A.rows());
+    Eigen::VectorXd x;
+    ldlt.solve(b, x);
+    EXPECT_LT(relativeResidual(A, x, b), kSolveTol) << "round " << round;
+  }
+}
+
+TEST(SparseLdltTest, IndefiniteMatrixGivesNegativePivotsAndTheRightSolution) {
+  // A shift below the smallest eigenvalue makes the matrix indefinite but nonsingular.
+  Eigen::SparseMatrix<double> A = chain(20, 0.0, 3);
+  const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eig{Eigen::MatrixXd(A)};
+  const double shift = 0.5 * (eig.eigenvalues()(0) + eig.eigenvalues()(1));
+  addToDiagonal(A, -shift);
+  SparseLdlt ldlt;
+  ldlt.analyze(A);
+  ASSERT_TRUE(ok(ldlt.factorize(A)));
+  EXPECT_LT(ldlt.pivots().minCoeff(), 0.0);  // Sylvester: one negative eigenvalue, one negative pivot
+  EXPECT_EQ((ldlt.pivots().array() < 0.0).count(), 1);
+  const Eigen::VectorXd b = Eigen::VectorXd::LinSpaced(A.rows(), 1.0, 3.0);
+  Eigen::VectorXd x;
+  ldlt.solve(b, x);
+  EXPECT_LT(relativeResidual(A, x, b), 1e-8);
+}
+
+TEST(SparseLdltTest, ZeroRowIsSingular) {
+  Eigen::SparseMatrix<double> A = chain(10, 1.0, 4);
+  for (Eigen::SparseMatrix<double>::InnerIterator it(A, 7); it; ++it) it.valueRef() = 0.0;
+  for (int j = 0; j < A.cols(); ++j)
+    for (Eigen::SparseMatrix<double>::InnerIterator it(A, j); it; ++it)
+      if (it.row() == 7) it.valueRef() = 0.0;
+  SparseLdlt ldlt;
+  ldlt.analyze(A);
+  EXPECT_EQ(ldlt.factorize(A), Status::Singular);
+}
+
+TEST(SparseLdltTest, GeneralSystemOfASymmetricMatrixSolvesLikeLu) {
+  // `system UmfPack` on a symmetric definite matrix is factorised with LDL^T: same solution.
+  const Eigen::SparseMatrix<double> A = chain(25, 0.3, 5);
+  auto lu = LinearSolver::create(SolverKind::SparseLU, false);
+  auto definite = LinearSolver::createDefiniteLdlt();
+  lu->analyzePattern(A);
+  definite->analyzePattern(A);
+  ASSERT_TRUE(ok(lu->factorize(A)));
+  ASSERT_TRUE(ok(definite->factorize(A)));
+  const Eigen::VectorXd b = Eigen::VectorXd::LinSpaced(A.rows(), -2.0, 1.0);
+  Eigen::VectorXd xLu, xLdlt;
+  ASSERT_TRUE(ok(lu->solve(b, xLu)));
+  ASSERT_TRUE(ok(definite->solve(b, xLdlt)));
+  EXPECT_LT((xLu - xLdlt).norm(), kSolveTol * xLu.norm());
+}
+
+TEST(SparseLdltTest, DefiniteOnlySolverRefusesIndefiniteMatrix) {
+  Eigen::SparseMatrix<double> A = chain(12, 0.0, 6);
+  addToDiagonal(A, -1e3);  // far below every eigenvalue: negative definite parts
+  auto definite = LinearSolver::createDefiniteLdlt();
+  definite->analyzePattern(A);
+  EXPECT_EQ(definite->factorize(A), Status::Singular);
+}
+
+}  // namespace
+}  // namespace dabs::analysis
