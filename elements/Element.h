@@ -80,6 +80,9 @@ class Element {
   /// False while the element's force, stiffness, damping and mass are all zero (an open contact): the
   /// assembly then skips it, though its place in the sparse pattern stays reserved.
   virtual bool isActive() const { return true; }
+  /// Material updates (setTrialStrain calls of section materials) since construction: a work count
+  /// for benchmarks, not part of the state.
+  virtual long materialUpdates() const { return 0; }
 
   virtual void commitState() = 0;
   virtual void revertToLastCommit() = 0;

@@ -50,6 +50,12 @@ class SectionBeamColumn : public FixedSizeElement<2, BeamColumnTraits<Ndm>::kDof
     return *points_[i].section;
   }
 
+  long materialUpdates() const override {
+    long n = 0;
+    for (const auto& p : points_) n += p.section->materialUpdates();
+    return n;
+  }
+
   /// globalForce, localForce, basicForce, basicDeformation, integrationPoints, and
   /// `section i ...` (1-based i) forwarded to the section.
   std::optional<Eigen::VectorXd> response(std::span<const std::string> args) const override {

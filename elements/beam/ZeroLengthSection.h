@@ -36,6 +36,7 @@ class ZeroLengthSection final : public FixedSizeElement<2, BeamColumnTraits<Ndm>
   [[nodiscard]] Status update(const Kinematics& trial) override;
   bool rayleighByDefault() const override { return false; }
   void commitState() override { section_->commitState(); }
+  long materialUpdates() const override { return section_->materialUpdates(); }
   void revertToLastCommit() override;
   void revertToStart() override;
   /// force/globalForce, basicForce/localForce (section resultants), deformation(s)/

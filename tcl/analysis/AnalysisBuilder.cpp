@@ -87,6 +87,7 @@ void AnalysisBuilder::ensureModel() {
   if (!model_ || model_->stale()) {
     auto model = std::make_unique<AnalysisModel>(domain_, constraints_, numberer_, alphaSP_, alphaMP_);
     model->build();  // throws InputError for constraints it cannot enforce; nothing changed yet
+    model->setThreads(threads_);
     model_ = std::move(model);
     system_ = std::make_unique<LinearSystem>(*model_, solver_);
     system_->patternChanged();
@@ -163,6 +164,8 @@ int AnalysisBuilder::analyze(int numSteps, double dt) {
   if (algorithm_->needsTest() && !test_) throw InputError("test", "is not defined");
   ensureModel();
   const long factorizationsBefore = system_->factorizations();
+  const long elementUpdatesBefore = model_->elementUpdates();
+  const long materialUpdatesBefore = domain_.materialUpdates();
   int result = 0;
   for (int step = 0; step < numSteps; ++step) {
     Status s = analyzeStep(dt);
@@ -179,6 +182,8 @@ int AnalysisBuilder::analyze(int numSteps, double dt) {
     }
   }
   stats_.factorizations += system_->factorizations() - factorizationsBefore;
+  stats_.elementUpdates += model_->elementUpdates() - elementUpdatesBefore;
+  stats_.materialUpdates += domain_.materialUpdates() - materialUpdatesBefore;
   domain_.flushRecorders();
   return result;
 }

@@ -23,6 +23,8 @@ struct AnalysisStatistics {
   long iterations = 0;        ///< algorithm iterations
   long factorizations = 0;    ///< numeric factorisations
   long equations = 0;         ///< equations of the last committed step (free dofs after constraints)
+  long elementUpdates = 0;    ///< element state determinations
+  long materialUpdates = 0;   ///< section material (fiber) state determinations
 };
 
 /// The analysis strategy of one interpreter (style.md section 4: one per Runtime, no globals):
@@ -60,10 +62,17 @@ class AnalysisBuilder {
   void invalidate() noexcept { model_.reset(); }
 
   const AnalysisStatistics& statistics() const noexcept { return stats_; }
+  /// Threads for element state determination (`threads n`); results do not depend on it.
+  void setThreads(int threads) {
+    threads_ = threads;
+    if (model_) model_->setThreads(threads);
+  }
+  int threads() const noexcept { return threads_; }
   /// Where convergence-test output goes.
   std::function<void(const std::string&)> log;
 
  private:
+  int threads_ = 1;
   void ensureModel();
   void refreshModalDamping();
   [[nodiscard]] Status analyzeStep(double dt);

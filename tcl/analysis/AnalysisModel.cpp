@@ -50,7 +50,7 @@ void AnalysisModel::numberEquations() {
   int ndofTotal = 0;
   for (auto& [tag, node] : domain_.nodes()) {
     nodeIndex_[tag] = static_cast<int>(nodes_.size());
-    nodes_.push_back(NodeLink{&node, ndofTotal, {}, {}, domain_.nodeAlphaM(tag)});
+    nodes_.push_back(NodeLink{&node, ndofTotal, {}, {}, {}, domain_.nodeAlphaM(tag)});
     ndofTotal += node.ndf();
   }
   auto dofIndex = [&](int nodeTag, int dof) {
@@ -270,7 +270,8 @@ void AnalysisModel::buildScatter() {
         for (int j = 0; j < n; ++j)
           for (auto [eb, cb] : localEqs[static_cast<std::size_t>(j)]) {
             triplets.emplace_back(ea, eb, 0.0);
-            link.mat.push_back(MatEntry{i * n + j, ea * neq_ + eb, ca * cb});  // value fixed below
+            link.mat.push_back(MatEntry{j * n + i, -1, ca * cb});  // value fixed below
+            link.rowCol.emplace_back(ea, eb);
           }
     elements_.push_back(std::move(link));
   }
@@ -291,7 +292,8 @@ void AnalysisModel::buildScatter() {
         for (auto [ea, ca] : localEqs[static_cast<std::size_t>(i)])
           for (auto [eb, cb] : localEqs[static_cast<std::size_t>(j)]) {
             triplets.emplace_back(ea, eb, 0.0);
-            nl.mass.push_back(MatEntry{i * ndf + j, ea * neq_ + eb, ca * cb});
+            nl.mass.push_back(MatEntry{j * ndf + i, -1, ca * cb});
+            nl.rowCol.emplace_back(ea, eb);
           }
       }
   }
@@ -302,16 +304,16 @@ void AnalysisModel::buildScatter() {
   A_.resize(neq_, neq_);
   A_.setFromTriplets(triplets.begin(), triplets.end());
   A_.makeCompressed();
-  // Replace the (row*neq+col) placeholders by value indices.
-  auto fix = [&](std::vector<MatEntry>& entries) {
-    for (MatEntry& m : entries) {
-      const int row = m.value / std::max(neq_, 1);
-      const int col = m.value % std::max(neq_, 1);
-      m.value = valueIndex(row, col);
-    }
+  // Each entry's place in the value array, from the (row, column) noted beside it.
+  auto fix = [&](std::vector<MatEntry>& entries, std::vector<std::pair<int, int>>& rowCol) {
+    for (std::size_t k = 0; k < entries.size(); ++k)
+      entries[k].value = valueIndex(rowCol[k].first, rowCol[k].second);
+    rowCol.clear();
+    rowCol.shrink_to_fit();
   };
-  for (ElementLink& l : elements_) fix(l.mat);
-  for (NodeLink& nl : nodes_) fix(nl.mass);
+  for (ElementLink& l : elements_) fix(l.mat, l.rowCol);
+  for (NodeLink& nl : nodes_) fix(nl.mass, nl.rowCol);
+  constantFor_.reset();
   for (PenaltyRow& row : penalties_) {
     row.valueIndex.clear();
     for (auto [ea, ca] : row.eqs)
@@ -319,6 +321,7 @@ void AnalysisModel::buildScatter() {
   }
   P_ = Eigen::VectorXd::Zero(neq_);
   influence_.clear();
+  elementStatus_.assign(elements_.size(), Status::Ok);
 }
 
 double AnalysisModel::termValue(const std::vector<Term>& terms, const Eigen::VectorXd& x,
@@ -360,7 +363,7 @@ void AnalysisModel::applyLoad(double t) {
       }
     }
   }
-  P_ = externalLoadAt(t);
+  externalLoadAt(t, P_);
 }
 
 const Eigen::VectorXd& AnalysisModel::influence(int dir) {
@@ -389,7 +392,14 @@ const Eigen::VectorXd& AnalysisModel::influence(int dir) {
 }
 
 Eigen::VectorXd AnalysisModel::externalLoadAt(double t) {
-  Eigen::VectorXd P = Eigen::VectorXd::Zero(neq_);
+  Eigen::VectorXd P;
+  externalLoadAt(t, P);
+  return P;
+}
+
+void AnalysisModel::externalLoadAt(double t, Eigen::VectorXd& P) {
+  if (P.size() != neq_) P.resize(neq_);
+  P.setZero();
   for (const auto& [ptag, p] : domain_.patterns()) {
     if (p->kind() == domain::LoadPattern::Kind::Plain) {
       const auto& plain = static_cast<const domain::PlainPattern&>(*p);
@@ -405,7 +415,6 @@ Eigen::VectorXd AnalysisModel::externalLoadAt(double t) {
       if (ag != 0.0) P.noalias() -= ag * influence(ue.dof());
     }
   }
-  return P;
 }
 
 void AnalysisModel::setResponse(const Eigen::VectorXd& U, const Eigen::VectorXd& V,
@@ -438,28 +447,44 @@ void AnalysisModel::getResponse(Eigen::VectorXd& U, Eigen::VectorXd& V, Eigen::V
   }
 }
 
+Status AnalysisModel::updateElement(ElementLink& l, double dt) const {
+  int offset = 0;
+  for (const domain::Node* n : l.nodes) {
+    const int ndf = n->ndf();
+    l.u.segment(offset, ndf) = n->disp;
+    l.v.segment(offset, ndf) = n->vel;
+    l.a.segment(offset, ndf) = n->accel;
+    offset += ndf;
+  }
+  if (!l.u.allFinite() || !l.v.allFinite()) return Status::NonFinite;
+  return l.element->update(elements::Kinematics{l.u, l.v, l.a, time_, dt});
+}
+
 Status AnalysisModel::updateElements() {
   const double dt = time_ - domain_.committedTime();
-  for (ElementLink& l : elements_) {
-    int offset = 0;
-    for (const domain::Node* n : l.nodes) {
-      const int ndf = n->ndf();
-      l.u.segment(offset, ndf) = n->disp;
-      l.v.segment(offset, ndf) = n->vel;
-      l.a.segment(offset, ndf) = n->accel;
-      offset += ndf;
-    }
-    if (!l.u.allFinite() || !l.v.allFinite()) return Status::NonFinite;
-    const Status s = l.element->update(elements::Kinematics{l.u, l.v, l.a, time_, dt});
-    if (!ok(s)) return s;
+  const auto count = static_cast<std::ptrdiff_t>(elements_.size());
+  // Every element is updated even when one fails, so each element's trial state (a force-based
+  // element starts its next update from its own) is the same whatever the order and the number of
+  // threads: elements share nothing, read only their nodes, and the assembly stays serial, so
+  // results are bit-identical at any thread count.
+  if (threads_ > 1 && count > 1) {
+#pragma omp parallel for schedule(dynamic, 4) num_threads(threads_)
+    for (std::ptrdiff_t k = 0; k < count; ++k)
+      elementStatus_[static_cast<std::size_t>(k)] = updateElement(elements_[static_cast<std::size_t>(k)], dt);
+  } else {
+    for (std::ptrdiff_t k = 0; k < count; ++k)
+      elementStatus_[static_cast<std::size_t>(k)] = updateElement(elements_[static_cast<std::size_t>(k)], dt);
   }
+  elementUpdates_ += count;
+  for (const Status s : elementStatus_)
+    if (!ok(s)) return s;
   return Status::Ok;
 }
 
 void AnalysisModel::addElementMatrix(std::vector<double>& values, const ElementLink& l,
                                      const Eigen::MatrixXd& m) const {
-  const int n = l.element->numDof();
-  for (const MatEntry& e : l.mat) values[static_cast<std::size_t>(e.value)] += e.coef * m(e.local / n, e.local % n);
+  const double* local = m.data();
+  for (const MatEntry& e : l.mat) values[static_cast<std::size_t>(e.value)] += e.coef * local[e.local];
 }
 
 void AnalysisModel::buildConstantDynamics() {
@@ -483,9 +508,9 @@ void AnalysisModel::buildConstantDynamics() {
   }
   for (const NodeLink& nl : nodes_) {
     const int ndf = nl.node->ndf();
-    const Eigen::MatrixXd& m = nl.node->mass();
+    const double* m = nl.node->mass().data();
     for (const MatEntry& me : nl.mass) {
-      const double v = me.coef * m(me.local / ndf, me.local % ndf);
+      const double v = me.coef * m[me.local];
       mass[static_cast<std::size_t>(me.value)] += v;
       damping[static_cast<std::size_t>(me.value)] += nl.alphaM * v;
     }
@@ -572,42 +597,57 @@ void AnalysisModel::formResidual(const AssemblyCoefficients& c, Eigen::VectorXd&
   }
 }
 
+void AnalysisModel::addElementTangent(double* values, ElementLink& l,
+                                      const AssemblyCoefficients& c) const {
+  const elements::Element& e = *l.element;
+  Eigen::MatrixXd& local = l.work;
+  const auto k = c.stiffness == StiffnessKind::Current ? e.tangentStiff() : e.initialStiff();
+  local.noalias() = c.cK * k;
+  if (c.cC != 0.0) {
+    local.noalias() += c.cC * e.dampingTangent();
+    if (l.rayleighOn) {
+      const auto& r = l.rayleigh;
+      if (r.alphaM != 0.0) local.noalias() += (c.cC * r.alphaM) * e.mass();
+      if (r.betaK != 0.0) local.noalias() += (c.cC * r.betaK) * e.tangentStiff();
+      if (r.betaK0 != 0.0) local.noalias() += (c.cC * r.betaK0) * e.initialStiff();
+      if (r.betaKc != 0.0) local.noalias() += (c.cC * r.betaKc) * e.committedStiff();
+    }
+  }
+  if (c.cM != 0.0) local.noalias() += c.cM * e.mass();
+  const double* m = local.data();
+  for (const MatEntry& me : l.mat) values[me.value] += me.coef * m[me.local];
+}
+
 const Eigen::SparseMatrix<double>& AnalysisModel::formTangent(const AssemblyCoefficients& c) {
   double* values = A_.valuePtr();
-  std::fill(values, values + A_.nonZeros(), 0.0);
-  for (ElementLink& l : elements_) {
-    const elements::Element& e = *l.element;
-    if (!e.isActive()) continue;
-    Eigen::MatrixXd& local = l.work;
-    const auto k = c.stiffness == StiffnessKind::Current ? e.tangentStiff() : e.initialStiff();
-    local.noalias() = c.cK * k;
-    if (c.cC != 0.0) {
-      local.noalias() += c.cC * e.dampingTangent();
-      if (l.rayleighOn) {
-        const auto& r = l.rayleigh;
-        if (r.alphaM != 0.0) local.noalias() += (c.cC * r.alphaM) * e.mass();
-        if (r.betaK != 0.0) local.noalias() += (c.cC * r.betaK) * e.tangentStiff();
-        if (r.betaK0 != 0.0) local.noalias() += (c.cC * r.betaK0) * e.initialStiff();
-        if (r.betaKc != 0.0) local.noalias() += (c.cC * r.betaKc) * e.committedStiff();
+  const auto nnz = static_cast<std::size_t>(A_.nonZeros());
+  // What cannot change between assemblies with the same coefficients (linear elements, nodal
+  // masses, penalty rows) is summed once and copied; only the other elements are formed again.
+  const bool sameCoefficients = constantFor_ && constantFor_->cK == c.cK && constantFor_->cC == c.cC &&
+                                constantFor_->cM == c.cM && constantFor_->stiffness == c.stiffness;
+  if (!sameCoefficients) {
+    std::fill(values, values + nnz, 0.0);
+    for (ElementLink& l : elements_)
+      if (l.element->isLinear() && l.element->isActive()) addElementTangent(values, l, c);
+    if (c.cM != 0.0 || c.cC != 0.0) {
+      for (NodeLink& nl : nodes_) {
+        const double f = c.cM + c.cC * nl.alphaM;
+        const double* m = nl.node->mass().data();
+        for (const MatEntry& me : nl.mass) values[me.value] += f * me.coef * m[me.local];
       }
     }
-    if (c.cM != 0.0) local.noalias() += c.cM * e.mass();
-    const int n = e.numDof();
-    for (const MatEntry& m : l.mat) values[m.value] += m.coef * local(m.local / n, m.local % n);
-  }
-  if (c.cM != 0.0 || c.cC != 0.0) {
-    for (NodeLink& nl : nodes_) {
-      const double f = c.cM + c.cC * nl.alphaM;
-      const int ndf = nl.node->ndf();
-      const Eigen::MatrixXd& m = nl.node->mass();
-      for (const MatEntry& me : nl.mass) values[me.value] += f * me.coef * m(me.local / ndf, me.local % ndf);
+    for (const PenaltyRow& row : penalties_) {
+      std::size_t idx = 0;
+      for (const auto& a : row.eqs)
+        for (const auto& b : row.eqs) values[row.valueIndex[idx++]] += c.cK * row.alpha * a.second * b.second;
     }
+    constantValues_.assign(values, values + nnz);
+    constantFor_ = c;
+  } else {
+    std::copy(constantValues_.begin(), constantValues_.end(), values);
   }
-  for (const PenaltyRow& row : penalties_) {
-    std::size_t idx = 0;
-    for (const auto& a : row.eqs)
-      for (const auto& b : row.eqs) values[row.valueIndex[idx++]] += c.cK * row.alpha * a.second * b.second;
-  }
+  for (ElementLink& l : elements_)
+    if (!l.element->isLinear() && l.element->isActive()) addElementTangent(values, l, c);
   return A_;
 }
 

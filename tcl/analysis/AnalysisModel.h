@@ -4,6 +4,7 @@
 #include <Eigen/Core>
 #include <Eigen/SparseCore>
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -67,6 +68,8 @@ class AnalysisModel {
   const Eigen::VectorXd& externalLoad() const noexcept { return P_; }
   /// External load vector at time t without changing the state (for reference loads).
   Eigen::VectorXd externalLoadAt(double t);
+  /// The same into P (resized only when its size differs: no allocation in the step loop).
+  void externalLoadAt(double t, Eigen::VectorXd& P);
 
   /// Writes U, V, A (equation space) to the nodes' trial response; prescribed dofs take their
   /// support values.
@@ -75,6 +78,10 @@ class AnalysisModel {
   void getResponse(Eigen::VectorXd& U, Eigen::VectorXd& V, Eigen::VectorXd& A, bool committed) const;
   /// Updates every element from its nodes' trial response.
   [[nodiscard]] Status updateElements();
+  /// Element updates since construction (a work count for benchmarks).
+  long elementUpdates() const noexcept { return elementUpdates_; }
+  /// Threads that update elements (1: the calling thread alone). Results do not depend on it.
+  void setThreads(int threads) noexcept { threads_ = threads < 1 ? 1 : threads; }
 
   /// Residual B = P - F_int (- inertia - damping when dynamic).
   void formResidual(const AssemblyCoefficients& c, Eigen::VectorXd& B) const;
@@ -110,7 +117,7 @@ class AnalysisModel {
     double coef;
   };
   struct MatEntry {
-    int local;  // row-major index i*n+j into the element matrix (row i, column j)
+    int local;  // offset j*n+i of (row i, column j) in the column-major element matrix
     int value;  // index into A_.valuePtr()
     double coef;
   };
@@ -119,6 +126,7 @@ class AnalysisModel {
     std::vector<domain::Node*> nodes;
     std::vector<VecEntry> vec;
     std::vector<MatEntry> mat;
+    std::vector<std::pair<int, int>> rowCol;  // (row, column) of each mat entry while building
     domain::RayleighFactors rayleigh;
     bool rayleighOn = false;
     Eigen::VectorXd u, v, a;          // gather buffers
@@ -128,7 +136,8 @@ class AnalysisModel {
   struct NodeLink {
     domain::Node* node;
     int firstDof;                 // index of the node's dof 0 in dofTerms
-    std::vector<MatEntry> mass;   // nodal mass scatter (local = i*ndf+j)
+    std::vector<MatEntry> mass;   // nodal mass scatter (local = j*ndf+i)
+    std::vector<std::pair<int, int>> rowCol;  // (row, column) of each mass entry while building
     std::vector<VecEntry> vec;
     double alphaM = 0.0;
   };
@@ -142,7 +151,10 @@ class AnalysisModel {
   void numberEquations();
   void buildScatter();
   void buildConstantDynamics();
+  [[nodiscard]] Status updateElement(ElementLink& l, double dt) const;
   void addElementMatrix(std::vector<double>& values, const ElementLink& l, const Eigen::MatrixXd& m) const;
+  /// Adds cK K + cC C + cM M of one element to the matrix values.
+  void addElementTangent(double* values, ElementLink& l, const AssemblyCoefficients& c) const;
   int valueIndex(int row, int col) const;
   double termValue(const std::vector<Term>& terms, const Eigen::VectorXd& x, int which) const;
 
@@ -170,6 +182,13 @@ class AnalysisModel {
   Eigen::SparseMatrix<double> massGlobal_, dampingGlobal_;
   std::vector<char> rayleighLeft_;   // per element: Rayleigh stiffness terms left to the element
   bool imposedMotion_ = false;
+  // Tangent values of what never changes (linear elements, nodal masses, penalty rows) for the
+  // coefficients constantFor_; reset when the pattern is built.
+  std::vector<double> constantValues_;
+  std::optional<AssemblyCoefficients> constantFor_;
+  long elementUpdates_ = 0;
+  int threads_ = 1;
+  std::vector<Status> elementStatus_;  // per element, of the last updateElements
   mutable Eigen::VectorXd eqVel_, eqAcc_;
   std::map<int, Eigen::VectorXd> influence_;  // M r per excitation dof, formed once per build
   const Eigen::VectorXd& influence(int dof);

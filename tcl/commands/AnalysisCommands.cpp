@@ -256,6 +256,19 @@ void resetCmd(Runtime& rt, ArgReader& a) {
   rt.analysis->invalidate();
 }
 
+// DABS extension: `threads ?n?` sets how many threads update the elements (1 to 256; results are
+// bit-identical at any count) and returns the count in force.
+void threadsCmd(Runtime& rt, ArgReader& a) {
+  if (const auto n = a.optionalInteger("n")) {
+    if (*n < 1 || *n > 256) a.fail("n must be 1 to 256, got " + std::to_string(*n));
+    a.finish();
+    rt.analysis->setThreads(*n);
+  } else {
+    a.finish();
+  }
+  setResult(rt, std::to_string(rt.analysis->threads()));
+}
+
 // DABS extension: what the analyses since the last wipe did, as a Tcl dict.
 void analysisStatisticsCmd(Runtime& rt, ArgReader& a) {
   a.finish();
@@ -263,12 +276,15 @@ void analysisStatisticsCmd(Runtime& rt, ArgReader& a) {
   const std::string text = "steps " + std::to_string(s.steps) + " failedSteps " + std::to_string(s.failedSteps) +
                            " subSteppedSteps " + std::to_string(s.subSteppedSteps) + " iterations " +
                            std::to_string(s.iterations) + " factorizations " + std::to_string(s.factorizations) +
-                           " equations " + std::to_string(s.equations);
+                           " equations " + std::to_string(s.equations) + " elementUpdates " +
+                           std::to_string(s.elementUpdates) + " materialUpdates " +
+                           std::to_string(s.materialUpdates);
   setResult(rt, text);
 }
 
 constexpr CommandEntry kCommands[] = {
     {"analysisStatistics", "analysisStatistics", analysisStatisticsCmd},
+    {"threads", "threads ?n?", threadsCmd},
     {"constraints", "constraints Plain|Transformation|Penalty ?alphaSP alphaMP?", constraintsCmd},
     {"numberer", "numberer Plain|RCM", numbererCmd},
     {"system", "system BandGeneral|BandSPD|ProfileSPD|SparseGeneral|UmfPack|FullGeneral|SparseSYM|Mumps", systemCmd},

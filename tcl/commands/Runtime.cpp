@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 #include "tcl/commands/Runtime.h"
 
+#include <cstdlib>
+
 #include "materials/InputError.h"
 #include "tcl/analysis/AnalysisBuilder.h"
 #include "tcl/commands/CommandTable.h"
@@ -16,6 +18,14 @@ Runtime::Runtime(Tcl_Interp* interpreter)
       Tcl_WriteChars(err, "\n", 1);
     }
   };
+  // DABS_THREADS=n runs element state determination on n threads for scripts that do not say
+  // `threads` themselves (an OpenSees script runs unchanged); a value that is not 1 to 256 is
+  // ignored.
+  if (const char* env = std::getenv("DABS_THREADS")) {
+    char* end = nullptr;
+    const long n = std::strtol(env, &end, 10);
+    if (end != env && *end == '\0' && n >= 1 && n <= 256) analysis->setThreads(static_cast<int>(n));
+  }
 }
 
 Runtime::~Runtime() {

@@ -246,6 +246,12 @@ void Domain::removeAllRecorders() {
   recorders_.clear();
 }
 
+long Domain::materialUpdates() const {
+  long n = 0;
+  for (const auto& [tag, e] : elements_) n += e->materialUpdates();
+  return n;
+}
+
 void Domain::flushRecorders() {
   for (auto& [tag, r] : recorders_) r->flush();
 }

@@ -115,6 +115,8 @@ class Domain {
   /// Increases whenever nodes, elements, constraints or patterns change; the analysis re-numbers
   /// its equations when this differs from what it saw.
   long modelVersion() const noexcept { return modelVersion_; }
+  /// Sum of the elements' material update counts (Element::materialUpdates).
+  long materialUpdates() const;
   void touch() noexcept { ++modelVersion_; }
 
   /// Eigenvalues of the last eigen analysis.
