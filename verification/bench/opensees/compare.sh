@@ -1,0 +1,106 @@
+#!/usr/bin/env bash
+# SPDX-License-Identifier: MIT
+# Times dabs against OpenSees on the same Tcl inputs (this folder's models), alternating the two
+# programs run by run, and prints per case: the median analysis time of each (the `analyze` call,
+# as the scripts print it) and of the whole process, the ratio OpenSees / dabs, dabs' work counts
+# (Newton iterations, factorisations, element and fiber-material updates), and the largest
+# relative difference between the two programs' recorded results (compare-results.py).
+#
+#   compare.sh [--opensees PATH] [--dabs PATH] [--repeat N] [--threads N] [--out DIR] [case ...]
+#
+# Cases: bridge3 bridge10 bridge30 bridge100 rcframe pushover linear-frame (default: all).
+# OpenSees is looked for at --opensees, then $OPENSEES, then `OpenSees` on the PATH; when it is
+# absent the comparison is skipped with a line saying so and dabs is timed alone. OpenSees is
+# never built by this project: build it from its public source yourself if you want the ratio.
+set -euo pipefail
+here="$(cd "$(dirname "$0")" && pwd)"
+dabs="$here/../../../build/dabs"
+opensees="${OPENSEES:-}"
+repeat=3
+threads=1
+out="opensees-bench-out"
+cases=()
+while (($#)); do
+  case "$1" in
+    --opensees) opensees="$2"; shift 2 ;;
+    --dabs) dabs="$2"; shift 2 ;;
+    --repeat) repeat="$2"; shift 2 ;;
+    --threads) threads="$2"; shift 2 ;;
+    --out) out="$2"; shift 2 ;;
+    -h|--help) sed -n '2,14p' "$0"; exit 0 ;;
+    *) cases+=("$1"); shift ;;
+  esac
+done
+((${#cases[@]})) || cases=(bridge3 bridge10 bridge30 bridge100 rcframe pushover linear-frame)
+[ -n "$opensees" ] || opensees="$(command -v OpenSees || true)"
+if [ -z "$opensees" ] || [ ! -x "$opensees" ]; then
+  echo "OpenSees not found (--opensees PATH or \$OPENSEES): timing dabs alone, no comparison"
+  opensees=""
+fi
+[ -x "$dabs" ] || { echo "dabs not found at $dabs (--dabs PATH)"; exit 2; }
+mkdir -p "$out"
+out="$(cd "$out" && pwd)"
+
+# case -> script, arguments, recorder files with their number of components per node/element
+spec() {
+  case "$1" in
+    bridge3) echo "bridge.tcl 3 4000|girder-disp.out:2 pier-disp.out:2 pier-force.out:6" ;;
+    bridge10) echo "bridge.tcl 10 1000|girder-disp.out:2 pier-disp.out:2 pier-force.out:6" ;;
+    bridge30) echo "bridge.tcl 30 1000|girder-disp.out:2 pier-disp.out:2 pier-force.out:6" ;;
+    bridge100) echo "bridge.tcl 100 200|girder-disp.out:2 pier-disp.out:2 pier-force.out:6" ;;
+    rcframe) echo "rcframe.tcl 1500|disp.out:1 force.out:3" ;;
+    pushover) echo "pushover.tcl 180|tip.out:1 force.out:6" ;;
+    linear-frame) echo "linear-frame.tcl 1500|roof.out:2 base.out:6" ;;
+    *) echo "unknown case $1" >&2; exit 2 ;;
+  esac
+}
+
+median() { sort -g | awk '{v[NR]=$1} END {if (NR%2) print v[(NR+1)/2]; else print (v[NR/2]+v[NR/2+1])/2}'; }
+
+# run PROGRAM DIR SCRIPT ARGS...: prints "analysis_s process_s" and leaves the program's output in DIR/log
+run() {
+  local prog="$1" dir="$2"; shift 2
+  mkdir -p "$dir"
+  local t0 t1
+  t0=$(date +%s.%N)
+  (cd "$dir" && "$prog" "$@" > log 2>&1) || true
+  t1=$(date +%s.%N)
+  local a
+  a=$(grep -o 'analyze_s=[0-9.e+-]*' "$dir/log" | tail -1 | cut -d= -f2)
+  echo "${a:-nan} $(echo "$t1 - $t0" | bc -l)"
+}
+
+printf '| case | dabs analyze s | OpenSees analyze s | OpenSees/dabs | process ratio | largest rel. diff | dabs iterations | factorisations | element updates | material updates |\n'
+printf '|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n'
+for c in "${cases[@]}"; do
+  s="$(spec "$c")"
+  args="${s%%|*}"; files="${s#*|}"
+  script="$here/${args%% *}"; rest="${args#* }"
+  da=(); dp=(); oa=(); op=()
+  for ((r = 1; r <= repeat; r++)); do
+    read -r a p < <(DABS_THREADS="$threads" run "$dabs" "$out/$c/dabs-$r" "$script" $rest "$out/$c/dabs-$r/res")
+    da+=("$a"); dp+=("$p")
+    if [ -n "$opensees" ]; then
+      read -r a p < <(run "$opensees" "$out/$c/opensees-$r" "$script" $rest "$out/$c/opensees-$r/res")
+      oa+=("$a"); op+=("$p")
+    fi
+  done
+  dA=$(printf '%s\n' "${da[@]}" | median); dP=$(printf '%s\n' "${dp[@]}" | median)
+  counts=$(grep '^counts' "$out/$c/dabs-1/log" | tail -1 || true)
+  get() { echo "$counts" | tr ' ' '\n' | awk -v k="$1" 'prev==k {print; exit} {prev=$0}'; }
+  if [ -n "$opensees" ]; then
+    oA=$(printf '%s\n' "${oa[@]}" | median); oP=$(printf '%s\n' "${op[@]}" | median)
+    worst=0
+    for f in $files; do
+      name="${f%%:*}"; n="${f##*:}"
+      d=$(python3 "$here/compare-results.py" "$out/$c/dabs-1/res/$name" "$out/$c/opensees-1/res/$name" --components "$n" | cut -d' ' -f1)
+      worst=$(python3 -c "print(max(float('$worst'), float('$d')))")
+    done
+    ratio=$(python3 -c "print(f'{$oA/$dA:.2f}')"); pratio=$(python3 -c "print(f'{$oP/$dP:.2f}')")
+    worst=$(python3 -c "print(f'{$worst:.1e}')")
+  else
+    oA="-"; ratio="-"; pratio="-"; worst="-"
+  fi
+  printf '| %s | %.3f | %s | %s | %s | %s | %s | %s | %s | %s |\n' "$c" "$dA" "$oA" "$ratio" "$pratio" "$worst" \
+    "$(get iterations)" "$(get factorizations)" "$(get elementUpdates)" "$(get materialUpdates)"
+done

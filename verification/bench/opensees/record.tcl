@@ -1,0 +1,36 @@
+# SPDX-License-Identifier: MIT
+# Reads a PEER NGA .AT2 record (header lines, then `NPTS= n, DT= dt SEC`, then values in g) and
+# writes its values one a line to a plain file that `timeSeries Path -filePath` reads in any
+# OpenSees-compatible program. Plain Tcl, so dabs and OpenSees run the same code.
+#
+#   set dt [writePlainRecord in.AT2 out.txt]   ;# returns the record's time step
+
+set ::benchRecordDir [file dirname [file normalize [info script]]]
+
+proc findRecord {name} {
+  set here $::benchRecordDir
+  foreach dir [list [file join $here .. .. data] [file join $here .. .. .. .. shared data ground-motions]] {
+    set f [file normalize [file join $dir $name]]
+    if {[file exists $f]} { return $f }
+  }
+  error "record $name not found in verification/data or ../shared/data/ground-motions"
+}
+
+proc writePlainRecord {at2 out} {
+  set in [open $at2 r]
+  set dt ""
+  set values {}
+  while {[gets $in line] >= 0} {
+    if {$dt eq ""} {
+      if {[regexp -nocase {NPTS\s*=\s*([0-9]+)\s*,\s*DT\s*=\s*([0-9.Ee+-]+)} $line -> npts dt]} { continue }
+      continue
+    }
+    foreach v $line { lappend values $v }
+  }
+  close $in
+  if {$dt eq ""} { error "$at2: no `NPTS= .., DT= ..` header line" }
+  set f [open $out w]
+  foreach v $values { puts $f $v }
+  close $f
+  return [expr {double($dt)}]
+}
