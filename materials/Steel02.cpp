@@ -48,6 +48,7 @@ void Steel02::setCurvature(State& s) const {
   const double xi = std::fabs((s.epsPl - s.eps0) / epsy_);
   s.R = p.R0 * (1.0 - (p.cR1 * xi) / (p.cR2 + xi));
   s.invR = 1.0 / s.R;
+  s.invSpan = 1.0 / (s.eps0 - s.epsR);
 }
 
 Steel02::State Steel02::initialState() const {
@@ -106,7 +107,7 @@ Status Steel02::setTrialStrain(double strain, double /*strainRate*/) {
     trial_.sigR = sigP;
     if (epsP < trial_.epsMin) trial_.epsMin = epsP;
     const double d1 = (trial_.epsMax - trial_.epsMin) / (2.0 * p.a4 * epsy);
-    const double shift = 1.0 + p.a3 * std::pow(d1, 0.8);
+    const double shift = p.a3 == 0.0 ? 1.0 : 1.0 + p.a3 * std::pow(d1, 0.8);
     // intersection of sig = sigR + E*(eps-epsR) with sig = Fy*shift + Esh*(eps - epsy*shift)
     trial_.eps0 = (p.Fy * shift - Esh * epsy * shift - trial_.sigR + p.E * trial_.epsR) / (p.E - Esh);
     trial_.sig0 = p.Fy * shift + Esh * (trial_.eps0 - epsy * shift);
@@ -119,7 +120,7 @@ Status Steel02::setTrialStrain(double strain, double /*strainRate*/) {
     trial_.sigR = sigP;
     if (epsP > trial_.epsMax) trial_.epsMax = epsP;
     const double d1 = (trial_.epsMax - trial_.epsMin) / (2.0 * p.a2 * epsy);
-    const double shift = 1.0 + p.a1 * std::pow(d1, 0.8);
+    const double shift = p.a1 == 0.0 ? 1.0 : 1.0 + p.a1 * std::pow(d1, 0.8);
     trial_.eps0 = (-p.Fy * shift + Esh * epsy * shift - trial_.sigR + p.E * trial_.epsR) / (p.E - Esh);
     trial_.sig0 = -p.Fy * shift + Esh * (trial_.eps0 + epsy * shift);
     trial_.epsPl = trial_.epsMin;
@@ -127,7 +128,7 @@ Status Steel02::setTrialStrain(double strain, double /*strainRate*/) {
   }
 
   // Menegotto-Pinto curve (Filippou et al. 1983, eqs. 3-5) and its exact derivative.
-  const double epsRat = (eps - trial_.epsR) / (trial_.eps0 - trial_.epsR);
+  const double epsRat = (eps - trial_.epsR) * trial_.invSpan;
   const double t = std::pow(std::fabs(epsRat), trial_.R);
   const double dum1 = 1.0 + t;
   // (1 + t)^(1/R): near the elastic branch t is small and the binomial series to t^3 equals the
@@ -140,7 +141,7 @@ Status Steel02::setTrialStrain(double strain, double /*strainRate*/) {
   const double sigStar = p.b * epsRat + (1.0 - p.b) * epsRat / dum2;
   trial_.stress = sigStar * (trial_.sig0 - trial_.sigR) + trial_.sigR;
   const double eStar = p.b + (1.0 - p.b) / (dum1 * dum2);
-  trial_.tangent = eStar * (trial_.sig0 - trial_.sigR) / (trial_.eps0 - trial_.epsR);
+  trial_.tangent = eStar * (trial_.sig0 - trial_.sigR) * trial_.invSpan;
   return std::isfinite(trial_.stress) && std::isfinite(trial_.tangent) ? Status::Ok
                                                                        : Status::NonFinite;
 }

@@ -20,6 +20,7 @@ struct Steel02State {
   int kon = 0;           ///< 0 virgin, 1 loading (towards tension), 2 towards compression, 3 virgin at sigInit
   double R = 0.0;        ///< curvature of the current branch (a function of epsPl and eps0)
   double invR = 0.0;     ///< 1 / R
+  double invSpan = 0.0;  ///< 1 / (eps0 - epsR), the strain normaliser of the branch
 };
 
 /// Menegotto-Pinto steel with Filippou isotropic hardening (Menegotto & Pinto 1973; Filippou,
@@ -61,7 +62,7 @@ class Steel02 final : public StatefulUniaxial<Steel02State> {
 
  private:
   State initialState() const override;
-  /// R = R0 (1 - cR1 xi / (cR2 + xi)) for the branch that epsPl and eps0 of `s` define.
+  /// R = R0 (1 - cR1 xi / (cR2 + xi)) and 1 / (eps0 - epsR) for the branch of `s`.
   void setCurvature(State& s) const;
   Params params_;
   double epsy_ = 0.0;    ///< Fy / E

@@ -67,28 +67,28 @@ class TypedFiberGroup final : public FiberGroup {
   }
 
   Status setTrial(double e0, double kz, double ky, FiberSums& sums) override {
-    FiberSums local = sums;  // a local copy stays in registers across the material calls
+    // Two passes: the material calls first, then the sums in a loop without calls, whose nine
+    // accumulators stay in registers (a call would make the compiler save them every fiber).
     Status status = Status::Ok;
     const std::size_t n = mats_.size();
     for (std::size_t i = 0; i < n; ++i) {
-      M& m = mats_[i];
-      const double y = y_[i], z = z_[i], a = area_[i];
-      const Status s = m.setTrialStrain(e0 - y * kz + z * ky);
+      const Status s = mats_[i].setTrialStrain(e0 - y_[i] * kz + z_[i] * ky);
       if (!ok(s)) status = s;
-      local.add(y, z, m.getStress() * a, m.getTangent() * a);
     }
-    sums = local;
+    addTo(sums, false);
     return status;
   }
 
   void addTo(FiberSums& sums, bool initial) const override {
+    FiberSums local = sums;
     const std::size_t n = mats_.size();
-    for (std::size_t i = 0; i < n; ++i) {
-      const M& m = mats_[i];
-      const double a = area_[i];
-      if (initial) sums.add(y_[i], z_[i], 0.0, m.getInitialTangent() * a);
-      else sums.add(y_[i], z_[i], m.getStress() * a, m.getTangent() * a);
+    if (initial) {
+      for (std::size_t i = 0; i < n; ++i) local.add(y_[i], z_[i], 0.0, mats_[i].getInitialTangent() * area_[i]);
+    } else {
+      for (std::size_t i = 0; i < n; ++i)
+        local.add(y_[i], z_[i], mats_[i].getStress() * area_[i], mats_[i].getTangent() * area_[i]);
     }
+    sums = local;
   }
 
   void commitState() override {

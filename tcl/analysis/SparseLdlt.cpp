@@ -64,9 +64,33 @@ void SparseLdlt::analyze(const Eigen::SparseMatrix<double>& A) {
   li_.assign(static_cast<std::size_t>(lp_[n]), 0);
   lx_.assign(static_cast<std::size_t>(lp_[n]), 0.0);
   d_ = Eigen::VectorXd::Zero(n_);
-  pattern_.assign(n, 0);
   y_.assign(n, 0.0);
   work_ = Eigen::VectorXd::Zero(n_);
+
+  // The pattern of every row of L, in an order in which each entry's updates come before it (the
+  // reversed tree paths of ldl_numeric). It depends on the pattern alone, so it is found once here
+  // rather than at every factorisation.
+  rowStart_.assign(n + 1, 0);
+  rowPattern_.assign(static_cast<std::size_t>(lp_[n]), 0);
+  std::vector<int> stack(n, 0);
+  flag_.assign(n, -1);
+  int filled = 0;
+  for (int k = 0; k < n_; ++k) {
+    const auto uk = static_cast<std::size_t>(k);
+    int top = n_;
+    flag_[uk] = k;
+    for (int p = cp_[uk]; p < cp_[uk + 1]; ++p) {
+      int len = 0;
+      for (int i = ci_[static_cast<std::size_t>(p)]; flag_[static_cast<std::size_t>(i)] != k;
+           i = parent_[static_cast<std::size_t>(i)]) {
+        stack[static_cast<std::size_t>(len++)] = i;
+        flag_[static_cast<std::size_t>(i)] = k;
+      }
+      while (len > 0) stack[static_cast<std::size_t>(--top)] = stack[static_cast<std::size_t>(--len)];
+    }
+    for (; top < n_; ++top) rowPattern_[static_cast<std::size_t>(filled++)] = stack[static_cast<std::size_t>(top)];
+    rowStart_[uk + 1] = filled;
+  }
 }
 
 Status SparseLdlt::factorize(const Eigen::SparseMatrix<double>& A) {
@@ -75,35 +99,23 @@ Status SparseLdlt::factorize(const Eigen::SparseMatrix<double>& A) {
   for (std::size_t k = 0; k < nnz; ++k)
     if (valueTo_[k] >= 0) cx_[static_cast<std::size_t>(valueTo_[k])] = values[k];
 
-  // Row k of L by a sparse triangular solve with the rows above it (Davis 2005, ldl_numeric):
-  // the pattern of row k is the set of tree paths from the entries of column k.
+  // Row k of L by a sparse triangular solve with the rows above it (Davis 2005, ldl_numeric),
+  // over the row pattern found by analyze().
+  std::fill(lnz_.begin(), lnz_.end(), 0);
   for (int k = 0; k < n_; ++k) {
     const auto uk = static_cast<std::size_t>(k);
-    y_[uk] = 0.0;
-    int top = n_;
-    flag_[uk] = k;
-    lnz_[uk] = 0;
-    for (int p = cp_[uk]; p < cp_[uk + 1]; ++p) {
-      int i = ci_[static_cast<std::size_t>(p)];
-      y_[static_cast<std::size_t>(i)] += cx_[static_cast<std::size_t>(p)];
-      int len = 0;
-      for (; flag_[static_cast<std::size_t>(i)] != k; i = parent_[static_cast<std::size_t>(i)]) {
-        pattern_[static_cast<std::size_t>(len++)] = i;
-        flag_[static_cast<std::size_t>(i)] = k;
-      }
-      while (len > 0) pattern_[static_cast<std::size_t>(--top)] = pattern_[static_cast<std::size_t>(--len)];
-    }
+    for (int p = cp_[uk]; p < cp_[uk + 1]; ++p)
+      y_[static_cast<std::size_t>(ci_[static_cast<std::size_t>(p)])] += cx_[static_cast<std::size_t>(p)];
     double dk = y_[uk];
     y_[uk] = 0.0;
-    for (; top < n_; ++top) {
-      const int i = pattern_[static_cast<std::size_t>(top)];
-      const auto ui = static_cast<std::size_t>(i);
+    for (int r = rowStart_[uk]; r < rowStart_[uk + 1]; ++r) {
+      const auto ui = static_cast<std::size_t>(rowPattern_[static_cast<std::size_t>(r)]);
       const double yi = y_[ui];
       y_[ui] = 0.0;
       const int end = lp_[ui] + lnz_[ui];
       for (int p = lp_[ui]; p < end; ++p)
         y_[static_cast<std::size_t>(li_[static_cast<std::size_t>(p)])] -= lx_[static_cast<std::size_t>(p)] * yi;
-      const double lki = yi / d_(i);
+      const double lki = yi / d_(static_cast<Eigen::Index>(ui));
       dk -= lki * yi;
       li_[static_cast<std::size_t>(end)] = k;
       lx_[static_cast<std::size_t>(end)] = lki;

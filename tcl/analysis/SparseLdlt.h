@@ -44,8 +44,9 @@ class SparseLdlt {
   std::vector<int> lp_, li_;     ///< L, compressed columns (strictly lower part)
   std::vector<double> lx_;
   Eigen::VectorXd d_;
-  // Workspace of the numeric factorisation and the solve.
-  std::vector<int> lnz_, flag_, pattern_;
+  std::vector<int> rowStart_, rowPattern_;  ///< pattern of each row of L, in update order
+  // Workspace of the symbolic and numeric factorisation and of the solve.
+  std::vector<int> lnz_, flag_;
   std::vector<double> y_;
   Eigen::VectorXd work_;
 };

@@ -74,7 +74,7 @@ int main(int argc, char** argv) {
   if (dabs::tcl::registerCommands(interp) != TCL_OK) return 2;
   const std::string script = std::string(DABS_SOURCE_DIR) + "/verification/bench/opensees/bridge.tcl";
   // Build the model and run 200 warm-up steps (first factorisations, recorder buffers).
-  if (!eval(interp, "set argv {" + std::to_string(spans) + " 200 allocations-out}; set argc 3; source {" +
+  if (!eval(interp, "set argv {" + std::to_string(spans) + " 200 [file join [pwd] allocations-out]}; set argc 3; source {" +
                         script + "}"))
     return 1;
   if (!measure(interp, "with recorders", steps)) return 1;

@@ -213,7 +213,7 @@ TEST(FiberSectionTest, MixedMaterialsSumLikeTheFibersOneByOne) {
   }
   FiberSection3d sec(7, fibers, 100.0);
   ASSERT_EQ(sec.numFibers(), 30);
-  for (const Eigen::Vector4d e : {Eigen::Vector4d(-4e-4, 2e-3, -1e-3, 1e-3), Eigen::Vector4d(1e-4, -3e-3, 2e-3, 0.0)}) {
+  for (const Eigen::Vector4d& e : {Eigen::Vector4d(-4e-4, 2e-3, -1e-3, 1e-3), Eigen::Vector4d(1e-4, -3e-3, 2e-3, 0.0)}) {
     ASSERT_TRUE(ok(sec.setTrialDeformation(e)));
     Eigen::Vector4d s = Eigen::Vector4d::Zero();
     Eigen::Matrix4d k = Eigen::Matrix4d::Zero();
