@@ -1,6 +1,9 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include <cfloat>
+#include <cmath>
+
 #include "materials/StatefulUniaxial.h"
 
 namespace dabs::materials {
@@ -17,6 +20,11 @@ struct Concrete02State {
   double Er = 0.0;       ///< reloading slope (EERC report eq. 2.35)
   double ept = 0.0;      ///< zero-stress strain of the reloading line (eq. 2.36)
 };
+
+namespace concrete02 {
+/// Tangent used by OpenSees on the flat branches instead of an exact zero.
+inline constexpr double kResidualTangent = 1.0e-10;
+}  // namespace concrete02
 
 /// Concrete with linear tension softening (Yassin 1994; FEDEAS Concr2 by Sze & Filippou):
 /// Kent-Scott-Park compression envelope (parabola to (epsc0, fpc), linear to (epsU, fpcu), then
@@ -70,5 +78,98 @@ class Concrete02 final : public StatefulUniaxial<Concrete02State> {
   double epsCrack_ = 0.0;  ///< cracking strain ft / Ec0
   double epsZero_ = 0.0;   ///< strain where tension softening reaches zero stress
 };
+
+// The update and its envelopes are defined here, inline, so that a fiber section's loop over
+// its Concrete02 fibers can inline them (the update is most of a fiber section's cost).
+
+// Reloading from the largest compression reached (envelope stress sigMin there): the slope Er
+// towards point R (EERC report eq. 2.35) and the strain ept where that line crosses zero stress
+// (eq. 2.36).
+inline void Concrete02::setMinimumStrain(State& s, double ecmin, double sigMin) const {
+  s.ecmin = ecmin;
+  s.sigMin = sigMin;
+  s.Er = (s.sigMin - sigR_) / (ecmin - epsR_);
+  s.ept = ecmin - s.sigMin / s.Er;
+}
+
+inline void Concrete02::compressionEnvelope(double eps, double& stress, double& tangent) const {
+  const auto& p = params_;
+  const double Ec0 = Ec0_;
+  const double ratio = eps / p.epsc0;
+  if (eps >= p.epsc0) {  // Hognestad/Kent-Park parabola
+    stress = p.fpc * ratio * (2.0 - ratio);
+    tangent = Ec0 * (1.0 - ratio);
+  } else if (eps > p.epsU) {  // linear descending branch
+    stress = (p.fpcu - p.fpc) * (eps - p.epsc0) / (p.epsU - p.epsc0) + p.fpc;
+    tangent = (p.fpcu - p.fpc) / (p.epsU - p.epsc0);
+  } else {  // residual strength
+    stress = p.fpcu;
+    tangent = concrete02::kResidualTangent;
+  }
+}
+
+inline void Concrete02::tensionEnvelope(double eps, double& stress, double& tangent) const {
+  const auto& p = params_;
+  const double Ec0 = Ec0_;
+  const double epsCrack = epsCrack_;
+  const double epsZero = epsZero_;
+  if (eps <= epsCrack) {
+    stress = eps * Ec0;
+    tangent = Ec0;
+  } else if (eps <= epsZero) {
+    tangent = -p.Ets;
+    stress = p.ft - p.Ets * (eps - epsCrack);
+  } else {
+    tangent = concrete02::kResidualTangent;
+    stress = 0.0;
+  }
+}
+
+inline Status Concrete02::setTrialStrain(double strain, double /*strainRate*/) {
+  const double Ec0 = Ec0_;
+  trial_ = committed_;
+  // Deliberate difference: OpenSees keeps the previous TRIAL stress here, which breaks trial
+  // idempotence; the committed state is the consistent answer.
+  const double deps = strain - committed_.strain;
+  if (std::fabs(deps) < DBL_EPSILON) return Status::Ok;
+  trial_.strain = strain;
+
+  if (strain < trial_.ecmin) {
+    compressionEnvelope(strain, trial_.stress, trial_.tangent);
+    setMinimumStrain(trial_, strain, trial_.stress);
+    return std::isfinite(trial_.stress) ? Status::Ok : Status::NonFinite;
+  }
+  const double sigMin = trial_.sigMin, Er = trial_.Er, ept = trial_.ept;
+
+  if (strain <= ept) {
+    // between the reloading line (lower bound) and half its slope through ept (upper bound)
+    const double lower = sigMin + Er * (strain - trial_.ecmin);
+    const double upper = 0.5 * Er * (strain - ept);
+    trial_.stress = committed_.stress + Ec0 * deps;
+    trial_.tangent = Ec0;
+    if (trial_.stress <= lower) {
+      trial_.stress = lower;
+      trial_.tangent = Er;
+    }
+    if (trial_.stress >= upper) {
+      trial_.stress = upper;
+      trial_.tangent = 0.5 * Er;
+    }
+  } else {
+    // tension: reload towards the largest previous tensile strain (eqs. 2.42, 2.43), then
+    // follow the tension envelope shifted by ept
+    const double epn = ept + trial_.dept;
+    if (strain <= epn) {
+      double sicn = 0.0;
+      tensionEnvelope(trial_.dept, sicn, trial_.tangent);
+      trial_.tangent = trial_.dept != 0.0 ? sicn / trial_.dept : Ec0;
+      trial_.stress = trial_.tangent * (strain - ept);
+    } else {
+      tensionEnvelope(strain - ept, trial_.stress, trial_.tangent);
+      trial_.dept = strain - ept;
+    }
+  }
+  return std::isfinite(trial_.stress) ? Status::Ok : Status::NonFinite;
+}
 
 }  // namespace dabs::materials

@@ -7,8 +7,31 @@
 namespace dabs::elements {
 
 namespace {
-/// Inverse of a section tangent; false when singular or not finite.
+/// Inverse of a fixed-size matrix by Eigen's closed form (cofactors up to 4x4); false when the
+/// determinant is zero or not finite.
+template <int N>
+bool invertFixed(const Eigen::Ref<const Eigen::MatrixXd>& k, Eigen::Ref<Eigen::MatrixXd> f) {
+  const Eigen::Matrix<double, N, N> a = k;
+  Eigen::Matrix<double, N, N> inverse;
+  double det = 0.0;
+  bool invertible = false;
+  a.computeInverseAndDetWithCheck(inverse, det, invertible, 0.0);
+  if (!invertible || !std::isfinite(det)) return false;
+  f = inverse;
+  return f.allFinite();
+}
+
+/// Inverse of a section tangent; false when singular or not finite. Orders 2 to 4 (the fiber
+/// sections' P-Mz and P-Mz-My-T) take the closed form, which is several times cheaper for these
+/// sizes than a general LU, run twice per section and local iteration.
 bool invert(const SectionMatrix& k, SectionMatrix& f) {
+  f.resize(k.rows(), k.cols());
+  switch (k.rows()) {
+    case 2: return invertFixed<2>(k, f);
+    case 3: return invertFixed<3>(k, f);
+    case 4: return invertFixed<4>(k, f);
+    default: break;
+  }
   Eigen::PartialPivLU<SectionMatrix> lu(k);
   const double det = lu.determinant();
   if (!(std::abs(det) > 0.0) || !std::isfinite(det)) return false;
@@ -73,9 +96,16 @@ Status ForceBeamColumn<Ndm>::iterate(State& s, const Basic& target) const {
       // Compatible deformations plus the residual (unbalanced) section deformations.
       vr += wl * b.transpose() * (s.e[i] + s.fs[i] * (force - s.sr[i]));
     }
-    const Eigen::PartialPivLU<BasicMatrix> lu(flex);
-    if (!(std::abs(lu.determinant()) > 0.0)) return Status::NotConverged;
-    s.kb = lu.inverse();
+    if constexpr (kBasic <= 4) {
+      double det = 0.0;
+      bool invertible = false;
+      flex.computeInverseAndDetWithCheck(s.kb, det, invertible, 0.0);
+      if (!invertible || !std::isfinite(det)) return Status::NotConverged;
+    } else {
+      const Eigen::PartialPivLU<BasicMatrix> lu(flex);
+      if (!(std::abs(lu.determinant()) > 0.0)) return Status::NotConverged;
+      s.kb = lu.inverse();
+    }
     const Basic dv = target - vr;
     const Basic dq = s.kb * dv;
     s.q += dq;

@@ -5,9 +5,9 @@
 #   dabs|OpenSees bridge.tcl nSpans nSteps outDir
 #
 # kN, m, s. nSpans simply supported 40 m spans (elastic girders, 4 elements a span, lumped mass)
-# on zeroLength bearings (bilinear lead-rubber shear springs, stiff vertical) over circular RC
-# piers (one forceBeamColumn each, 5 Lobatto points, 200 fibers: Concrete02 core and cover,
-# Steel02 bars) of 8, 10 and 12 m in turn, with fixed abutments. Adjacent girder ends meet over
+# on zeroLength bearings (bilinear lead-rubber shear springs, stiff vertical) over nSpans+1
+# circular RC piers (one forceBeamColumn each, 5 Lobatto points, 200 fibers: Concrete02 core and
+# cover, Steel02 bars) of 8, 10 and 12 m in turn. Adjacent girder ends meet over
 # each pier across a 50 mm expansion joint: a compression-only gap spring (ElasticPPGap) in the
 # longitudinal direction. Gravity by load control, then the Takatori EW record at 30 degrees to the
 # bridge axis (Newmark average acceleration, Newton, NormDispIncr 1e-8, UmfPack, RCM, dt 0.005 s).
@@ -53,42 +53,37 @@ uniaxialMaterial ElasticPPGap 20 2.0e6 -1.0e8 -0.05
 set mGirder [expr {18.0*$L/$nEle}]
 proc supportX {k} { return [expr {$k*$::L}] }
 
-# Supports k = 0..nSpans: abutments at 0 and nSpans, piers between. Support k has ground node
-# 100000+k, top (cap) node 200000+k. Span s (1..nSpans) has girder nodes 1000*s + 0..nEle.
+# Supports k = 0..nSpans, each a pier (a segment of a viaduct: the end piers would carry the
+# next segments' spans too). Support k has ground node 100000+k, top (cap) node 200000+k. Span s
+# (1..nSpans) has girder nodes 10*s + 0..nEle.
 for {set k 0} {$k <= $nSpans} {incr k} {
   set x [supportX $k]
-  if {$k == 0 || $k == $nSpans} {
-    node [expr {300000+$k}] $x 0.0 0.0
-    fix [expr {300000+$k}] 1 1 1 1 1 1
-    set cap($k) [expr {300000+$k}]
-  } else {
-    set h [lindex $heights [expr {($k-1) % [llength $heights]}]]
-    node [expr {100000+$k}] $x 0.0 [expr {-$h}]
-    node [expr {200000+$k}] $x 0.0 0.0 -mass 150.0 150.0 150.0 0.0 0.0 0.0
-    fix [expr {100000+$k}] 1 1 1 1 1 1
-    element forceBeamColumn [expr {100000+$k}] [expr {100000+$k}] [expr {200000+$k}] 1 1
-    set cap($k) [expr {200000+$k}]
-  }
+  set h [lindex $heights [expr {$k % [llength $heights]}]]
+  node [expr {100000+$k}] $x 0.0 [expr {-$h}]
+  node [expr {200000+$k}] $x 0.0 0.0 -mass 150.0 150.0 150.0 0.0 0.0 0.0
+  fix [expr {100000+$k}] 1 1 1 1 1 1
+  element forceBeamColumn [expr {100000+$k}] [expr {100000+$k}] [expr {200000+$k}] 1 1
+  set cap($k) [expr {200000+$k}]
 }
 for {set s 1} {$s <= $nSpans} {incr s} {
   set x0 [supportX [expr {$s-1}]]
   for {set i 0} {$i <= $nEle} {incr i} {
     set m [expr {($i == 0 || $i == $nEle) ? 0.5*$mGirder : $mGirder}]
-    node [expr {1000*$s+$i}] [expr {$x0 + $i*$L/$nEle}] 0.0 0.0 -mass $m $m $m 0.0 0.0 0.0
+    node [expr {10*$s+$i}] [expr {$x0 + $i*$L/$nEle}] 0.0 0.0 -mass $m $m $m 0.0 0.0 0.0
   }
   for {set i 0} {$i < $nEle} {incr i} {
-    element elasticBeamColumn [expr {1000*$s+$i}] [expr {1000*$s+$i}] [expr {1000*$s+$i+1}] \
+    element elasticBeamColumn [expr {10*$s+$i}] [expr {10*$s+$i}] [expr {10*$s+$i+1}] \
         6.0 3.0e7 1.25e7 6.0 3.0 40.0 2
   }
   # bearings under both ends of the span
   foreach {end k} [list 0 [expr {$s-1}] $nEle $s] {
-    element zeroLength [expr {2000000+10*$s+($end>0)}] $cap($k) [expr {1000*$s+$end}] \
+    element zeroLength [expr {2000000+10*$s+($end>0)}] $cap($k) [expr {10*$s+$end}] \
         -mat 10 10 11 12 13 13 -dir 1 2 3 4 5 6
   }
 }
 # expansion joints over the piers: span s end meets span s+1 start
 for {set s 1} {$s < $nSpans} {incr s} {
-  element zeroLength [expr {3000000+$s}] [expr {1000*$s+$nEle}] [expr {1000*($s+1)}] -mat 20 -dir 1
+  element zeroLength [expr {3000000+$s}] [expr {10*$s+$nEle}] [expr {10*($s+1)}] -mat 20 -dir 1
 }
 
 # Gravity: girder and cap weights as nodal loads.
@@ -97,10 +92,10 @@ pattern Plain 1 1 {
   for {set s 1} {$s <= $nSpans} {incr s} {
     for {set i 0} {$i <= $nEle} {incr i} {
       set m [expr {($i == 0 || $i == $nEle) ? 0.5*$mGirder : $mGirder}]
-      load [expr {1000*$s+$i}] 0.0 0.0 [expr {-$m*$g}] 0.0 0.0 0.0
+      load [expr {10*$s+$i}] 0.0 0.0 [expr {-$m*$g}] 0.0 0.0 0.0
     }
   }
-  for {set k 1} {$k < $nSpans} {incr k} { load [expr {200000+$k}] 0.0 0.0 [expr {-150.0*$g}] 0.0 0.0 0.0 }
+  for {set k 0} {$k <= $nSpans} {incr k} { load [expr {200000+$k}] 0.0 0.0 [expr {-150.0*$g}] 0.0 0.0 0.0 }
 }
 constraints Plain
 numberer RCM
@@ -126,9 +121,9 @@ rayleigh [expr {2.0*$z*$w1*$w2/($w1+$w2)}] 0.0 [expr {2.0*$z/($w1+$w2)}] 0.0
 
 set mid [expr {$nEle/2}]
 set girderNodes {}
-for {set s 1} {$s <= $nSpans} {incr s} { lappend girderNodes [expr {1000*$s+$mid}] [expr {1000*$s+$nEle}] }
+for {set s 1} {$s <= $nSpans} {incr s} { lappend girderNodes [expr {10*$s+$mid}] [expr {10*$s+$nEle}] }
 set pierTops {}; set piers {}
-for {set k 1} {$k < $nSpans} {incr k} { lappend pierTops [expr {200000+$k}]; lappend piers [expr {100000+$k}] }
+for {set k 0} {$k <= $nSpans} {incr k} { lappend pierTops [expr {200000+$k}]; lappend piers [expr {100000+$k}] }
 recorder Node -file [file join $outDir girder-disp.out] -time -precision 17 -node {*}$girderNodes -dof 1 2 disp
 recorder Node -file [file join $outDir pier-disp.out] -time -precision 17 -node {*}$pierTops -dof 1 2 disp
 recorder Element -file [file join $outDir pier-force.out] -time -precision 17 -ele {*}$piers localForce

@@ -3,8 +3,9 @@
 """Largest difference between two recorder files of the same script (first column the time),
 relative to the scale of the quantity: the largest magnitude over every column of the same
 component (columns 2, 2+n, 2+2n, ... for `--components n`), so a nearly zero column, such as the
-moment at a pinned end, is judged against that moment elsewhere, not against itself. Rows are
-matched by position.
+moment at a pinned end, is judged against that moment elsewhere, not against itself; a component
+that is zero in theory is judged against 1e-9 of the file's largest value. Rows are matched by
+position.
 
     compare-results.py a.out b.out ?--components n?  -> largest relative difference and its column
 """
@@ -29,9 +30,12 @@ def compare(a_path, b_path, components=1):
     worst, where = 0.0, ""
     ncol = len(a[0]) if a else 0
     colmax = [max(abs(r[c]) for r in b) for c in range(ncol)]
+    # A component that is zero in theory (torsion of a planar frame: 1e-17 against forces of 1)
+    # is judged against round-off of the file's largest value, not against its own noise.
+    floor = max(max(colmax[1:], default=0.0) * 1e-9, 1e-300)
     for c in range(ncol):
         same = [c] if c == 0 else range(1 + (c - 1) % components, ncol, components)
-        scale = max(max(colmax[k] for k in same), 1e-300)
+        scale = max(max(colmax[k] for k in same), floor)
         d = max(abs(ra[c] - rb[c]) for ra, rb in zip(a, b)) / scale
         if d > worst:
             worst, where = d, f"column {c + 1}"

@@ -8,7 +8,8 @@
 #
 #   compare.sh [--opensees PATH] [--dabs PATH] [--repeat N] [--threads N] [--out DIR] [case ...]
 #
-# Cases: bridge3 bridge10 bridge30 bridge100 rcframe pushover linear-frame (default: all).
+# Cases: bridge3 bridge10 bridge30 bridge100 rcframe pushover linear-frame linear-frame-once
+# (default: all).
 # OpenSees is looked for at --opensees, then $OPENSEES, then `OpenSees` on the PATH; when it is
 # absent the comparison is skipped with a line saying so and dabs is timed alone. OpenSees is
 # never built by this project: build it from its public source yourself if you want the ratio.
@@ -31,7 +32,7 @@ while (($#)); do
     *) cases+=("$1"); shift ;;
   esac
 done
-((${#cases[@]})) || cases=(bridge3 bridge10 bridge30 bridge100 rcframe pushover linear-frame)
+((${#cases[@]})) || cases=(bridge3 bridge10 bridge30 bridge100 rcframe pushover linear-frame linear-frame-once)
 [ -n "$opensees" ] || opensees="$(command -v OpenSees || true)"
 if [ -z "$opensees" ] || [ ! -x "$opensees" ]; then
   echo "OpenSees not found (--opensees PATH or \$OPENSEES): timing dabs alone, no comparison"
@@ -41,16 +42,18 @@ fi
 mkdir -p "$out"
 out="$(cd "$out" && pwd)"
 
-# case -> script, arguments, recorder files with their number of components per node/element
+# case -> script and arguments (OUT: the run's result folder), recorder files with their number of
+# components per node or element
 spec() {
   case "$1" in
-    bridge3) echo "bridge.tcl 3 4000|girder-disp.out:2 pier-disp.out:2 pier-force.out:6" ;;
-    bridge10) echo "bridge.tcl 10 1000|girder-disp.out:2 pier-disp.out:2 pier-force.out:6" ;;
-    bridge30) echo "bridge.tcl 30 1000|girder-disp.out:2 pier-disp.out:2 pier-force.out:6" ;;
-    bridge100) echo "bridge.tcl 100 200|girder-disp.out:2 pier-disp.out:2 pier-force.out:6" ;;
-    rcframe) echo "rcframe.tcl 1500|disp.out:1 force.out:3" ;;
-    pushover) echo "pushover.tcl 180|tip.out:1 force.out:6" ;;
-    linear-frame) echo "linear-frame.tcl 1500|roof.out:2 base.out:6" ;;
+    bridge3) echo "bridge.tcl 3 4000 OUT|girder-disp.out:2 pier-disp.out:2 pier-force.out:6" ;;
+    bridge10) echo "bridge.tcl 10 1000 OUT|girder-disp.out:2 pier-disp.out:2 pier-force.out:6" ;;
+    bridge30) echo "bridge.tcl 30 1000 OUT|girder-disp.out:2 pier-disp.out:2 pier-force.out:6" ;;
+    bridge100) echo "bridge.tcl 100 200 OUT|girder-disp.out:2 pier-disp.out:2 pier-force.out:6" ;;
+    rcframe) echo "rcframe.tcl 1500 OUT|disp.out:1 force.out:3" ;;
+    pushover) echo "pushover.tcl 140 OUT|tip.out:1 force.out:6" ;;
+    linear-frame) echo "linear-frame.tcl 1500 OUT|roof.out:2 base.out:6" ;;
+    linear-frame-once) echo "linear-frame.tcl 1500 OUT -factorOnce|roof.out:2 base.out:6" ;;
     *) echo "unknown case $1" >&2; exit 2 ;;
   esac
 }
@@ -78,10 +81,10 @@ for c in "${cases[@]}"; do
   script="$here/${args%% *}"; rest="${args#* }"
   da=(); dp=(); oa=(); op=()
   for ((r = 1; r <= repeat; r++)); do
-    read -r a p < <(DABS_THREADS="$threads" run "$dabs" "$out/$c/dabs-$r" "$script" $rest "$out/$c/dabs-$r/res")
+    read -r a p < <(DABS_THREADS="$threads" run "$dabs" "$out/$c/dabs-$r" "$script" ${rest//OUT/$out/$c/dabs-$r/res})
     da+=("$a"); dp+=("$p")
     if [ -n "$opensees" ]; then
-      read -r a p < <(run "$opensees" "$out/$c/opensees-$r" "$script" $rest "$out/$c/opensees-$r/res")
+      read -r a p < <(run "$opensees" "$out/$c/opensees-$r" "$script" ${rest//OUT/$out/$c/opensees-$r/res})
       oa+=("$a"); op+=("$p")
     fi
   done
@@ -97,7 +100,7 @@ for c in "${cases[@]}"; do
       worst=$(python3 -c "print(max(float('$worst'), float('$d')))")
     done
     ratio=$(python3 -c "print(f'{$oA/$dA:.2f}')"); pratio=$(python3 -c "print(f'{$oP/$dP:.2f}')")
-    worst=$(python3 -c "print(f'{$worst:.1e}')")
+    worst=$(python3 -c "print(f'{float(\"$worst\"):.1e}')")
   else
     oA="-"; ratio="-"; pratio="-"; worst="-"
   fi

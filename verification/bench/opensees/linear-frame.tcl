@@ -4,7 +4,7 @@
 # 0.5 of it along Y, Newmark average acceleration with `algorithm Linear` (one factorisation for
 # the whole run). Our own model for timing dabs against OpenSees.
 #
-#   dabs|OpenSees linear-frame.tcl nSteps outDir
+#   dabs|OpenSees linear-frame.tcl nSteps outDir ?-factorOnce?
 set nSteps [expr {$argc > 0 ? [lindex $argv 0] : 1500}]
 set outDir [expr {$argc > 1 ? [lindex $argv 1] : "linear-frame-out"}]
 file mkdir $outDir
@@ -48,7 +48,8 @@ rayleigh 0.35 0.0 0.004 0.0
 recorder Node -file [file join $outDir roof.out] -time -precision 12 -node [nid 0 0 $ns] [nid $nb $nb $ns] -dof 1 2 disp
 recorder Element -file [file join $outDir base.out] -time -precision 12 -ele 1 localForce
 constraints Plain; numberer RCM; system BandSPD
-test NormDispIncr 1.0e-8 10; algorithm Linear
+set algorithmArgs [expr {$argc > 2 ? [lindex $argv 2] : ""}]
+test NormDispIncr 1.0e-8 10; algorithm Linear {*}$algorithmArgs
 integrator Newmark 0.5 0.25; analysis Transient
 set t0 [clock milliseconds]
 set ok [analyze $nSteps 0.01]

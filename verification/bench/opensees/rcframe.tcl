@@ -1,6 +1,6 @@
 # SPDX-License-Identifier: MIT
 # Two-storey, two-bay reinforced-concrete frame in 2D (kN, m, s): force-based columns and
-# displacement-based beams with fiber sections (Concrete01 confined core and cover, Steel01 bars),
+# displacement-based beams with fiber sections (Concrete01 confined core and cover, Steel02 bars),
 # gravity by load control, then the El Centro NS record (Newmark, Newton, NormDispIncr 1e-8,
 # BandGeneral, RCM). Our own model for timing dabs against OpenSees on one input.
 #
@@ -26,7 +26,7 @@ foreach level {1 2} {
 }
 uniaxialMaterial Concrete01 1 -34000.0 -0.004 -24000.0 -0.014
 uniaxialMaterial Concrete01 2 -27600.0 -0.002 0.0 -0.006
-uniaxialMaterial Steel01 3 420000.0 2.0e8 0.01
+uniaxialMaterial Steel02 3 420000.0 2.0e8 0.01 18.0 0.925 0.15
 proc rcSection {tag b h cover barArea nBars} {
   set y1 [expr {$h/2.0}]; set z1 [expr {$b/2.0}]
   section Fiber $tag {

@@ -1,5 +1,6 @@
 # SPDX-License-Identifier: MIT
-# Reads a PEER NGA .AT2 record (header lines, then `NPTS= n, DT= dt SEC`, then values in g) and
+# Reads a PEER NGA .AT2 record (header lines, then `NPTS= n, DT= dt SEC`, then values in g, up
+# to a trailer such as `*** End data ***` if there is one) and
 # writes its values one a line to a plain file that `timeSeries Path -filePath` reads in any
 # OpenSees-compatible program. Plain Tcl, so dabs and OpenSees run the same code.
 #
@@ -25,7 +26,10 @@ proc writePlainRecord {at2 out} {
       if {[regexp -nocase {NPTS\s*=\s*([0-9]+)\s*,\s*DT\s*=\s*([0-9.Ee+-]+)} $line -> npts dt]} { continue }
       continue
     }
-    foreach v $line { lappend values $v }
+    foreach v $line {
+      if {![string is double -strict $v]} { break }
+      lappend values $v
+    }
   }
   close $in
   if {$dt eq ""} { error "$at2: no `NPTS= .., DT= ..` header line" }
