@@ -42,6 +42,11 @@ class Concrete01 final : public StatefulUniaxial<Concrete01State> {
   Concrete01(int tag, const Params& params);
 
   [[nodiscard]] Status setTrialStrain(double strain, double strainRate = 0.0) override;
+  /// The update as a function of the committed state: trial = the state at `strain`. Fiber
+  /// sections keep only the states of their fibers and call this with one parameter set.
+  [[nodiscard]] Status computeTrial(const State& committed, State& trial, double strain) const;
+  /// The virgin state.
+  State virginState() const { return initialState(); }
   double getStrain() const override { return trial_.strain; }
   double getStress() const override { return trial_.stress; }
   double getTangent() const override { return trial_.tangent; }
@@ -114,34 +119,38 @@ inline void Concrete01::reload(State& s) const {
   }
 }
 
-inline Status Concrete01::setTrialStrain(double strain, double /*strainRate*/) {
-  trial_ = committed_;
-  if (std::fabs(strain - committed_.strain) < DBL_EPSILON) return Status::Ok;
-  trial_.strain = strain;
+inline Status Concrete01::computeTrial(const State& committed, State& trial, double strain) const {
+  trial = committed;
+  if (std::fabs(strain - committed.strain) < DBL_EPSILON) return Status::Ok;
+  trial.strain = strain;
   if (strain > 0.0) {  // no tensile strength
-    trial_.stress = 0.0;
-    trial_.tangent = 0.0;
+    trial.stress = 0.0;
+    trial.tangent = 0.0;
     return Status::Ok;
   }
   // Line through the committed point with the committed unloading slope. It meets the
   // envelope exactly where a reloading line rejoins it, so the evaluation order decides ties;
   // it is kept as in OpenSees (sig_c + k*eps - k*eps_c) to reproduce its branch choice.
-  const double linear = committed_.stress + committed_.unloadSlope * strain -
-                        committed_.unloadSlope * committed_.strain;
-  if (strain < committed_.strain) {
-    reload(trial_);
-    if (linear > trial_.stress) {
-      trial_.stress = linear;
-      trial_.tangent = trial_.unloadSlope;
+  const double linear = committed.stress + committed.unloadSlope * strain -
+                        committed.unloadSlope * committed.strain;
+  if (strain < committed.strain) {
+    reload(trial);
+    if (linear > trial.stress) {
+      trial.stress = linear;
+      trial.tangent = trial.unloadSlope;
     }
   } else if (linear <= 0.0) {
-    trial_.stress = linear;
-    trial_.tangent = committed_.unloadSlope;
+    trial.stress = linear;
+    trial.tangent = committed.unloadSlope;
   } else {
-    trial_.stress = 0.0;
-    trial_.tangent = 0.0;
+    trial.stress = 0.0;
+    trial.tangent = 0.0;
   }
-  return std::isfinite(trial_.stress) ? Status::Ok : Status::NonFinite;
+  return std::isfinite(trial.stress) ? Status::Ok : Status::NonFinite;
+}
+
+inline Status Concrete01::setTrialStrain(double strain, double /*strainRate*/) {
+  return computeTrial(committed_, trial_, strain);
 }
 
 }  // namespace dabs::materials

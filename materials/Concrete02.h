@@ -54,6 +54,11 @@ class Concrete02 final : public StatefulUniaxial<Concrete02State> {
   Concrete02(int tag, const Params& params);
 
   [[nodiscard]] Status setTrialStrain(double strain, double strainRate = 0.0) override;
+  /// The update as a function of the committed state: trial = the state at `strain`. Fiber
+  /// sections keep only the states of their fibers and call this with one parameter set.
+  [[nodiscard]] Status computeTrial(const State& committed, State& trial, double strain) const;
+  /// The virgin state.
+  State virginState() const { return initialState(); }
   double getStrain() const override { return trial_.strain; }
   double getStress() const override { return trial_.stress; }
   double getTangent() const override { return trial_.tangent; }
@@ -125,51 +130,55 @@ inline void Concrete02::tensionEnvelope(double eps, double& stress, double& tang
   }
 }
 
-inline Status Concrete02::setTrialStrain(double strain, double /*strainRate*/) {
+inline Status Concrete02::computeTrial(const State& committed, State& trial, double strain) const {
   const double Ec0 = Ec0_;
-  trial_ = committed_;
+  trial = committed;
   // Deliberate difference: OpenSees keeps the previous TRIAL stress here, which breaks trial
   // idempotence; the committed state is the consistent answer.
-  const double deps = strain - committed_.strain;
+  const double deps = strain - committed.strain;
   if (std::fabs(deps) < DBL_EPSILON) return Status::Ok;
-  trial_.strain = strain;
+  trial.strain = strain;
 
-  if (strain < trial_.ecmin) {
-    compressionEnvelope(strain, trial_.stress, trial_.tangent);
-    setMinimumStrain(trial_, strain, trial_.stress);
-    return std::isfinite(trial_.stress) ? Status::Ok : Status::NonFinite;
+  if (strain < trial.ecmin) {
+    compressionEnvelope(strain, trial.stress, trial.tangent);
+    setMinimumStrain(trial, strain, trial.stress);
+    return std::isfinite(trial.stress) ? Status::Ok : Status::NonFinite;
   }
-  const double sigMin = trial_.sigMin, Er = trial_.Er, ept = trial_.ept;
+  const double sigMin = trial.sigMin, Er = trial.Er, ept = trial.ept;
 
   if (strain <= ept) {
     // between the reloading line (lower bound) and half its slope through ept (upper bound)
-    const double lower = sigMin + Er * (strain - trial_.ecmin);
+    const double lower = sigMin + Er * (strain - trial.ecmin);
     const double upper = 0.5 * Er * (strain - ept);
-    trial_.stress = committed_.stress + Ec0 * deps;
-    trial_.tangent = Ec0;
-    if (trial_.stress <= lower) {
-      trial_.stress = lower;
-      trial_.tangent = Er;
+    trial.stress = committed.stress + Ec0 * deps;
+    trial.tangent = Ec0;
+    if (trial.stress <= lower) {
+      trial.stress = lower;
+      trial.tangent = Er;
     }
-    if (trial_.stress >= upper) {
-      trial_.stress = upper;
-      trial_.tangent = 0.5 * Er;
+    if (trial.stress >= upper) {
+      trial.stress = upper;
+      trial.tangent = 0.5 * Er;
     }
   } else {
     // tension: reload towards the largest previous tensile strain (eqs. 2.42, 2.43), then
     // follow the tension envelope shifted by ept
-    const double epn = ept + trial_.dept;
+    const double epn = ept + trial.dept;
     if (strain <= epn) {
       double sicn = 0.0;
-      tensionEnvelope(trial_.dept, sicn, trial_.tangent);
-      trial_.tangent = trial_.dept != 0.0 ? sicn / trial_.dept : Ec0;
-      trial_.stress = trial_.tangent * (strain - ept);
+      tensionEnvelope(trial.dept, sicn, trial.tangent);
+      trial.tangent = trial.dept != 0.0 ? sicn / trial.dept : Ec0;
+      trial.stress = trial.tangent * (strain - ept);
     } else {
-      tensionEnvelope(strain - ept, trial_.stress, trial_.tangent);
-      trial_.dept = strain - ept;
+      tensionEnvelope(strain - ept, trial.stress, trial.tangent);
+      trial.dept = strain - ept;
     }
   }
-  return std::isfinite(trial_.stress) ? Status::Ok : Status::NonFinite;
+  return std::isfinite(trial.stress) ? Status::Ok : Status::NonFinite;
+}
+
+inline Status Concrete02::setTrialStrain(double strain, double /*strainRate*/) {
+  return computeTrial(committed_, trial_, strain);
 }
 
 }  // namespace dabs::materials

@@ -61,6 +61,11 @@ class Steel02 final : public StatefulUniaxial<Steel02State> {
   Steel02(int tag, const Params& params);
 
   [[nodiscard]] Status setTrialStrain(double strain, double strainRate = 0.0) override;
+  /// The update as a function of the committed state: trial = the state at `strain`. Fiber
+  /// sections keep only the states of their fibers and call this with one parameter set.
+  [[nodiscard]] Status computeTrial(const State& committed, State& trial, double strain) const;
+  /// The virgin state.
+  State virginState() const { return initialState(); }
   double getStrain() const override { return trial_.strain; }
   double getStress() const override { return trial_.stress; }
   double getTangent() const override { return trial_.tangent; }
@@ -89,7 +94,7 @@ inline void Steel02::setCurvature(State& s) const {
   s.invSpan = 1.0 / (s.eps0 - s.epsR);
 }
 
-inline Status Steel02::setTrialStrain(double strain, double /*strainRate*/) {
+inline Status Steel02::computeTrial(const State& committed, State& trial, double strain) const {
   const auto& p = params_;
   const double Esh = Esh_;
   const double epsy = epsy_;
@@ -97,85 +102,89 @@ inline Status Steel02::setTrialStrain(double strain, double /*strainRate*/) {
   // extension in OpenSees), so the virgin state sits at (sigInit/E, sigInit).
   const double epsIni = epsIni_;
   const double eps = strain + epsIni;
-  const double epsP = committed_.strain + epsIni;  // committed shifted strain
-  const double sigP = committed_.stress;
+  const double epsP = committed.strain + epsIni;  // committed shifted strain
+  const double sigP = committed.stress;
   const double deps = eps - epsP;
 
-  trial_ = committed_;
-  trial_.strain = strain;
+  trial = committed;
+  trial.strain = strain;
 
-  if (trial_.kon == 0 || trial_.kon == 3) {
+  if (trial.kon == 0 || trial.kon == 3) {
     if (std::fabs(deps) < 10.0 * DBL_EPSILON) {
-      trial_.tangent = p.E;
-      trial_.stress = p.sigInit;
-      trial_.kon = 3;
+      trial.tangent = p.E;
+      trial.stress = p.sigInit;
+      trial.kon = 3;
       return Status::Ok;
     }
     // first excursion: asymptotes meet at (+-epsy, +-Fy); the curve starts at the origin
-    trial_.epsMax = epsy;
-    trial_.epsMin = -epsy;
+    trial.epsMax = epsy;
+    trial.epsMin = -epsy;
     if (deps < 0.0) {
-      trial_.kon = 2;
-      trial_.eps0 = -epsy;
-      trial_.sig0 = -p.Fy;
-      trial_.epsPl = -epsy;
+      trial.kon = 2;
+      trial.eps0 = -epsy;
+      trial.sig0 = -p.Fy;
+      trial.epsPl = -epsy;
     } else {
-      trial_.kon = 1;
-      trial_.eps0 = epsy;
-      trial_.sig0 = p.Fy;
-      trial_.epsPl = epsy;
+      trial.kon = 1;
+      trial.eps0 = epsy;
+      trial.sig0 = p.Fy;
+      trial.epsPl = epsy;
     }
-    setCurvature(trial_);
+    setCurvature(trial);
   }
 
-  if (trial_.kon == 2 && deps > 0.0) {
+  if (trial.kon == 2 && deps > 0.0) {
     // reversal towards tension: new origin at the last committed point; the hardening
     // asymptote is shifted by the isotropic term a3*((epsmax-epsmin)/(2*a4*epsy))^0.8
-    trial_.kon = 1;
-    trial_.epsR = epsP;
-    trial_.sigR = sigP;
-    if (epsP < trial_.epsMin) trial_.epsMin = epsP;
-    const double d1 = (trial_.epsMax - trial_.epsMin) / (2.0 * p.a4 * epsy);
+    trial.kon = 1;
+    trial.epsR = epsP;
+    trial.sigR = sigP;
+    if (epsP < trial.epsMin) trial.epsMin = epsP;
+    const double d1 = (trial.epsMax - trial.epsMin) / (2.0 * p.a4 * epsy);
     const double shift = p.a3 == 0.0 ? 1.0 : 1.0 + p.a3 * std::pow(d1, 0.8);
     // intersection of sig = sigR + E*(eps-epsR) with sig = Fy*shift + Esh*(eps - epsy*shift)
-    trial_.eps0 = (p.Fy * shift - Esh * epsy * shift - trial_.sigR + p.E * trial_.epsR) / (p.E - Esh);
-    trial_.sig0 = p.Fy * shift + Esh * (trial_.eps0 - epsy * shift);
-    trial_.epsPl = trial_.epsMax;
-    setCurvature(trial_);
-  } else if (trial_.kon == 1 && deps < 0.0) {
+    trial.eps0 = (p.Fy * shift - Esh * epsy * shift - trial.sigR + p.E * trial.epsR) / (p.E - Esh);
+    trial.sig0 = p.Fy * shift + Esh * (trial.eps0 - epsy * shift);
+    trial.epsPl = trial.epsMax;
+    setCurvature(trial);
+  } else if (trial.kon == 1 && deps < 0.0) {
     // reversal towards compression, mirrored (a1, a2)
-    trial_.kon = 2;
-    trial_.epsR = epsP;
-    trial_.sigR = sigP;
-    if (epsP > trial_.epsMax) trial_.epsMax = epsP;
-    const double d1 = (trial_.epsMax - trial_.epsMin) / (2.0 * p.a2 * epsy);
+    trial.kon = 2;
+    trial.epsR = epsP;
+    trial.sigR = sigP;
+    if (epsP > trial.epsMax) trial.epsMax = epsP;
+    const double d1 = (trial.epsMax - trial.epsMin) / (2.0 * p.a2 * epsy);
     const double shift = p.a1 == 0.0 ? 1.0 : 1.0 + p.a1 * std::pow(d1, 0.8);
-    trial_.eps0 = (-p.Fy * shift + Esh * epsy * shift - trial_.sigR + p.E * trial_.epsR) / (p.E - Esh);
-    trial_.sig0 = -p.Fy * shift + Esh * (trial_.eps0 + epsy * shift);
-    trial_.epsPl = trial_.epsMin;
-    setCurvature(trial_);
+    trial.eps0 = (-p.Fy * shift + Esh * epsy * shift - trial.sigR + p.E * trial.epsR) / (p.E - Esh);
+    trial.sig0 = -p.Fy * shift + Esh * (trial.eps0 + epsy * shift);
+    trial.epsPl = trial.epsMin;
+    setCurvature(trial);
   }
 
   // Menegotto-Pinto curve (Filippou et al. 1983, eqs. 3-5) and its exact derivative.
-  const double epsRat = (eps - trial_.epsR) * trial_.invSpan;
+  const double epsRat = (eps - trial.epsR) * trial.invSpan;
   // |eps*|^R as exp(R log|eps*|): half the cost of pow, with a relative error of about
   // R |log eps*| times round-off (1e-14 here), far below anything a step resolves.
   const double absRat = std::fabs(epsRat);
-  const double t = absRat > 0.0 ? std::exp(trial_.R * std::log(absRat)) : 0.0;
+  const double t = absRat > 0.0 ? std::exp(trial.R * std::log(absRat)) : 0.0;
   const double dum1 = 1.0 + t;
   // (1 + t)^(1/R): near the elastic branch t is small and the binomial series to t^3 equals the
   // power to round-off (the next term is below 1e-17 for t < 1e-4 and R >= 1), at a fraction of
   // the cost of a second pow.
-  const double a = trial_.invR;
-  const double dum2 = t < steel02::kSeriesLimit && trial_.R >= 1.0
+  const double a = trial.invR;
+  const double dum2 = t < steel02::kSeriesLimit && trial.R >= 1.0
                           ? 1.0 + a * t * (1.0 + (a - 1.0) * t * (0.5 + (a - 2.0) * t / 6.0))
                           : std::pow(dum1, a);
   const double sigStar = p.b * epsRat + (1.0 - p.b) * epsRat / dum2;
-  trial_.stress = sigStar * (trial_.sig0 - trial_.sigR) + trial_.sigR;
+  trial.stress = sigStar * (trial.sig0 - trial.sigR) + trial.sigR;
   const double eStar = p.b + (1.0 - p.b) / (dum1 * dum2);
-  trial_.tangent = eStar * (trial_.sig0 - trial_.sigR) * trial_.invSpan;
-  return std::isfinite(trial_.stress) && std::isfinite(trial_.tangent) ? Status::Ok
+  trial.tangent = eStar * (trial.sig0 - trial.sigR) * trial.invSpan;
+  return std::isfinite(trial.stress) && std::isfinite(trial.tangent) ? Status::Ok
                                                                        : Status::NonFinite;
+}
+
+inline Status Steel02::setTrialStrain(double strain, double /*strainRate*/) {
+  return computeTrial(committed_, trial_, strain);
 }
 
 }  // namespace dabs::materials

@@ -126,26 +126,27 @@ Status ForceBeamColumn<Ndm>::solve(const Basic& target) {
   // ForceBeamColumn3d::update continues from its trial state too). The state struct holds section
   // deformations, forces and flexibilities that belong together, and the materials start every
   // update from their committed state, so any consistent trial state is a valid start.
+  // The trial state is iterated in place; a failed attempt leaves it inconsistent, so the next
+  // ones start from the committed state. Copies cover the points in use only (the arrays hold
+  // room for 20).
+  const int n = static_cast<int>(this->points_.size());
   if (!trialIsCommitted_) {
-    work_ = trial_;
-    if (ok(iterate(work_, target))) {
-      trial_ = work_;
-      return Status::Ok;
-    }
+    if (ok(iterate(trial_, target))) return Status::Ok;
   }
   Status last = Status::NotConverged;
   for (int parts : {1, 4, 16}) {
-    work_ = committed_;
+    trial_.assign(committed_, n);
     const Basic start = committed_.v;
     last = Status::Ok;
     for (int k = 1; k <= parts && ok(last); ++k)
-      last = iterate(work_, start + (target - start) * (double(k) / parts));
+      last = iterate(trial_, start + (target - start) * (double(k) / parts));
     if (ok(last)) {
-      trial_ = work_;
       trialIsCommitted_ = false;
       return last;
     }
   }
+  trial_.assign(committed_, n);
+  trialIsCommitted_ = true;
   return last;
 }
 
@@ -170,7 +171,7 @@ template <int Ndm>
 void ForceBeamColumn<Ndm>::commitState() {
   this->transf_->commitState();
   for (auto& p : this->points_) p.section->commitState();
-  committed_ = trial_;
+  committed_.assign(trial_, static_cast<int>(this->points_.size()));
   trialIsCommitted_ = true;
   this->uCommitted_ = this->uTrial_;
 }
@@ -179,7 +180,7 @@ template <int Ndm>
 void ForceBeamColumn<Ndm>::revertToLastCommit() {
   this->transf_->revertToLastCommit();
   for (auto& p : this->points_) p.section->revertToLastCommit();
-  trial_ = committed_;
+  trial_.assign(committed_, static_cast<int>(this->points_.size()));
   trialIsCommitted_ = true;
   this->uTrial_ = this->uCommitted_;
   this->transf_->update(this->uTrial_);

@@ -53,6 +53,17 @@ class ForceBeamColumn final : public SectionBeamColumn<Ndm> {
     BasicMatrix kb = BasicMatrix::Zero();
     std::array<SectionVector, kMaxPoints> e, sr;
     std::array<SectionMatrix, kMaxPoints> fs;
+    /// Copies o's element data and its first n points.
+    void assign(const State& o, int n) {
+      q = o.q;
+      v = o.v;
+      kb = o.kb;
+      for (std::size_t i = 0; i < static_cast<std::size_t>(n); ++i) {
+        e[i] = o.e[i];
+        sr[i] = o.sr[i];
+        fs[i] = o.fs[i];
+      }
+    }
   };
   Status iterate(State& s, const Basic& target) const;
   Status solve(const Basic& target);
@@ -62,7 +73,7 @@ class ForceBeamColumn final : public SectionBeamColumn<Ndm> {
   double tol_;
   std::vector<SectionBasicMatrix<kBasic>> bmat_;
   BasicMatrix fe_ = BasicMatrix::Zero();  ///< initial (elastic) flexibility
-  State trial_, committed_, work_;
+  State trial_, committed_;
   bool trialIsCommitted_ = true;  ///< trial_ equals committed_ (no update since commit/revert)
 };
 

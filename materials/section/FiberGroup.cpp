@@ -42,10 +42,9 @@ class BoxedMaterial {
 template <class M>
 class TypedFiberGroup final : public FiberGroup {
  public:
-  const UniaxialMaterial& material(int i) const override {
-    if constexpr (std::is_same_v<M, BoxedMaterial>) return mats_[static_cast<std::size_t>(i)].material();
-    else return mats_[static_cast<std::size_t>(i)];
-  }
+  double stress(int i) const override { return object(i).getStress(); }
+  double strain(int i) const override { return object(i).getStrain(); }
+  int materialTag() const override { return mats_.empty() ? 0 : object(0).tag(); }
 
   void add(double y, double z, double area, const UniaxialMaterial& prototype) override {
     if (mats_.empty()) type_ = std::type_index(typeid(prototype));
@@ -105,8 +104,76 @@ class TypedFiberGroup final : public FiberGroup {
   }
 
  private:
+  const UniaxialMaterial& object(int i) const {
+    if constexpr (std::is_same_v<M, BoxedMaterial>) return mats_[static_cast<std::size_t>(i)].material();
+    else return mats_[static_cast<std::size_t>(i)];
+  }
   std::vector<M> mats_;
   std::type_index type_ = std::type_index(typeid(void));
+};
+
+/// Fibers of one material (one parameter set, the prototype's) kept as arrays of committed and
+/// trial states; the update is M::computeTrial. Fibers of another material of the same class
+/// (other parameters) go to another group.
+template <class M>
+class StateFiberGroup final : public FiberGroup {
+ public:
+  using State = typename M::State;
+  explicit StateFiberGroup(const M& prototype) : law_(prototype) {}
+
+  double stress(int i) const override { return trial_[static_cast<std::size_t>(i)].stress; }
+  double strain(int i) const override { return trial_[static_cast<std::size_t>(i)].strain; }
+  int materialTag() const override { return law_.tag(); }
+
+  void add(double y, double z, double area, const UniaxialMaterial& /*prototype*/) override {
+    y_.push_back(y);
+    z_.push_back(z);
+    area_.push_back(area);
+    committed_.push_back(law_.virginState());
+    trial_.push_back(law_.virginState());
+  }
+  bool accepts(const UniaxialMaterial& material) const override {
+    return &material == source_ || (source_ == nullptr && typeid(material) == typeid(M));
+  }
+  /// The material object whose fibers this group holds (identity decides membership).
+  void setSource(const UniaxialMaterial* source) { source_ = source; }
+
+  Status setTrial(double e0, double kz, double ky, FiberSums& sums) override {
+    Status status = Status::Ok;
+    const std::size_t n = trial_.size();
+    for (std::size_t i = 0; i < n; ++i) {
+      const Status s = law_.computeTrial(committed_[i], trial_[i], e0 - y_[i] * kz + z_[i] * ky);
+      if (!ok(s)) status = s;
+    }
+    addTo(sums, false);
+    return status;
+  }
+  void addTo(FiberSums& sums, bool initial) const override {
+    FiberSums local = sums;
+    const std::size_t n = trial_.size();
+    if (initial) {
+      const double e0 = law_.getInitialTangent();
+      for (std::size_t i = 0; i < n; ++i) local.add(y_[i], z_[i], 0.0, e0 * area_[i]);
+    } else {
+      for (std::size_t i = 0; i < n; ++i)
+        local.add(y_[i], z_[i], trial_[i].stress * area_[i], trial_[i].tangent * area_[i]);
+    }
+    sums = local;
+  }
+  void commitState() override { committed_ = trial_; }
+  void revertToLastCommit() override { trial_ = committed_; }
+  void revertToStart() override {
+    std::fill(committed_.begin(), committed_.end(), law_.virginState());
+    trial_ = committed_;
+  }
+  std::unique_ptr<FiberGroup> clone() const override {
+    return std::make_unique<StateFiberGroup>(*this);
+  }
+
+ private:
+  M law_;  ///< parameters (its own state is not used)
+  const UniaxialMaterial* source_ = nullptr;
+  std::vector<State> committed_, trial_;
 };
 
 template <class M>
@@ -116,10 +183,17 @@ bool isA(const UniaxialMaterial& m) {
 
 }  // namespace
 
+template <class M>
+std::unique_ptr<FiberGroup> stateGroup(const UniaxialMaterial& prototype) {
+  auto g = std::make_unique<StateFiberGroup<M>>(static_cast<const M&>(prototype));
+  g->setSource(&prototype);
+  return g;
+}
+
 std::unique_ptr<FiberGroup> FiberGroup::forMaterial(const UniaxialMaterial& prototype) {
-  if (isA<Concrete02>(prototype)) return std::make_unique<TypedFiberGroup<Concrete02>>();
-  if (isA<Steel02>(prototype)) return std::make_unique<TypedFiberGroup<Steel02>>();
-  if (isA<Concrete01>(prototype)) return std::make_unique<TypedFiberGroup<Concrete01>>();
+  if (isA<Concrete02>(prototype)) return stateGroup<Concrete02>(prototype);
+  if (isA<Steel02>(prototype)) return stateGroup<Steel02>(prototype);
+  if (isA<Concrete01>(prototype)) return stateGroup<Concrete01>(prototype);
   if (isA<Steel01>(prototype)) return std::make_unique<TypedFiberGroup<Steel01>>();
   if (isA<Elastic>(prototype)) return std::make_unique<TypedFiberGroup<Elastic>>();
   if (isA<ElasticPP>(prototype)) return std::make_unique<TypedFiberGroup<ElasticPP>>();

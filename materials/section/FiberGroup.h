@@ -41,8 +41,10 @@ class FiberGroup {
   double y(int i) const { return y_[static_cast<std::size_t>(i)]; }
   double z(int i) const { return z_[static_cast<std::size_t>(i)]; }
   double area(int i) const { return area_[static_cast<std::size_t>(i)]; }
-  /// Fiber i's material (trial state).
-  virtual const UniaxialMaterial& material(int i) const = 0;
+  /// Fiber i's trial stress and strain, and the tag of the group's material.
+  virtual double stress(int i) const = 0;
+  virtual double strain(int i) const = 0;
+  virtual int materialTag() const = 0;
   /// Adds a fiber with a clone of `prototype`.
   virtual void add(double y, double z, double area, const UniaxialMaterial& prototype) = 0;
 
@@ -57,8 +59,10 @@ class FiberGroup {
   virtual void revertToStart() = 0;
   [[nodiscard]] virtual std::unique_ptr<FiberGroup> clone() const = 0;
 
-  /// A group for `prototype`'s type: a typed array for the common fiber materials (Concrete01/02,
-  /// Steel01/02, Elastic, ElasticPP), otherwise one that holds any material by pointer.
+  /// A group for `prototype`: for Concrete01/02 and Steel02 one parameter set and arrays of fiber
+  /// states (the update is the material's computeTrial, and a fiber costs its two states, not a
+  /// whole material object: what bounds large models is memory traffic); for Steel01, Elastic
+  /// and ElasticPP an array of material objects; otherwise materials held by pointer.
   static std::unique_ptr<FiberGroup> forMaterial(const UniaxialMaterial& prototype);
   /// True when `material` belongs in this group.
   virtual bool accepts(const UniaxialMaterial& material) const = 0;

@@ -137,7 +137,7 @@ std::optional<Eigen::VectorXd> FiberSection<Ndm>::response(
     int best = -1;
     double bestD = std::numeric_limits<double>::infinity();
     for (int i = 0; i < numFibers(); ++i) {
-      if (byMaterial && fiberMaterial(i).tag() != matTag) continue;
+      if (byMaterial && fiberMaterialTag(i) != matTag) continue;
       const double dy = fiberY(i) - y, dz = fiberZ(i) - z;
       const double d = dy * dy + (Ndm == 3 ? dz * dz : 0.0);
       if (d < bestD) {
@@ -147,7 +147,7 @@ std::optional<Eigen::VectorXd> FiberSection<Ndm>::response(
     }
     if (best < 0 || args.back() != "stressStrain") return std::nullopt;
     Eigen::VectorXd out(2);
-    out << fiberMaterial(best).getStress(), fiberMaterial(best).getStrain();
+    out << fiberStress(best), fiberStrain(best);
     return out;
   }
   return std::nullopt;

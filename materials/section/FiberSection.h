@@ -56,7 +56,10 @@ class FiberSection final : public SectionForceDeformation {
   double fiberY(int i) const { return group(i).y(index(i)); }
   double fiberZ(int i) const { return group(i).z(index(i)); }
   double fiberArea(int i) const { return group(i).area(index(i)); }
-  const UniaxialMaterial& fiberMaterial(int i) const { return group(i).material(index(i)); }
+  /// Fiber i's trial stress and strain, and its material's tag.
+  double fiberStress(int i) const { return group(i).stress(index(i)); }
+  double fiberStrain(int i) const { return group(i).strain(index(i)); }
+  int fiberMaterialTag(int i) const { return group(i).materialTag(); }
   /// Fiber material updates (setTrialStrain calls) since construction, for benchmarks.
   long materialUpdates() const noexcept override { return materialUpdates_; }
 

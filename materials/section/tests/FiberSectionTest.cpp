@@ -224,9 +224,10 @@ TEST(FiberSectionTest, MixedMaterialsSumLikeTheFibersOneByOne) {
       const Eigen::Vector3d a(1.0, -f.y, f.z);
       s.head<3>() += m.getStress() * f.area * a;
       k.topLeftCorner<3, 3>() += m.getTangent() * f.area * a * a.transpose();
-      EXPECT_EQ(sec.fiberMaterial(i).tag(), m.tag());
+      EXPECT_EQ(sec.fiberMaterialTag(i), m.tag());
       EXPECT_EQ(sec.fiberY(i), f.y);
-      EXPECT_DOUBLE_EQ(sec.fiberMaterial(i).getStress(), m.getStress());
+      EXPECT_DOUBLE_EQ(sec.fiberStress(i), m.getStress());
+      EXPECT_DOUBLE_EQ(sec.fiberStrain(i), m.getStrain());
     }
     s(3) = 100.0 * e(3);
     k(3, 3) = 100.0;
