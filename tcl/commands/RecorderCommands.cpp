@@ -3,6 +3,7 @@
 #include <string>
 
 #include "materials/InputError.h"
+#include "materials/ResponseArgs.h"
 #include "tcl/commands/Registry.h"
 #include "tcl/commands/SeriesParser.h"
 #include "tcl/commands/TclResult.h"
@@ -68,7 +69,7 @@ void nodeRecorder(Runtime& rt, ArgReader& a, bool envelope) {
   else if (response.rfind("eigen", 0) == 0) {
     kind = R::Eigen;
     const std::string rest = response.substr(5);
-    if (!rest.empty()) mode = std::atoi(rest.c_str());
+    if (!rest.empty()) mode = responseInteger(rest).value_or(0);
     else mode = a.integer("mode");
     if (mode < 1) a.fail("eigen needs a mode number from 1");
   } else {
