@@ -17,16 +17,11 @@ import sys
 import tempfile
 import time
 
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "lib"))
+from check import check, finish  # noqa: E402
+
 DABS = os.path.abspath(sys.argv[1])
 DT = 0.001
-failures = 0
-
-
-def check(ok, what):
-    global failures
-    print(("PASSED " if ok else "FAILED ") + what)
-    if not ok:
-        failures += 1
 
 
 # A 2D cantilever of 200 elastic beams shaken at its base: about a millisecond per step, so
@@ -117,4 +112,4 @@ def kill_run(sig):
 
 for s in (signal.SIGTERM, signal.SIGINT, signal.SIGHUP, signal.SIGKILL):
     kill_run(s)
-sys.exit(1 if failures else 0)
+finish()

@@ -19,15 +19,10 @@ import sys
 import tempfile
 import time
 
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "lib"))
+from check import check, finish  # noqa: E402
+
 DABS = os.path.abspath(sys.argv[1])
-failures = 0
-
-
-def check(ok, what):
-    global failures
-    print(("PASSED " if ok else "FAILED ") + what)
-    if not ok:
-        failures += 1
 
 
 class Terminal:
@@ -119,4 +114,4 @@ def pipes():
 
 interactive()
 pipes()
-sys.exit(1 if failures else 0)
+finish()
