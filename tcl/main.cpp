@@ -1,10 +1,15 @@
 // SPDX-License-Identifier: MIT
-// The dabs program: `dabs script.tcl ?args...?` runs a script; `dabs` alone, or with a pipe on
-// standard input, is an interactive Tcl shell with the dabs commands (Tcl's own main loop, with
-// line editing when Debian's tcl-tclreadline is installed).
+// The dabs program: `dabs script.tcl ?args...?` runs a script; `dabs` alone in a terminal is an
+// interactive Tcl shell with the dabs commands (line editing and history from Debian's
+// tcl-tclreadline when it is installed); `dabs` with standard input from a pipe or a file runs the
+// commands read there and exits with status 1 when any of them failed.
 #include <tcl.h>
+#include <unistd.h>
+
+#include <cstdio>
 
 #include "tcl/commands/CommandTable.h"
+#include "tcl/commands/SignalExit.h"
 
 namespace {
 
@@ -23,9 +28,72 @@ int appInit(Tcl_Interp* interp) {
   return TCL_OK;
 }
 
+void reportError(Tcl_Interp* interp) {
+  std::fprintf(stderr, "%s\n", Tcl_GetStringResult(interp));
+  std::fflush(stderr);
+}
+
+// Commands from a pipe: Tcl_Main would go on after a failed command and exit with status 0, so a
+// pipeline could not see the failure. This loop reads complete commands as Tcl_Main does, reports
+// each error on stderr, runs a last command even without its newline, and reports one left
+// incomplete at end of input (an unclosed brace) as an error instead of dropping it.
+int runPipedInput(const char* argv0) {
+  Tcl_FindExecutable(argv0);
+  Tcl_Interp* interp = Tcl_CreateInterp();
+  Tcl_SetVar2Ex(interp, "argv0", nullptr, Tcl_NewStringObj(argv0, -1), TCL_GLOBAL_ONLY);
+  Tcl_SetVar2Ex(interp, "argc", nullptr, Tcl_NewIntObj(0), TCL_GLOBAL_ONLY);
+  Tcl_SetVar2Ex(interp, "argv", nullptr, Tcl_NewObj(), TCL_GLOBAL_ONLY);
+  Tcl_SetVar2Ex(interp, "tcl_interactive", nullptr, Tcl_NewIntObj(0), TCL_GLOBAL_ONLY);
+  if (appInit(interp) != TCL_OK) {
+    reportError(interp);
+    Tcl_Exit(1);
+  }
+  Tcl_Channel in = Tcl_GetStdChannel(TCL_STDIN);
+  if (in == nullptr) Tcl_Exit(0);
+  bool failed = false;
+  Tcl_Obj* command = Tcl_NewObj();
+  Tcl_IncrRefCount(command);
+  auto run = [&] {
+    if (Tcl_EvalObjEx(interp, command, TCL_EVAL_GLOBAL) != TCL_OK) {
+      reportError(interp);
+      failed = true;
+    }
+    Tcl_DecrRefCount(command);
+    command = Tcl_NewObj();
+    Tcl_IncrRefCount(command);
+  };
+  for (;;) {
+    Tcl_Obj* line = Tcl_NewObj();
+    Tcl_IncrRefCount(line);
+    const int length = Tcl_GetsObj(in, line);
+    if (length < 0) {
+      Tcl_DecrRefCount(line);
+      break;
+    }
+    Tcl_AppendObjToObj(command, line);
+    Tcl_DecrRefCount(line);
+    Tcl_AppendToObj(command, "\n", 1);
+    if (Tcl_CommandComplete(Tcl_GetString(command))) run();
+  }
+  int size = 0;
+  const char* rest = Tcl_GetStringFromObj(command, &size);
+  if (size > 0 && !Tcl_CommandComplete(rest)) {
+    std::fprintf(stderr, "incomplete command at end of input (a brace, bracket or quote is not closed):\n%s",
+                 rest);
+    failed = true;
+  } else if (size > 0) {
+    run();
+  }
+  Tcl_DecrRefCount(command);
+  Tcl_Exit(failed ? 1 : 0);
+  return 0;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
+  dabs::tcl::installSignalExit();
+  if (argc == 1 && isatty(STDIN_FILENO) == 0) return runPipedInput(argv[0]);
   Tcl_Main(argc, argv, appInit);
   return 0;
 }

@@ -48,7 +48,7 @@ class ElasticBeamColumn : public FixedSizeElement<2, Ndf> {
   }
 
   std::optional<Eigen::VectorXd> response(std::span<const std::string> args) const override {
-    if (args.empty()) return std::nullopt;
+    if (args.size() != 1) return std::nullopt;
     const std::string& name = args[0];
     if (name == "force" || name == "forces" || name == "globalForce" || name == "globalForces")
       return Eigen::VectorXd(this->f_);

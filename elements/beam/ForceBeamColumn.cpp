@@ -213,7 +213,7 @@ void ForceBeamColumn<Ndm>::revertToStart() {
 template <int Ndm>
 std::optional<Eigen::VectorXd> ForceBeamColumn<Ndm>::response(
     std::span<const std::string> args) const {
-  if (!args.empty() && (args[0] == "plasticDeformation" || args[0] == "plasticDeformations"))
+  if (args.size() == 1 && (args[0] == "plasticDeformation" || args[0] == "plasticDeformations"))
     return Eigen::VectorXd(this->transf_->basicDeformation() - fe_ * trial_.q);
   return Super::response(args);
 }

@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "materials/ResponseArgs.h"
 #include "elements/FixedSizeElement.h"
 #include "elements/beam/BeamColumnTraits.h"
 #include "elements/beam/ConsistentMass.h"
@@ -61,6 +62,12 @@ class SectionBeamColumn : public FixedSizeElement<2, BeamColumnTraits<Ndm>::kDof
   std::optional<Eigen::VectorXd> response(std::span<const std::string> args) const override {
     if (args.empty()) return std::nullopt;
     const std::string& name = args[0];
+    if (name == "section" && args.size() >= 3) {
+      const std::optional<int> i = responseInteger(args[1]);
+      if (!i || *i < 1 || *i > numSections()) return std::nullopt;
+      return points_[*i - 1].section->response(args.subspan(2));
+    }
+    if (args.size() != 1) return std::nullopt;
     if (name == "force" || name == "forces" || name == "globalForce" || name == "globalForces")
       return Eigen::VectorXd(this->f_);
     if (name == "localForce" || name == "localForces")
@@ -77,16 +84,6 @@ class SectionBeamColumn : public FixedSizeElement<2, BeamColumnTraits<Ndm>::kDof
       Eigen::VectorXd w(numSections());
       for (int i = 0; i < numSections(); ++i) w(i) = points_[i].weight * transf_->initialLength();
       return w;
-    }
-    if (name == "section" && args.size() >= 3) {
-      int i = 0;
-      try {
-        i = std::stoi(args[1]);
-      } catch (...) {
-        return std::nullopt;
-      }
-      if (i < 1 || i > numSections()) return std::nullopt;
-      return points_[i - 1].section->response(args.subspan(2));
     }
     return std::nullopt;
   }

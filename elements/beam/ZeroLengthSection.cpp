@@ -114,6 +114,8 @@ std::optional<Eigen::VectorXd> ZeroLengthSection<Ndm>::response(
     std::span<const std::string> args) const {
   if (args.empty()) return std::nullopt;
   const std::string& name = args[0];
+  if (name == "section") return section_->response(args.subspan(1));
+  if (args.size() != 1) return std::nullopt;
   if (name == "force" || name == "forces" || name == "globalForce" || name == "globalForces")
     return Eigen::VectorXd(this->f_);
   if (name == "basicForce" || name == "basicForces" || name == "localForce" ||
@@ -122,7 +124,6 @@ std::optional<Eigen::VectorXd> ZeroLengthSection<Ndm>::response(
   if (name == "deformation" || name == "deformations" || name == "basicDeformation" ||
       name == "basicDeformations")
     return Eigen::VectorXd(section_->getDeformation());
-  if (name == "section") return section_->response(args.subspan(1));
   return std::nullopt;
 }
 

@@ -4,6 +4,7 @@
 #include <string>
 
 #include "materials/InputError.h"
+#include "materials/ResponseArgs.h"
 
 namespace dabs::elements {
 
@@ -83,6 +84,17 @@ std::optional<Eigen::VectorXd> Truss::response(std::span<const std::string> args
   if (args.empty()) return std::nullopt;
   const std::string& name = args[0];
   const double axial = params_.area * material_->getStress();
+  if (name == "material" && args.size() == 2) {
+    if (args[1] == "stress") return Eigen::VectorXd::Constant(1, material_->getStress());
+    if (args[1] == "strain") return Eigen::VectorXd::Constant(1, material_->getStrain());
+    if (args[1] == "stressStrain") {
+      Eigen::VectorXd out(2);
+      out << material_->getStress(), material_->getStrain();
+      return out;
+    }
+    return std::nullopt;
+  }
+  if (args.size() != 1) return std::nullopt;
   if (name == "force" || name == "forces" || name == "globalForce" || name == "globalForces")
     return Eigen::VectorXd(f_);
   if (name == "axialForce" || name == "basicForce" || name == "basicForces")
@@ -96,15 +108,6 @@ std::optional<Eigen::VectorXd> Truss::response(std::span<const std::string> args
   if (name == "deformation" || name == "deformations" || name == "basicDeformation" ||
       name == "basicDeformations")
     return Eigen::VectorXd::Constant(1, length_ * material_->getStrain());
-  if (name == "material" && args.size() >= 2) {
-    if (args.back() == "stress") return Eigen::VectorXd::Constant(1, material_->getStress());
-    if (args.back() == "strain") return Eigen::VectorXd::Constant(1, material_->getStrain());
-    if (args.back() == "stressStrain") {
-      Eigen::VectorXd out(2);
-      out << material_->getStress(), material_->getStrain();
-      return out;
-    }
-  }
   return std::nullopt;
 }
 

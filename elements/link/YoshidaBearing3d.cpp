@@ -195,7 +195,10 @@ std::string YoshidaBearing3d::describe() const {
   out << Element::describe() << " material " << material_->tag() << " Tr " << p_.Tr << " Kv "
       << p_.Kv << " Kt " << p_.Kt << " Kr " << p_.Kry << " " << p_.Krz << " mass " << p_.mass << " limits "
       << p_.designLimit << " " << p_.failureLimit << " afterFailure "
-      << (p_.afterFailure == AfterFailure::Keep ? "keep" : "release") << " damage " << damage();
+      << (p_.afterFailure == AfterFailure::Keep      ? "keep"
+          : p_.afterFailure == AfterFailure::Release ? "release"
+                                                     : "stop")
+      << " damage " << damage();
   return out.str();
 }
 

@@ -37,7 +37,10 @@ namespace dabs::elements {
 /// in tangentStiff(). Rayleigh damping does not apply by default (as for OpenSees zero-length links).
 class YoshidaBearing3d final : public FixedSizeElement<2, 6> {
  public:
-  enum class AfterFailure { Keep, Release };
+  /// What a bearing does once it reaches its failure shear strain: keep carrying load as if intact
+  /// (the default, Yoshida et al.'s model has no rupture), release its shear force, or keep
+  /// carrying it while the analysis stops (AnalysisBuilder returns kBearingFailureStop).
+  enum class AfterFailure { Keep, Release, Stop };
 
   /// Element parameters (the material is passed separately).
   struct Params {
@@ -92,6 +95,7 @@ class YoshidaBearing3d final : public FixedSizeElement<2, 6> {
   const Eigen::Matrix3d& axes() const noexcept { return axes_; }
   const State& trialState() const noexcept { return trial_; }
   const State& committedState() const noexcept { return committed_; }
+  const Params& params() const noexcept { return p_; }
 
  private:
   using Basic = Eigen::Matrix<double, 6, 1>;

@@ -5,6 +5,7 @@
 #include <string>
 
 #include "materials/InputError.h"
+#include "materials/ResponseArgs.h"
 
 namespace dabs::elements {
 
@@ -133,6 +134,23 @@ std::optional<Eigen::VectorXd> ZeroLength::response(std::span<const std::string>
   if (args.empty()) return std::nullopt;
   const std::string& name = args[0];
   const auto nm = static_cast<Eigen::Index>(materials_.size());
+  if (name == "material") {
+    // material i response: exactly three words, i a whole integer.
+    const std::optional<int> k = args.size() == 3 ? responseInteger(args[1]) : std::nullopt;
+    if (!k || *k < 1 || *k > static_cast<int>(nm)) return std::nullopt;
+    const auto& m = *materials_[static_cast<std::size_t>(*k - 1)];
+    if (args[2] == "stress") return Eigen::VectorXd::Constant(1, m.getStress());
+    if (args[2] == "strain") return Eigen::VectorXd::Constant(1, m.getStrain());
+    if (args[2] == "tangent") return Eigen::VectorXd::Constant(1, m.getTangent());
+    if (args[2] == "stressStrain") {
+      Eigen::VectorXd out(2);
+      out << m.getStress(), m.getStrain();
+      return out;
+    }
+    if (const auto r = m.response(args[2])) return Eigen::VectorXd::Constant(1, *r);
+    return std::nullopt;
+  }
+  if (args.size() != 1) return std::nullopt;
   if (name == "force" || name == "forces" || name == "globalForce" || name == "globalForces")
     return Eigen::VectorXd(f_);
   if (name == "basicForce" || name == "basicForces" || name == "localForce" || name == "localForces") {
@@ -153,20 +171,6 @@ std::optional<Eigen::VectorXd> ZeroLength::response(std::span<const std::string>
       out(nm + k) = materials_[static_cast<std::size_t>(k)]->getStress();
     }
     return out;
-  }
-  if (name == "material" && args.size() >= 3) {
-    const int k = std::atoi(args[1].c_str());
-    if (k < 1 || k > static_cast<int>(nm)) return std::nullopt;
-    const auto& m = *materials_[static_cast<std::size_t>(k - 1)];
-    if (args[2] == "stress") return Eigen::VectorXd::Constant(1, m.getStress());
-    if (args[2] == "strain") return Eigen::VectorXd::Constant(1, m.getStrain());
-    if (args[2] == "tangent") return Eigen::VectorXd::Constant(1, m.getTangent());
-    if (args[2] == "stressStrain") {
-      Eigen::VectorXd out(2);
-      out << m.getStress(), m.getStrain();
-      return out;
-    }
-    if (const auto r = m.response(args[2])) return Eigen::VectorXd::Constant(1, *r);
   }
   return std::nullopt;
 }

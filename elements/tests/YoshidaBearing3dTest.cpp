@@ -384,7 +384,7 @@ std::vector<double> readAt2(const std::string& path, double& dt) {
 TEST(YoshidaBearing3dTest, NewtonConvergesQuadraticallyUnderTakatori) {
   double dtRecord = 0.0;
   const std::vector<double> ag =
-      readAt2(std::string(DABS_SHARED_DIR) + "/data/ground-motions/RSN1120_KOBE_TAK090.AT2", dtRecord);
+      readAt2(std::string(DABS_DATA_DIR) + "/RSN1120_KOBE_TAK090.AT2", dtRecord);
   ASSERT_EQ(ag.size(), 4096u);
   ASSERT_DOUBLE_EQ(dtRecord, 0.01);
   auto e = make(kCoincidentNodes, true);

@@ -62,8 +62,8 @@ void ElasticSection::revertToStart() {
 
 std::optional<Eigen::VectorXd> ElasticSection::response(std::span<const std::string> args) const {
   if (args.empty()) return std::nullopt;
-  if (args[0] == "force" || args[0] == "forces") return s_;
-  if (args[0] == "deformation" || args[0] == "deformations") return e_;
+  if (args.size() == 1 && (args[0] == "force" || args[0] == "forces")) return s_;
+  if (args.size() == 1 && (args[0] == "deformation" || args[0] == "deformations")) return e_;
   return std::nullopt;
 }
 

@@ -7,6 +7,7 @@
 #include <string>
 
 #include "materials/InputError.h"
+#include "materials/ResponseArgs.h"
 
 namespace dabs::materials::section {
 
@@ -122,18 +123,18 @@ template <int Ndm>
 std::optional<Eigen::VectorXd> FiberSection<Ndm>::response(
     std::span<const std::string> args) const {
   if (args.empty()) return std::nullopt;
-  if (args[0] == "force" || args[0] == "forces") return Eigen::VectorXd(s_);
-  if (args[0] == "deformation" || args[0] == "deformations") return Eigen::VectorXd(e_);
-  if (args[0] == "fiber" && args.size() >= 4) {
-    char* end = nullptr;
-    const double y = std::strtod(args[1].c_str(), &end);
-    const double z = std::strtod(args[2].c_str(), &end);
-    int matTag = 0;
-    bool byMaterial = false;
-    if (args.size() >= 5) {
-      matTag = std::atoi(args[3].c_str());
-      byMaterial = true;
-    }
+  if (args.size() == 1 && (args[0] == "force" || args[0] == "forces")) return Eigen::VectorXd(s_);
+  if (args.size() == 1 && (args[0] == "deformation" || args[0] == "deformations")) return Eigen::VectorXd(e_);
+  // fiber y z ?matTag? response: the words must be whole numbers ("abc" or NaN name no fiber).
+  if (args[0] == "fiber" && (args.size() == 4 || args.size() == 5)) {
+    const std::optional<double> yWord = responseReal(args[1]);
+    const std::optional<double> zWord = responseReal(args[2]);
+    const std::optional<int> matWord = args.size() == 5 ? responseInteger(args[3]) : std::optional<int>(0);
+    if (!yWord || !zWord || !matWord) return std::nullopt;
+    const double y = *yWord;
+    const double z = *zWord;
+    const int matTag = *matWord;
+    const bool byMaterial = args.size() == 5;
     int best = -1;
     double bestD = std::numeric_limits<double>::infinity();
     for (int i = 0; i < numFibers(); ++i) {

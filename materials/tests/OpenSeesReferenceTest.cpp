@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
 // Every point of the OpenSees 3.8.0 reference histories in
-// shared/data/reference/opensees/*.csv (made by materials.tcl there): strain, stress and tangent
+// verification/opensees/*.csv (made by materials.tcl there): strain, stress and tangent
 // after each committed strain. The strain history is rebuilt here exactly as materials.tcl builds
 // it (segments of 40 points, prev + (target - prev)*i/40.0, times a scale), and the CSV strain
 // column is checked against it.
@@ -35,13 +35,8 @@ struct Row {
   double strain, stress, tangent;
 };
 
-std::string sharedDir() {
-  if (const char* env = std::getenv("DABS_SHARED_DIR")) return env;
-  return DABS_SHARED_DIR;
-}
-
 std::vector<Row> readCsv(const std::string& name) {
-  const std::string path = sharedDir() + "/data/reference/opensees/" + name;
+  const std::string path = std::string(DABS_OPENSEES_DIR) + "/" + name;
   std::ifstream in(path);
   std::vector<Row> rows;
   if (!in) {

@@ -1,8 +1,12 @@
 // SPDX-License-Identifier: MIT
 #include "tcl/analysis/AnalysisBuilder.h"
 
-#include <cmath>
+#include "tcl/analysis/StopRequest.h"
 
+#include <cmath>
+#include <cstdio>
+
+#include "elements/link/YoshidaBearing3d.h"
 #include "materials/InputError.h"
 #include "tcl/analysis/GeneralizedAlpha.h"
 #include "tcl/analysis/LoadControl.h"
@@ -167,7 +171,11 @@ int AnalysisBuilder::analyze(int numSteps, double dt) {
   const long elementUpdatesBefore = model_->elementUpdates();
   const long materialUpdatesBefore = domain_.materialUpdates();
   int result = 0;
-  for (int step = 0; step < numSteps; ++step) {
+  struct StepLoopGuard {
+    StepLoopGuard() { StopRequest::stepLoopRunning = 1; }
+    ~StepLoopGuard() { StopRequest::stepLoopRunning = 0; }
+  } guard;
+  for (int step = 0; step < numSteps && StopRequest::signal == 0; ++step) {
     Status s = analyzeStep(dt);
     if (!ok(s) && kind_ == Kind::Transient && numSubLevels_ > 0) {
       ++stats_.failedSteps;
@@ -180,12 +188,57 @@ int AnalysisBuilder::analyze(int numSteps, double dt) {
       result = code(s);
       break;
     }
+    if (noteBearingFailures()) {
+      result = kBearingFailureStop;
+      break;
+    }
+    if (auto error = domain_.takeRecorderError()) {
+      stats_.factorizations += system_->factorizations() - factorizationsBefore;
+      char when[64];
+      std::snprintf(when, sizeof when, "%.10g", domain_.committedTime());
+      throw InputError("", *error + "; the analysis stopped at time " + when +
+                               " (the other recorders hold every step up to it)");
+    }
   }
   stats_.factorizations += system_->factorizations() - factorizationsBefore;
   stats_.elementUpdates += model_->elementUpdates() - elementUpdatesBefore;
   stats_.materialUpdates += domain_.materialUpdates() - materialUpdatesBefore;
   domain_.flushRecorders();
   return result;
+}
+
+bool AnalysisBuilder::noteBearingFailures() {
+  using elements::YoshidaBearing3d;
+  bool stop = false;
+  for (const auto& [tag, e] : domain_.elements()) {
+    if (e->typeName() != "yoshidaBearing") continue;
+    const auto& b = static_cast<const YoshidaBearing3d&>(*e);
+    if (!b.committedState().failed) {
+      failedBearings_.erase(tag);  // back to start (reset): a new failure is reported again
+      continue;
+    }
+    if (failedBearings_.count(tag) != 0) continue;
+    failedBearings_.insert(tag);
+    ++stats_.failedBearings;
+    const auto mode = b.params().afterFailure;
+    if (log) {
+      char text[256];
+      std::snprintf(text, sizeof text,
+                    "yoshidaBearing %d reached its failure shear strain %g at time %g; -afterFailure %s: %s",
+                    tag, b.params().failureLimit, b.committedState().failureTime,
+                    mode == YoshidaBearing3d::AfterFailure::Keep      ? "keep"
+                    : mode == YoshidaBearing3d::AfterFailure::Release ? "release"
+                                                                      : "stop",
+                    mode == YoshidaBearing3d::AfterFailure::Keep
+                        ? "it goes on carrying load as if intact (the rubber has ruptured in reality)"
+                    : mode == YoshidaBearing3d::AfterFailure::Release
+                        ? "it carries no shear from now on"
+                        : "the analysis stops here with code -5");
+      log(text);
+    }
+    stop = stop || mode == YoshidaBearing3d::AfterFailure::Stop;
+  }
+  return stop;
 }
 
 EigenResult AnalysisBuilder::eigen(int numModes, bool dense) {

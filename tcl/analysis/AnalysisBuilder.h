@@ -3,6 +3,7 @@
 
 #include <functional>
 #include <memory>
+#include <set>
 #include <string>
 
 #include "tcl/analysis/AnalysisModel.h"
@@ -25,7 +26,12 @@ struct AnalysisStatistics {
   long equations = 0;         ///< equations of the last committed step (free dofs after constraints)
   long elementUpdates = 0;    ///< element state determinations
   long materialUpdates = 0;   ///< section material (fiber) state determinations
+  long failedBearings = 0;    ///< yoshidaBearing elements that reached their failure shear strain
 };
+
+/// Code `analyze` returns when a bearing with `-afterFailure stop` reached its failure strain: the
+/// step in which it did is committed and recorded, and the analysis stops there.
+inline constexpr int kBearingFailureStop = -5;
 
 /// The analysis strategy of one interpreter (style.md section 4: one per Runtime, no globals):
 /// constraint handler, numberer, system, test, algorithm, integrator and the analysis type, and the
@@ -77,6 +83,9 @@ class AnalysisBuilder {
   void refreshModalDamping();
   [[nodiscard]] Status analyzeStep(double dt);
   [[nodiscard]] Status analyzeSubLevel(int level, double dt);
+  /// Notes bearings that failed in the step just committed (statistics, one log line each); true
+  /// when one of them asks to stop the analysis.
+  bool noteBearingFailures();
 
   domain::Domain& domain_;
   ConstraintKind constraints_ = ConstraintKind::Plain;
@@ -97,6 +106,7 @@ class AnalysisBuilder {
   std::unique_ptr<LinearSystem> system_;
   bool integratorSeeded_ = false;
   AnalysisStatistics stats_;
+  std::set<int> failedBearings_;  ///< bearings already reported
 };
 
 }  // namespace dabs::analysis

@@ -12,6 +12,8 @@
 #include "tcl/analysis/LinearAlgorithm.h"
 #include "tcl/analysis/LoadControl.h"
 #include "tcl/analysis/NewtonLineSearch.h"
+#include "tcl/analysis/StopRequest.h"
+#include "tcl/commands/SignalExit.h"
 #include "tcl/analysis/NewtonRaphson.h"
 #include "tcl/commands/Registry.h"
 #include "tcl/commands/TclResult.h"
@@ -54,6 +56,24 @@ void systemCmd(Runtime& rt, ArgReader& a) {
   // Solver-specific options of OpenSees (e.g. -piv, -lValueFact) do not apply to Eigen's solvers.
   while (a.hasMore()) (void)a.word("option");
   rt.analysis->setSystem(analysis::solverKindFromName(type));
+}
+
+// Unconditional stability of the generalized-alpha method, Chung & Hulbert (1993) eq. 25:
+// alpha_m <= alpha_f <= 1/2 and beta >= 1/4 + (alpha_f - alpha_m)/2, with gamma at least the
+// second-order value 1/2 - alpha_m + alpha_f. In OpenSees' convention alphaM = 1 - alpha_m and
+// alphaF = 1 - alpha_f (1 and 1 is Newmark), so: 1/2 <= alphaF <= alphaM.
+void checkAlphaStability(ArgReader& a, double alphaM, double alphaF, double gamma, double beta) {
+  if (!(alphaF >= 0.5 && alphaF <= 1.0 && alphaM >= alphaF && alphaM <= 2.0))
+    a.fail("alphaM and alphaF must satisfy 1/2 <= alphaF <= alphaM <= 2 and alphaF <= 1 for unconditional "
+           "stability (Chung & Hulbert 1993), got alphaM " + std::to_string(alphaM) + ", alphaF " +
+           std::to_string(alphaF));
+  const double d = alphaM - alphaF;
+  constexpr double kRoundOff = 1e-12;
+  if (gamma < 0.5 + d - kRoundOff || beta < 0.25 + 0.5 * d - kRoundOff)
+    a.fail("gamma must be at least 1/2 + alphaM - alphaF = " + std::to_string(0.5 + d) +
+           " and beta at least 1/4 + (alphaM - alphaF)/2 = " + std::to_string(0.25 + 0.5 * d) +
+           " for unconditional stability (Chung & Hulbert 1993), got gamma " + std::to_string(gamma) +
+           ", beta " + std::to_string(beta));
 }
 
 void testCmd(Runtime& rt, ArgReader& a) {
@@ -111,6 +131,9 @@ void algorithmCmd(Runtime& rt, ArgReader& a) {
     const double maxEta = a.option("-maxEta", 10.0);
     (void)a.option("-pFlag", 1);
     if (!(tol > 0.0)) a.fail("-tol must be positive");
+    if (maxIter < 1) a.fail("-maxIter must be at least 1, got " + std::to_string(maxIter));
+    if (!(minEta > 0.0 && minEta <= 1.0 && maxEta >= 1.0))
+      a.fail("-minEta must be in (0, 1] and -maxEta at least 1");
     algorithm = std::make_unique<analysis::NewtonLineSearch>(search, tol, maxIter, minEta, maxEta);
   } else if (type == "KrylovNewton") {
     const bool initial = a.flag("-initial");
@@ -173,7 +196,11 @@ void integratorCmd(Runtime& rt, ArgReader& a) {
       beta = a.real("beta");
     }
     a.finish();
-    if (!(alpha > 0.0 && alpha <= 1.0)) a.fail(1, "alpha", "must be in (0, 1] (OpenSees convention: 1 is Newmark, 2/3 the most dissipative)");
+    // Hilber, Hughes & Taylor (1977): unconditionally stable for alpha_HHT in [-1/3, 0], i.e.
+    // OpenSees' alpha = 1 + alpha_HHT in [2/3, 1].
+    if (!(alpha >= 2.0 / 3.0 && alpha <= 1.0))
+      a.fail(1, "alpha", "must be in [2/3, 1] for unconditional stability (OpenSees convention: 1 is Newmark, 2/3 the most dissipative)");
+    checkAlphaStability(a, 1.0, alpha, gamma, beta);
     integrator = std::make_unique<analysis::GeneralizedAlpha>(1.0, alpha, gamma, beta);
   } else if (type == "GeneralizedAlpha") {
     const double alphaM = a.real("alphaM");
@@ -185,6 +212,7 @@ void integratorCmd(Runtime& rt, ArgReader& a) {
       beta = a.real("beta");
     }
     a.finish();
+    checkAlphaStability(a, alphaM, alphaF, gamma, beta);
     integrator = std::make_unique<analysis::GeneralizedAlpha>(alphaM, alphaF, gamma, beta);
   } else if (type == "CentralDifference") {
     a.finish();
@@ -215,7 +243,9 @@ void analyzeCmd(Runtime& rt, ArgReader& a) {
   if (n < 0) a.fail(1, "numIncr", "must not be negative");
   if (rt.analysis->kind() == AnalysisBuilder::Kind::Transient && !(dt > 0.0))
     a.fail(2, "dt", "a positive time step is required for a transient analysis");
-  setResult(rt, rt.analysis->analyze(n, dt));
+  const int result = rt.analysis->analyze(n, dt);
+  if (const int signal = analysis::StopRequest::signal) exitOnSignal(rt, signal);
+  setResult(rt, result);
 }
 
 void eigenCmd(Runtime& rt, ArgReader& a) {
@@ -278,7 +308,8 @@ void analysisStatisticsCmd(Runtime& rt, ArgReader& a) {
                            std::to_string(s.iterations) + " factorizations " + std::to_string(s.factorizations) +
                            " equations " + std::to_string(s.equations) + " elementUpdates " +
                            std::to_string(s.elementUpdates) + " materialUpdates " +
-                           std::to_string(s.materialUpdates);
+                           std::to_string(s.materialUpdates) + " failedBearings " +
+                           std::to_string(s.failedBearings);
   setResult(rt, text);
 }
 

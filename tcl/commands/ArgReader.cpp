@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "tcl/commands/ArgReader.h"
 
+#include <algorithm>
 #include <cctype>
 #include <cmath>
 #include <limits>
@@ -13,8 +14,28 @@ constexpr std::size_t kNone = std::numeric_limits<std::size_t>::max();
 bool parseReal(Tcl_Obj* obj, double& value) {
   return Tcl_GetDoubleFromObj(nullptr, obj, &value) == TCL_OK && std::isfinite(value);
 }
+// Tcl_GetIntFromObj accepts any value that fits in 32 bits unsigned and wraps it (4294967295
+// becomes -1), so a tag that does not fit would name another object; read 64 bits and check.
 bool parseInteger(Tcl_Obj* obj, int& value) {
-  return Tcl_GetIntFromObj(nullptr, obj, &value) == TCL_OK;
+  Tcl_WideInt wide = 0;
+  if (Tcl_GetWideIntFromObj(nullptr, obj, &wide) != TCL_OK) return false;
+  if (wide < std::numeric_limits<int>::min() || wide > std::numeric_limits<int>::max()) return false;
+  value = static_cast<int>(wide);
+  return true;
+}
+
+// What an integer argument expects, saying the range when the token is a decimal integer too
+// large for it.
+std::string integerExpected(Tcl_Obj* obj) {
+  std::string_view t = obj != nullptr ? std::string_view(Tcl_GetString(obj)) : std::string_view{};
+  if (!t.empty() && (t[0] == '-' || t[0] == '+')) t.remove_prefix(1);
+  const bool digits = !t.empty() && std::all_of(t.begin(), t.end(), [](char c) {
+    return std::isdigit(static_cast<unsigned char>(c)) != 0;
+  });
+  if (digits)
+    return "expected an integer from " + std::to_string(std::numeric_limits<int>::min()) + " to " +
+           std::to_string(std::numeric_limits<int>::max());
+  return "expected an integer";
 }
 }  // namespace
 
@@ -76,7 +97,8 @@ void ArgReader::expected(std::size_t i, std::string_view name, std::string_view 
 int ArgReader::integer(std::string_view name) {
   const std::size_t i = nextUnread();
   int value = 0;
-  if (i >= tokens_.size() || !parseInteger(tokens_[i], value)) expected(i, name, "expected an integer");
+  if (i >= tokens_.size() || !parseInteger(tokens_[i], value))
+    expected(i, name, integerExpected(i < tokens_.size() ? tokens_[i] : nullptr));
   used_[i] = true;
   last_ = i;
   return value;
@@ -124,7 +146,7 @@ std::vector<int> ArgReader::integers(std::string_view name, std::size_t atLeast)
     const std::size_t i = nextUnread();
     if (!parseInteger(tokens_[i], value)) {
       if (out.size() >= atLeast) break;
-      expected(i, name, "expected an integer");
+      expected(i, name, integerExpected(tokens_[i]));
     }
     used_[i] = true;
     last_ = i;
@@ -258,6 +280,23 @@ std::optional<std::vector<int>> ArgReader::optionIntegerList(std::string_view ke
   }
   if (out.empty()) expected(i + 1, key, "expected integers after " + std::string(key));
   return out;
+}
+
+std::optional<std::pair<int, int>> ArgReader::optionTagRange(std::string_view key) {
+  const std::size_t i = findKey(key);
+  if (i == kNone) return std::nullopt;
+  used_[i] = true;
+  int ends[2] = {0, 0};
+  for (std::size_t k = 0; k < 2; ++k) {
+    const std::size_t j = i + 1 + k;
+    if (j >= tokens_.size() || used_[j] || !parseInteger(tokens_[j], ends[k]))
+      expected(j, key, integerExpected(j < tokens_.size() ? tokens_[j] : nullptr) + " (" +
+                           std::string(k == 0 ? "first" : "last") + " tag of " + std::string(key) + ")");
+    used_[j] = true;
+  }
+  if (ends[0] > ends[1])
+    expected(i + 2, key, "expected a last tag not below the first " + std::to_string(ends[0]));
+  return std::pair{ends[0], ends[1]};
 }
 
 void ArgReader::finish() const {

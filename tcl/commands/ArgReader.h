@@ -7,6 +7,7 @@
 #include <stdexcept>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 namespace dabs::tcl {
@@ -80,6 +81,9 @@ class ArgReader {
   std::optional<std::vector<double>> optionRealList(std::string_view key);
   /// Consumes "-key i1 i2 ..." with every following integer when present (at least one).
   std::optional<std::vector<int>> optionIntegerList(std::string_view key);
+
+  /// Consumes "-key first last" (two integer tags, first <= last) when present.
+  std::optional<std::pair<int, int>> optionTagRange(std::string_view key);
 
   /// Throws when any argument is left unread.
   void finish() const;

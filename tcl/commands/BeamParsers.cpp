@@ -3,6 +3,7 @@
 // elasticBeamColumn`. Syntax follows OpenSees (OpenSees/OpenSees:SRC/coordTransformation/
 // TclGeomTransfCommand.cpp, SRC/element/elasticBeamColumn/TclElasticBeamCommand.cpp).
 #include <array>
+#include <cmath>
 #include <string>
 
 #include "elements/beam/DispBeamColumn.h"
@@ -79,6 +80,17 @@ void fiberCommand(Runtime& rt, ArgReader& args) {
 
 // patch rect matTag nY nZ yI zI yJ zJ | quad matTag nIJ nJK yI zI yJ zJ yK zK yL zL |
 // circ matTag nCirc nRad yC zC rInt rExt ?startAng endAng?
+// A bridge pier section has hundreds of fibers, a very fine one some tens of thousands; a count
+// beyond this limit is a typing error that would take the memory of the machine.
+constexpr long long kMaxSectionFibers = 1000000;
+
+// Checks that adding `count` fibers (a product of subdivision counts) keeps the section in limits.
+void checkFiberCount(const FiberSectionUnderConstruction& s, ArgReader& args, long long count) {
+  if (count > kMaxSectionFibers - static_cast<long long>(s.fibers.size()))
+    args.fail("would give the section " + std::to_string(count + static_cast<long long>(s.fibers.size())) +
+              " fibers; at most " + std::to_string(kMaxSectionFibers) + " are allowed");
+}
+
 void patchCommand(Runtime& rt, ArgReader& args) {
   FiberSectionUnderConstruction& s = currentSection(rt, args);
   const std::string type = args.word("type");
@@ -103,6 +115,7 @@ void patchCommand(Runtime& rt, ArgReader& args) {
       }
     }
     q.validate();
+    checkFiberCount(s, args, static_cast<long long>(q.divIJ) * q.divJK);
     q.discretize(out);
   } else if (type == "circ") {
     materials::section::CircPatch c;
@@ -119,6 +132,7 @@ void patchCommand(Runtime& rt, ArgReader& args) {
     }
     args.finish();
     c.validate();
+    checkFiberCount(s, args, static_cast<long long>(c.divCirc) * c.divRad);
     c.discretize(out);
   } else {
     args.fail(args.lastPosition(), "type", "unknown patch \"" + type + "\" (rect, quad, circ)");
@@ -145,6 +159,7 @@ void layerCommand(Runtime& rt, ArgReader& args) {
     l.yEnd = c[2];
     l.zEnd = c[3];
     l.validate();
+    checkFiberCount(s, args, l.numBars);
     l.discretize(out);
   } else if (type == "circ") {
     materials::section::CircLayer l;
@@ -160,6 +175,7 @@ void layerCommand(Runtime& rt, ArgReader& args) {
     }
     args.finish();
     l.validate();
+    checkFiberCount(s, args, l.numBars);
     l.discretize(out);
   } else {
     args.fail(args.lastPosition(), "type", "unknown layer \"" + type + "\" (straight, circ)");
@@ -447,6 +463,10 @@ std::unique_ptr<elements::Element> parseElasticBeam(Runtime& rt, ArgReader& args
 
 // element forceBeamColumn|nonlinearBeamColumn|dispBeamColumn tag i j transfTag integrationTag
 //   ?-iter maxIter tol? ?-mass m?     or the older   tag i j nIP secTag transfTag ?...?
+// Element iterations of a force-based beam: OpenSees' default is 10; thousands never help.
+constexpr int kMaxElementIterations = 1000;
+constexpr double kMinElementTolerance = 1e-15;
+
 template <bool Force>
 std::unique_ptr<elements::Element> parseSectionBeam(Runtime& rt, ArgReader& args, int tag) {
   const int ndm = rt.builder.ndm;
@@ -457,8 +477,14 @@ std::unique_ptr<elements::Element> parseSectionBeam(Runtime& rt, ArgReader& args
   int maxIter = 10;
   double tol = 1e-12;
   if (auto it = args.optionReals("-iter", 2)) {
+    // maxIter is checked as a real before the cast, so 1e308 cannot overflow an int.
+    if (!((*it)[0] >= 1.0 && (*it)[0] <= kMaxElementIterations && (*it)[0] == std::floor((*it)[0])))
+      throw InputError("-iter maxIter", "must be an integer from 1 to " + std::to_string(kMaxElementIterations));
     maxIter = static_cast<int>((*it)[0]);
     tol = (*it)[1];
+    if (tol < kMinElementTolerance)
+      throw InputError("-iter tol", "must be at least 1e-15: the element's work is compared relative to its "
+                                    "size, and round-off of doubles (about 1e-16) decides below that");
   }
   const double mass = args.option("-mass", 0.0);
   const bool consistentMass = args.flag("-cMass");

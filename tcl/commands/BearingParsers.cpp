@@ -19,7 +19,7 @@ constexpr const char* kYoshidaUsage =
     "biaxialMaterial Yoshida tag Y0 U0 n alpha0 beta q gamma ?-maxwell k eta? ?-subIncrement s?";
 constexpr const char* kBearingUsage =
     "element yoshidaBearing tag iNode jNode matTag -Tr Tr -Kv Kv ?-Kt Kt? ?-Kr Kr ?Krz?? "
-    "?-orient x1 x2 x3 y1 y2 y3? ?-mass m? ?-limits design failure? ?-afterFailure keep|release?";
+    "?-orient x1 x2 x3 y1 y2 y3? ?-mass m? ?-limits design failure? ?-afterFailure keep|release|stop?";
 
 // biaxialMaterial Yoshida tag Y0 U0 n alpha0 beta q gamma ?-maxwell k eta? ?-subIncrement s?
 // (s: largest backward-Euler sub-step of the hysteretic part, as a fraction of U0; default 0.02)
@@ -58,7 +58,7 @@ void biaxialMaterialCommand(Runtime& rt, ArgReader& args) {
 }
 
 // element yoshidaBearing tag iNode jNode matTag -Tr Tr -Kv Kv ?-Kt Kt? ?-Kr Kr ?Krz??
-//   ?-orient x1 x2 x3 y1 y2 y3? ?-mass m? ?-limits design failure? ?-afterFailure keep|release?
+//   ?-orient x1 x2 x3 y1 y2 y3? ?-mass m? ?-limits design failure? ?-afterFailure keep|release|stop?
 std::unique_ptr<elements::Element> parseYoshidaBearing(Runtime& rt, ArgReader& args, int tag) {
   using elements::YoshidaBearing3d;
   if (rt.builder.ndm != 3) args.fail("needs a 3D model with 6 dofs per node (model basic -ndm 3 -ndf 6)");
@@ -92,8 +92,10 @@ std::unique_ptr<elements::Element> parseYoshidaBearing(Runtime& rt, ArgReader& a
       p.afterFailure = YoshidaBearing3d::AfterFailure::Keep;
     else if (*after == "release")
       p.afterFailure = YoshidaBearing3d::AfterFailure::Release;
+    else if (*after == "stop")
+      p.afterFailure = YoshidaBearing3d::AfterFailure::Stop;
     else
-      args.fail("-afterFailure expects keep or release, got \"" + *after + "\"");
+      args.fail("-afterFailure expects keep, release or stop, got \"" + *after + "\"");
   }
   args.finish();
   if (!tr) args.fail("-Tr (total rubber thickness) is required");

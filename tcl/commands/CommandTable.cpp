@@ -2,6 +2,7 @@
 #include "tcl/commands/CommandTable.h"
 
 #include <string>
+#include <vector>
 
 #include "materials/InputError.h"
 #include "tcl/analysis/AnalysisBuilder.h"
@@ -13,6 +14,30 @@ namespace {
 int dispatch(ClientData data, Tcl_Interp* /*interp*/, int objc, Tcl_Obj* const objv[]) {
   auto* binding = static_cast<CommandBinding*>(data);
   return runCommand(*binding->runtime, *binding->entry, objc, objv);
+}
+
+// Tcl's own `load` (of shared libraries) under the name our nodal `load` hands its calls to.
+// Tcl itself needs it: tclreadline and Tk load their libraries with it.
+constexpr const char* kTclLoad = "::dabs::tclLoad";
+
+// Whether a `load` call is a nodal load: its first argument is an integer (a node tag). Anything
+// else (a file name, `-global`, `--`) is a call of Tcl's `load`.
+bool isNodalLoad(int objc, Tcl_Obj* const objv[]) {
+  int tag = 0;
+  return objc < 2 || Tcl_GetIntFromObj(nullptr, objv[1], &tag) == TCL_OK;
+}
+
+int dispatchLoad(ClientData data, Tcl_Interp* interp, int objc, Tcl_Obj* const objv[]) {
+  auto* binding = static_cast<CommandBinding*>(data);
+  if (isNodalLoad(objc, objv) ||
+      Tcl_FindCommand(interp, kTclLoad, nullptr, TCL_GLOBAL_ONLY) == nullptr)
+    return runCommand(*binding->runtime, *binding->entry, objc, objv);
+  std::vector<Tcl_Obj*> args(objv, objv + objc);
+  args[0] = Tcl_NewStringObj(kTclLoad, -1);
+  Tcl_IncrRefCount(args[0]);
+  const int code = Tcl_EvalObjv(interp, objc, args.data(), 0);
+  Tcl_DecrRefCount(args[0]);
+  return code;
 }
 
 // Flushes recorders when the program exits without deleting the interpreter.
@@ -58,10 +83,17 @@ int registerCommands(Tcl_Interp* interp) {
       recorderCommands(),     materialTestCommands(), sectionCommands(), bearingCommands(),
       contactCommands(),
   };
+  // Keep Tcl's `load` reachable before ours takes its name.
+  if (Tcl_FindCommand(interp, "::load", nullptr, TCL_GLOBAL_ONLY) != nullptr &&
+      Tcl_FindCommand(interp, kTclLoad, nullptr, TCL_GLOBAL_ONLY) == nullptr &&
+      Tcl_Eval(interp, (std::string("namespace eval ::dabs {}; rename ::load ") + kTclLoad).c_str()) !=
+          TCL_OK)
+    return TCL_ERROR;
   for (const auto& family : families) {
     for (const CommandEntry& entry : family) {
       rt->bindings.push_back(std::make_unique<CommandBinding>(CommandBinding{rt, &entry}));
-      Tcl_CreateObjCommand(interp, std::string(entry.name).c_str(), dispatch, rt->bindings.back().get(),
+      Tcl_CreateObjCommand(interp, std::string(entry.name).c_str(),
+                           entry.name == "load" ? dispatchLoad : dispatch, rt->bindings.back().get(),
                            nullptr);
     }
   }

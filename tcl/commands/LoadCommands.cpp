@@ -231,6 +231,7 @@ void removeCmd(Runtime& rt, ArgReader& a) {
     const int node = a.integer("node");
     const int dof = a.integer("dof");
     a.finish();
+    if (dof < 1) a.fail(3, "dof", "expected a dof from 1, got " + std::to_string(dof));
     if (rt.domain.removeFix(node, dof - 1) == 0)
       a.fail("node " + std::to_string(node) + " dof " + std::to_string(dof) + " is not fixed");
   } else {
@@ -242,6 +243,11 @@ void removeCmd(Runtime& rt, ArgReader& a) {
 void rayleighCmd(Runtime& rt, ArgReader& a) {
   const double aM = a.real("alphaM"), bK = a.real("betaK"), bK0 = a.real("betaKinit"), bKc = a.real("betaKcomm");
   a.finish();
+  // Negative factors give negative damping, which feeds energy into the model.
+  const char* names[4] = {"alphaM", "betaK", "betaKinit", "betaKcomm"};
+  const double values[4] = {aM, bK, bK0, bKc};
+  for (std::size_t k = 0; k < 4; ++k)
+    if (values[k] < 0.0) a.fail(k + 1, names[k], "must not be negative, got " + std::to_string(values[k]));
   rt.domain.setRayleigh(domain::RayleighFactors{aM, bK, bK0, bKc});
 }
 

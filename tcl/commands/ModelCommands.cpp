@@ -37,6 +37,9 @@ void nodeCmd(Runtime& rt, ArgReader& a) {
   if (ndf < 1 || ndf > 6) a.fail("-ndf must be 1 to 6");
   const auto mass = a.optionReals("-mass", static_cast<std::size_t>(ndf));
   a.finish();
+  if (mass)
+    for (double m : *mass)
+      if (m < 0.0) a.fail("-mass values must not be negative, got " + std::to_string(m));
   domain::Node& n = rt.domain.addNode(tag, rt.builder.ndm, ndf, x);
   if (mass) {
     Eigen::MatrixXd m = Eigen::MatrixXd::Zero(ndf, ndf);
@@ -49,7 +52,10 @@ void massCmd(Runtime& rt, ArgReader& a) {
   rt.requireModel("mass");
   domain::Node& n = rt.domain.node(a.integer("node"));
   Eigen::MatrixXd m = Eigen::MatrixXd::Zero(n.ndf(), n.ndf());
-  for (int i = 0; i < n.ndf(); ++i) m(i, i) = a.real("mass");
+  for (int i = 0; i < n.ndf(); ++i) {
+    m(i, i) = a.real("mass");
+    if (m(i, i) < 0.0) a.fail(a.lastPosition(), "mass", "must not be negative, got " + std::to_string(m(i, i)));
+  }
   a.finish();
   n.setMass(m);
   rt.domain.touch();
@@ -94,7 +100,11 @@ void fixCoordinate(Runtime& rt, ArgReader& a, int axis) {
   if (axis >= rt.builder.ndm) a.fail("the model has only " + std::to_string(rt.builder.ndm) + " dimensions");
   const double value = a.real("coordinate");
   std::vector<int> flags;
-  while (a.hasPositional()) flags.push_back(a.integer("constraint flag"));
+  while (a.hasPositional()) {
+    flags.push_back(a.integer("constraint flag"));
+    if (flags.back() != 0 && flags.back() != 1)
+      a.fail(a.lastPosition(), "constraint flag", "expected 0 or 1, got " + std::to_string(flags.back()));
+  }
   const double tol = a.option("-tol", 1e-10);
   a.finish();
   if (flags.empty()) a.fail("needs constraint flags");
@@ -127,6 +137,9 @@ void equalDofCmd(Runtime& rt, ArgReader& a) {
   mp.constrainedNode = a.integer("cNode");
   std::vector<int> dofs = a.integers("dof");
   a.finish();
+  for (std::size_t i = 0; i < dofs.size(); ++i)
+    for (std::size_t j = 0; j < i; ++j)
+      if (dofs[i] == dofs[j]) a.fail(3 + i, "dof", "dof " + std::to_string(dofs[i]) + " is given twice");
   for (int& d : dofs) --d;
   mp.constrainedDofs = mp.retainedDofs = dofs;
   mp.Ccr = Eigen::MatrixXd::Identity(static_cast<Eigen::Index>(dofs.size()),
@@ -184,15 +197,22 @@ void regionCmd(Runtime& rt, ArgReader& a) {
     eles = *list;
     elementsOnly = true;
   }
-  if (auto range = a.optionReals("-eleRange", 2))
-    for (int t = static_cast<int>((*range)[0]); t <= static_cast<int>((*range)[1]); ++t)
-      if (rt.domain.findElement(t)) eles.push_back(t);
+  // Ranges take the existing tags in them, walking the model's ordered maps (a loop over every
+  // integer of `1 2147483647` would take minutes and overflow at its end).
+  if (auto range = a.optionTagRange("-eleRange"))
+    for (auto it = rt.domain.elements().lower_bound(range->first);
+         it != rt.domain.elements().end() && it->first <= range->second; ++it)
+      eles.push_back(it->first);
   if (auto list = a.optionIntegerList("-node")) nodes = *list;
-  if (auto range = a.optionReals("-nodeRange", 2))
-    for (int t = static_cast<int>((*range)[0]); t <= static_cast<int>((*range)[1]); ++t)
-      if (rt.domain.findNode(t)) nodes.push_back(t);
+  if (auto range = a.optionTagRange("-nodeRange"))
+    for (auto it = rt.domain.nodes().lower_bound(range->first);
+         it != rt.domain.nodes().end() && it->first <= range->second; ++it)
+      nodes.push_back(it->first);
   const auto rayleigh = a.optionReals("-rayleigh", 4);
   a.finish();
+  if (rayleigh)
+    for (double f : *rayleigh)
+      if (f < 0.0) a.fail("-rayleigh factors must not be negative, got " + std::to_string(f));
   for (int t : eles) {
     const elements::Element* e = rt.domain.findElement(t);
     if (e == nullptr) throw InputError("-ele", "element " + std::to_string(t) + " does not exist");
@@ -234,6 +254,12 @@ void elementCmd(Runtime& rt, ArgReader& a) {
   const int tag = readNewTag(a, rt.domain.elements(), "element");
   auto element = entry->parse(rt, a, tag);
   a.finish();
+  // An element from a node to itself has no length or deformation to work on.
+  const std::vector<int>& nodes = element->nodeTags();
+  for (std::size_t i = 0; i < nodes.size(); ++i)
+    for (std::size_t j = 0; j < i; ++j)
+      if (nodes[i] == nodes[j])
+        a.fail("node " + std::to_string(nodes[i]) + " is given twice; an element connects distinct nodes");
   rt.domain.addElement(std::move(element));
 }
 

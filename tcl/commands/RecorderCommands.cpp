@@ -3,6 +3,7 @@
 #include <string>
 
 #include "materials/InputError.h"
+#include "materials/ResponseArgs.h"
 #include "tcl/commands/Registry.h"
 #include "tcl/commands/SeriesParser.h"
 #include "tcl/commands/TclResult.h"
@@ -29,17 +30,27 @@ domain::RecorderOutput readOutput(ArgReader& a, bool envelope) {
   return out;
 }
 
-std::vector<int> readRange(ArgReader& a, const char* listKey, const char* rangeKey) {
+// Tags of `-node`/`-ele` plus the existing tags within `-nodeRange`/`-eleRange` (as OpenSees'
+// recorders skip the missing ones); the range walks the model's ordered map, so `1 2147483647`
+// costs no more than the model's size.
+template <class Map>
+std::vector<int> readRange(ArgReader& a, const char* listKey, const char* rangeKey, const Map& existing) {
   std::vector<int> tags;
   if (auto list = a.optionIntegerList(listKey)) tags = *list;
-  if (auto range = a.optionReals(rangeKey, 2))
-    for (int t = static_cast<int>((*range)[0]); t <= static_cast<int>((*range)[1]); ++t) tags.push_back(t);
+  if (auto range = a.optionTagRange(rangeKey)) {
+    const std::size_t before = tags.size();
+    for (auto it = existing.lower_bound(range->first); it != existing.end() && it->first <= range->second; ++it)
+      tags.push_back(it->first);
+    if (tags.size() == before)
+      a.fail(std::string(rangeKey) + " " + std::to_string(range->first) + " " + std::to_string(range->second) +
+             " holds no existing tag");
+  }
   return tags;
 }
 
 void nodeRecorder(Runtime& rt, ArgReader& a, bool envelope) {
   domain::RecorderOutput out = readOutput(a, envelope);
-  std::vector<int> nodes = readRange(a, "-node", "-nodeRange");
+  std::vector<int> nodes = readRange(a, "-node", "-nodeRange", rt.domain.nodes());
   if (nodes.empty()) a.fail("needs -node tags or -nodeRange a b");
   const auto dofs = a.optionIntegerList("-dof");
   if (!dofs) a.fail("-dof dofs is required");
@@ -58,7 +69,7 @@ void nodeRecorder(Runtime& rt, ArgReader& a, bool envelope) {
   else if (response.rfind("eigen", 0) == 0) {
     kind = R::Eigen;
     const std::string rest = response.substr(5);
-    if (!rest.empty()) mode = std::atoi(rest.c_str());
+    if (!rest.empty()) mode = responseInteger(rest).value_or(0);
     else mode = a.integer("mode");
     if (mode < 1) a.fail("eigen needs a mode number from 1");
   } else {
@@ -73,7 +84,7 @@ void nodeRecorder(Runtime& rt, ArgReader& a, bool envelope) {
 
 void elementRecorder(Runtime& rt, ArgReader& a, bool envelope) {
   domain::RecorderOutput out = readOutput(a, envelope);
-  std::vector<int> eles = readRange(a, "-ele", "-eleRange");
+  std::vector<int> eles = readRange(a, "-ele", "-eleRange", rt.domain.elements());
   if (eles.empty()) a.fail("needs -ele tags or -eleRange a b");
   std::vector<std::string> response;
   while (a.hasMore()) response.push_back(a.word("response"));
@@ -112,6 +123,7 @@ void recorderCmd(Runtime& rt, ArgReader& a) {
 void recordCmd(Runtime& rt, ArgReader& a) {
   a.finish();
   rt.domain.record();
+  if (auto error = rt.domain.takeRecorderError()) throw InputError("", *error);
   rt.domain.flushRecorders();
 }
 

@@ -86,6 +86,21 @@ void Domain::removeNode(int tag) {
     if (mp.retainedNode == tag || mp.constrainedNode == tag)
       throw InputError("node", std::to_string(tag) + " is used by a multi-point constraint");
   }
+  // A pattern still loading the node would make every later analysis fail; the user removes the
+  // pattern first (OpenSees leaves the dangling load in the pattern).
+  for (const auto& [ptag, p] : patterns_) {
+    bool uses = false;
+    if (p->kind() == LoadPattern::Kind::Plain) {
+      const auto& plain = static_cast<const PlainPattern&>(*p);
+      for (const auto& l : plain.loads) uses = uses || l.node == tag;
+      for (const auto& d : plain.prescribed) uses = uses || d.node == tag;
+    } else if (p->kind() == LoadPattern::Kind::MultipleSupport) {
+      for (const auto& m : static_cast<const MultipleSupportPattern&>(*p).imposed) uses = uses || m.node == tag;
+    }
+    if (uses)
+      throw InputError("node", std::to_string(tag) + " is loaded by pattern " + std::to_string(ptag) +
+                                   "; remove the pattern first");
+  }
   fixes_.erase(std::remove_if(fixes_.begin(), fixes_.end(),
                               [tag](const SPConstraint& sp) { return sp.node == tag; }),
                fixes_.end());
@@ -263,8 +278,18 @@ void Domain::record() {
       calculateNodalReactions(false);
       reactionsDone = true;
     }
-    r->record(*this);
+    try {
+      r->record(*this);
+    } catch (const InputError& e) {
+      if (!recorderError_) recorderError_ = "recorder " + std::to_string(tag) + ": " + e.what();
+    }
   }
+}
+
+std::optional<std::string> Domain::takeRecorderError() {
+  std::optional<std::string> error;
+  error.swap(recorderError_);
+  return error;
 }
 
 Eigen::VectorXd Domain::nodalLoad(int nodeTag) const {

@@ -128,8 +128,11 @@ class Domain {
   void removeRecorder(int tag);
   void removeAllRecorders();
   void flushRecorders();
-  /// Records the current state with every recorder.
+  /// Records the current state with every recorder. A recorder that cannot write (a full disk)
+  /// does not stop the others; its error is kept for takeRecorderError().
   void record();
+  /// The first recorder write error since the last call, if any (the step loop stops on it).
+  std::optional<std::string> takeRecorderError();
 
   /// Computes nodal reactions from element forces and applied loads; with `includeInertia`,
   /// inertia and damping forces too (`reactions -dynamic`).
@@ -153,6 +156,7 @@ class Domain {
   Eigen::VectorXd gatherElement(const elements::Element& e, Eigen::VectorXd Node::*field) const;
   std::map<int, std::unique_ptr<Recorder>> recorders_;
   int nextRecorderTag_ = 0;
+  std::optional<std::string> recorderError_;
   double time_ = 0.0;
   double committedTime_ = 0.0;
   long modelVersion_ = 0;

@@ -1,6 +1,9 @@
 // SPDX-License-Identifier: MIT
 #include "tcl/domain/DriftRecorder.h"
 
+#include <algorithm>
+#include <string>
+
 #include "materials/InputError.h"
 #include "tcl/domain/Domain.h"
 
@@ -23,6 +26,11 @@ void DriftRecorder::initialize(const Domain& domain) {
     const Node& j = domain.node(jNodes_[k]);
     const int p = perp_[perp_.size() == 1 ? 0 : k];
     if (p < 0 || p > 2) throw InputError("-perpDirn", "must be 1, 2 or 3");
+    const int d = dofs_[dofs_.size() == 1 ? 0 : k];
+    const int ndf = std::min(i.ndf(), j.ndf());
+    if (d < 0 || d >= ndf)
+      throw InputError("-dof", "must be 1 to " + std::to_string(ndf) + " for nodes " + std::to_string(iNodes_[k]) +
+                                   " and " + std::to_string(jNodes_[k]) + ", got " + std::to_string(d + 1));
     const double length = j.coords()(p) - i.coords()(p);
     if (length == 0.0)
       throw InputError("-perpDirn", "nodes " + std::to_string(iNodes_[k]) + " and " +

@@ -15,9 +15,15 @@ NodeRecorder::NodeRecorder(RecorderOutput output, std::vector<int> nodes, std::v
       response_(response), mode_(mode), series_(std::move(series)) {}
 
 void NodeRecorder::initialize(const Domain& domain) {
-  for (int n : nodes_) (void)domain.node(n);  // throws for an unknown node
   for (int d : dofs_)
-    if (d < 0) throw InputError("-dof", "dofs start at 1");
+    if (d < 0) throw InputError("-dof", "dofs start at 1, got " + std::to_string(d + 1));
+  for (int tag : nodes_) {
+    const Node& n = domain.node(tag);  // throws for an unknown node
+    for (int d : dofs_)
+      if (d >= n.ndf())
+        throw InputError("-dof", "node " + std::to_string(tag) + " has " + std::to_string(n.ndf()) +
+                                     " dofs, got dof " + std::to_string(d + 1));
+  }
   if (!series_.empty() && series_.size() != dofs_.size())
     throw InputError("-timeSeries", "needs one series per dof");
 }

@@ -2,7 +2,9 @@
 #include "tcl/domain/PathSeries.h"
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
+#include <filesystem>
 #include <fstream>
 #include <regex>
 #include <sstream>
@@ -26,9 +28,10 @@ double PathSeries::factor(double t) const {
   if (dt_ > 0.0) {
     if (t < startTime_) return 0.0;
     const double x = (t - startTime_) / dt_;
+    // Compared as doubles before the cast: with a tiny dt, x can exceed any index (1e20).
+    if (!(x < static_cast<double>(values_.size() - 1))) return useLast_ ? factor_ * values_.back() : 0.0;
     const auto i1 = static_cast<std::size_t>(std::floor(x));
     const std::size_t i2 = i1 + 1;
-    if (i2 >= values_.size()) return useLast_ ? factor_ * values_.back() : 0.0;
     const double frac = x - static_cast<double>(i1);
     return factor_ * (values_[i1] + (values_[i2] - values_[i1]) * frac);
   }
@@ -63,48 +66,111 @@ std::string PathSeries::describe() const {
   return out.str();
 }
 
+namespace {
+
+// Longest line looked at for a header, and longest token taken for a number: a record's numbers
+// are short, so anything longer is not a record (a binary file need not hold a newline at all).
+constexpr std::size_t kMaxHeaderLine = 4096;
+constexpr std::size_t kMaxToken = 64;
+constexpr std::size_t kHeaderLines = 20;
+
+// Reads one line of at most kMaxHeaderLine characters (the rest of a longer line is skipped).
+bool readLine(std::istream& in, std::string& line) {
+  line.clear();
+  int c = 0;
+  bool any = false;
+  while ((c = in.get()) != EOF) {
+    any = true;
+    if (c == '\n') break;
+    if (line.size() < kMaxHeaderLine) line += static_cast<char>(c);
+  }
+  return any;
+}
+
+// Appends the numbers of `text` to `values` until the first token that is not a number, which
+// ends the record (OpenSees' PathSeries reads `file >> value` until it fails); false then.
+bool takeNumbers(std::string_view text, std::vector<double>& values, long limit) {
+  std::size_t i = 0;
+  while (i < text.size()) {
+    while (i < text.size() && std::isspace(static_cast<unsigned char>(text[i])) != 0) ++i;
+    std::size_t j = i;
+    while (j < text.size() && std::isspace(static_cast<unsigned char>(text[j])) == 0) ++j;
+    if (j == i) break;
+    if (limit >= 0 && static_cast<long>(values.size()) >= limit) return false;
+    if (j - i > kMaxToken) return false;
+    const std::string token(text.substr(i, j - i));
+    char* end = nullptr;
+    const double v = std::strtod(token.c_str(), &end);
+    if (end != token.c_str() + token.size() || !std::isfinite(v)) return false;
+    values.push_back(v);
+    i = j;
+  }
+  return true;
+}
+
+}  // namespace
+
 RecordFile readRecordFile(const std::string& path) {
-  std::ifstream in(path);
+  // Only regular files: a device such as /dev/urandom or /dev/zero, or a pipe, never ends.
+  std::error_code ec;
+  const auto status = std::filesystem::status(path, ec);
+  if (ec || !std::filesystem::exists(status))
+    throw InputError("-filePath", "cannot open \"" + path + "\": no such file");
+  if (!std::filesystem::is_regular_file(status))
+    throw InputError("-filePath", "\"" + path + "\" is not a regular file; a record is a text file of numbers");
+  std::ifstream in(path, std::ios::binary);
   if (!in) throw InputError("-filePath", "cannot open \"" + path + "\"");
   RecordFile out;
-  std::vector<std::string> lines;
-  for (std::string line; std::getline(in, line);) lines.push_back(line);
-  // PEER header: a line with NPTS= and DT= (NGA files add a trailing comma after SEC).
+  // PEER header: a line with NPTS= and DT= (NGA files add a trailing comma after SEC) among the
+  // first lines; the numbers start on the next line.
   static const std::regex kHeader(R"(NPTS\s*=\s*(\d+)\s*,\s*DT\s*=\s*([0-9.eE+-]+))",
                                   std::regex::icase);
+  std::vector<std::string> head;
   std::size_t first = 0;
   long npts = -1;
-  for (std::size_t i = 0; i < lines.size() && i < 20; ++i) {
+  for (std::string line; head.size() < kHeaderLines && readLine(in, line);) {
+    head.push_back(line);
     std::smatch m;
-    if (std::regex_search(lines[i], m, kHeader)) {
-      npts = std::stol(m[1].str());
-      out.dt = std::stod(m[2].str());
-      first = i + 1;
+    if (std::regex_search(line, m, kHeader)) {
+      try {
+        npts = std::stol(m[1].str());
+        out.dt = std::stod(m[2].str());
+      } catch (const std::exception&) {
+        throw InputError("-filePath", "\"" + path + "\" has an unreadable NPTS/DT header: " + line);
+      }
+      first = head.size();
       break;
     }
   }
-  // With a header, exactly NPTS values are read and any trailer (e.g. "*** End Data ***") ignored.
-  for (std::size_t i = first; i < lines.size(); ++i) {
-    if (npts >= 0 && static_cast<long>(out.values.size()) >= npts) break;
-    std::istringstream tokens(lines[i]);
-    for (std::string tok; tokens >> tok;) {
-      if (npts >= 0 && static_cast<long>(out.values.size()) >= npts) break;
-      char* end = nullptr;
-      const double v = std::strtod(tok.c_str(), &end);
-      if (end == tok.c_str() || *end != '\0' || !std::isfinite(v)) {
-        throw InputError("-filePath", "\"" + path + "\" line " + std::to_string(i + 1) +
-                                          ": expected a number, got \"" + tok + "\"");
-      }
-      out.values.push_back(v);
-    }
+  // Numbers until the first non-number (a trailer such as "*** End Data ***" ends the record);
+  // with a header, exactly NPTS values.
+  bool more = true;
+  for (std::size_t i = first; more && i < head.size(); ++i) more = takeNumbers(head[i], out.values, npts);
+  constexpr std::size_t kChunk = 1 << 16;
+  std::string pending;
+  char buffer[kChunk];
+  while (more && in) {
+    in.read(buffer, kChunk);
+    const auto got = static_cast<std::size_t>(in.gcount());
+    if (got == 0) break;
+    pending.append(buffer, got);
+    // Keep a token cut at the chunk's end for the next round.
+    std::size_t cut = pending.size();
+    while (cut > 0 && std::isspace(static_cast<unsigned char>(pending[cut - 1])) == 0) --cut;
+    if (pending.size() - cut > kMaxToken) break;
+    more = takeNumbers(std::string_view(pending).substr(0, cut), out.values, npts);
+    pending.erase(0, cut);
   }
+  if (more && !pending.empty()) takeNumbers(pending, out.values, npts);
   if (npts >= 0) {
     if (static_cast<long>(out.values.size()) < npts)
       throw InputError("-filePath", "\"" + path + "\" announces NPTS=" + std::to_string(npts) +
                                         " but holds " + std::to_string(out.values.size()) + " values");
     out.values.resize(static_cast<std::size_t>(npts));
   }
-  if (out.values.empty()) throw InputError("-filePath", "\"" + path + "\" holds no values");
+  if (out.values.empty())
+    throw InputError("-filePath", "\"" + path + "\" holds no numbers; a record is a text file of numbers "
+                                  "(optionally after a PEER header with NPTS= and DT=)");
   return out;
 }
 

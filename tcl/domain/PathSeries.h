@@ -41,8 +41,10 @@ struct RecordFile {
   double dt = 0.0;  ///< 0 when the file has no header
 };
 
-/// Reads a file of numbers; recognises PEER NGA and old PEER .AT2 headers (a line with NPTS= and
-/// DT=) and takes NPTS values after it. Throws InputError naming the file and line on bad data.
+/// Reads a regular file of numbers up to the first token that is not a number, as OpenSees'
+/// PathSeries does; recognises PEER NGA and old PEER .AT2 headers (a line with NPTS= and DT= among
+/// the first 20 lines) and then takes NPTS values after it. Throws InputError naming the file for
+/// what is not a record: not a regular file (a device, a pipe), no numbers, fewer than NPTS.
 RecordFile readRecordFile(const std::string& path);
 
 }  // namespace dabs::domain

@@ -5,13 +5,16 @@ namespace dabs::domain {
 
 class Domain;
 
-/// Writes part of the state after each committed step. Output is buffered and flushed at the end
-/// of every `analyze`, on `remove recorders`, `wipe` and exit (Domain::flushRecorders), so nothing
-/// already recorded is lost when a later step fails.
+/// Writes part of the state after each committed step. Files are written through RecorderFile:
+/// rows reach the operating system as they are recorded, so nothing already recorded is lost when a
+/// later step fails or the program is killed; flush() completes output that is written less often
+/// (the viewer page) and is called at the end of every `analyze`, on `remove recorders`, `wipe` and
+/// exit (Domain::flushRecorders).
 class Recorder {
  public:
   virtual ~Recorder() = default;
-  /// Records the domain's committed state at its current time.
+  /// Records the domain's committed state at its current time; throws InputError when the output
+  /// cannot be written.
   virtual void record(const Domain& domain) = 0;
   /// Writes buffered output to the file.
   virtual void flush() = 0;

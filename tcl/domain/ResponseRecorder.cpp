@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "tcl/domain/ResponseRecorder.h"
 
+#include <charconv>
 #include <cmath>
 #include <cstdio>
 
@@ -14,23 +15,15 @@ namespace {
 constexpr double kDeltaTTolerance = 1e-10;
 }  // namespace
 
-ResponseRecorder::ResponseRecorder(RecorderOutput output) : output_(std::move(output)) {
-  std::ofstream probe(output_.file, std::ios::trunc);
-  if (!probe) throw InputError("-file", "cannot write \"" + output_.file + "\"");
-}
-
-ResponseRecorder::~ResponseRecorder() {
-  try {
-    flush();
-  } catch (...) {
-    // A destructor must not throw; the data were flushed at the end of the last analyze.
-  }
-}
+ResponseRecorder::ResponseRecorder(RecorderOutput output)
+    : output_(std::move(output)), file_(output_.file) {}
 
 void ResponseRecorder::appendNumber(double v) {
+  // std::to_chars with a precision formats as printf's %.*g does (C++17 [charconv]), several
+  // times faster, which matters for recorders of every node.
   char text[64];
-  std::snprintf(text, sizeof text, "%.*g", output_.precision, v);
-  buffer_ += text;
+  const auto result = std::to_chars(text, text + sizeof text, v, std::chars_format::general, output_.precision);
+  file_.buffer().append(text, result.ptr);
 }
 
 void ResponseRecorder::writeRow(double time, const std::vector<double>& row) {
@@ -40,11 +33,12 @@ void ResponseRecorder::writeRow(double time, const std::vector<double>& row) {
     first = false;
   }
   for (double v : row) {
-    if (!first) buffer_ += ' ';
+    if (!first) file_.buffer() += ' ';
     appendNumber(v);
     first = false;
   }
-  buffer_ += '\n';
+  file_.buffer() += '\n';
+  file_.flush();
 }
 
 void ResponseRecorder::record(const Domain& domain) {
@@ -66,54 +60,51 @@ void ResponseRecorder::record(const Domain& domain) {
     for (std::size_t i = 0; i < row_.size(); ++i) absMax_[i] = std::abs(row_[i]);
     tMin_.assign(row_.size(), t);
     tMax_ = tAbs_ = tMin_;
+    writeEnvelope();
     return;
   }
+  bool changed = false;
   for (std::size_t i = 0; i < row_.size(); ++i) {
     if (row_[i] < min_[i]) {
       min_[i] = row_[i];
       tMin_[i] = t;
+      changed = true;
     }
     if (row_[i] > max_[i]) {
       max_[i] = row_[i];
       tMax_[i] = t;
+      changed = true;
     }
     if (std::abs(row_[i]) > absMax_[i]) {
       absMax_[i] = std::abs(row_[i]);
       tAbs_[i] = t;
+      changed = true;
     }
   }
+  if (changed) writeEnvelope();
 }
 
-void ResponseRecorder::flush() {
-  if (output_.envelope) {
-    // Three rows: min, max, max |value|; with -time each value follows the time it occurred.
-    if (min_.empty()) return;
-    buffer_.clear();
-    const std::vector<double>* rows[3] = {&min_, &max_, &absMax_};
-    const std::vector<double>* times[3] = {&tMin_, &tMax_, &tAbs_};
-    for (int r = 0; r < 3; ++r) {
-      bool first = true;
-      for (std::size_t i = 0; i < rows[r]->size(); ++i) {
-        if (output_.time) {
-          if (!first) buffer_ += ' ';
-          appendNumber((*times[r])[i]);
-          first = false;
-        }
-        if (!first) buffer_ += ' ';
-        appendNumber((*rows[r])[i]);
+void ResponseRecorder::writeEnvelope() {
+  // Three rows: min, max, max |value|; with -time each value follows the time it occurred.
+  const std::vector<double>* rows[3] = {&min_, &max_, &absMax_};
+  const std::vector<double>* times[3] = {&tMin_, &tMax_, &tAbs_};
+  for (int r = 0; r < 3; ++r) {
+    bool first = true;
+    for (std::size_t i = 0; i < rows[r]->size(); ++i) {
+      if (output_.time) {
+        if (!first) file_.buffer() += ' ';
+        appendNumber((*times[r])[i]);
         first = false;
       }
-      buffer_ += '\n';
+      if (!first) file_.buffer() += ' ';
+      appendNumber((*rows[r])[i]);
+      first = false;
     }
-    std::ofstream out(output_.file, std::ios::trunc);
-    out << buffer_;
-    buffer_.clear();
-    return;
+    file_.buffer() += '\n';
   }
-  if (buffer_.empty()) return;
-  std::ofstream out(output_.file, std::ios::app);
-  out << buffer_;
-  buffer_.clear();
+  file_.rewrite();
 }
+
+void ResponseRecorder::flush() { file_.flush(); }
 
 }  // namespace dabs::domain

@@ -1,11 +1,11 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
-#include <fstream>
 #include <string>
 #include <vector>
 
 #include "tcl/domain/Recorder.h"
+#include "tcl/domain/RecorderFile.h"
 
 namespace dabs::domain {
 
@@ -19,13 +19,14 @@ struct RecorderOutput {
 };
 
 /// A recorder writing one row of numbers per recorded step, OpenSees' layout: optional time, then
-/// the values, separated by single spaces (OpenSees/OpenSees:SRC/handler/DataFileStream.cpp). Rows
-/// are buffered and appended to the file at flush(); envelope recorders rewrite their three rows.
+/// the values, separated by single spaces (OpenSees/OpenSees:SRC/handler/DataFileStream.cpp). Each
+/// row reaches the operating system when it is recorded (at the commit of its step), so a killed
+/// run keeps every committed step; envelope recorders rewrite their three rows when one changes.
+/// A write error throws InputError.
 class ResponseRecorder : public Recorder {
  public:
   /// Opens (truncates) the file; throws InputError when it cannot be written.
   explicit ResponseRecorder(RecorderOutput output);
-  ~ResponseRecorder() override;
   void record(const Domain& domain) override;
   void flush() override;
 
@@ -37,8 +38,9 @@ class ResponseRecorder : public Recorder {
 
  private:
   void appendNumber(double v);
+  void writeEnvelope();
   RecorderOutput output_;
-  std::string buffer_;
+  RecorderFile file_;
   std::vector<double> row_;
   double nextTime_ = 0.0;
   bool anyRecord_ = false;

@@ -11,6 +11,7 @@
 
 #include "materials/InputError.h"
 #include "tcl/domain/Domain.h"
+#include "tcl/domain/RecorderFile.h"
 #include "tcl/viewer/ViewerPageTemplate.h"
 
 namespace dabs::domain {
@@ -323,19 +324,11 @@ void ViewerRecorder::write() {
   const auto start = std::chrono::steady_clock::now();
   const std::size_t at = template_.find(viewer::kViewerDataMarker);
   // Written to a temporary file and renamed, so a browser never reads half a page.
-  const std::string tmp = options_.file + ".tmp";
-  {
-    std::ofstream out(tmp, std::ios::trunc | std::ios::binary);
-    if (!out) throw InputError("-file", "cannot write \"" + tmp + "\"");
-    out.write(template_.data(), static_cast<std::streamsize>(at));
-    out << dataJson();
-    const std::size_t after = at + viewer::kViewerDataMarker.size();
-    out.write(template_.data() + after, static_cast<std::streamsize>(template_.size() - after));
-    if (!out) throw InputError("-file", "cannot write \"" + tmp + "\"");
-  }
-  std::error_code ec;
-  std::filesystem::rename(tmp, options_.file, ec);
-  if (ec) throw InputError("-file", "cannot replace \"" + options_.file + "\": " + ec.message());
+  const std::string json = dataJson();
+  const std::size_t after = at + viewer::kViewerDataMarker.size();
+  RecorderFile::replaceAtomically(
+      options_.file, {std::string_view(template_).substr(0, at), json,
+                      std::string_view(template_).substr(after)});
   written_ = frames();
   everWritten_ = true;
   lastWrite_ = std::chrono::steady_clock::now();

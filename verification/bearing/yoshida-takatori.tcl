@@ -19,7 +19,7 @@ fix 1 1 1 1 1 1 1
 fix 2 0 0 1 1 1 1
 biaxialMaterial Yoshida 1 $Y0 $U0 2.0 $alpha0 0.01 1.2 $gamma -maxwell $k $eta
 element yoshidaBearing 1 1 2 1 -Tr 0.2 -Kv 2.0e6 -Kt 500.0 -Kr 8000.0
-set record [sharedData ground-motions RSN1120_KOBE_TAK090.AT2]
+set record [recordPath RSN1120_KOBE_TAK090.AT2]
 set angle [expr {$pi / 6}]
 timeSeries Path 1 -filePath $record -dt 0.01 -factor [expr {$g * cos($angle)}]
 timeSeries Path 2 -filePath $record -dt 0.01 -factor [expr {$g * sin($angle)}]

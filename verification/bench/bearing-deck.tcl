@@ -24,8 +24,7 @@
 #               relative to the reference's peak |u_x|
 set csv [expr {$argc > 0 ? [lindex $argv 0] : "bearing-deck.csv"}]
 set nBearings [expr {$argc > 1 ? [lindex $argv 1] : 4}]
-set shared [expr {[info exists env(DABS_SHARED_DIR)] ? $env(DABS_SHARED_DIR) : "/work/shared"}]
-set record [file join $shared data ground-motions RSN1120_KOBE_TAK090.AT2]
+set record [file join [file dirname [info script]] .. data RSN1120_KOBE_TAK090.AT2]
 set PI [expr {acos(-1.0)}]
 set duration 40.96
 

@@ -5,7 +5,7 @@
 #
 #   dabs verification/bench/bridge-bench.tcl ?repeat? ?csv?
 #
-# Each case runs `repeat` times (default 3) under the Takatori record (when ../shared is there)
+# Each case runs `repeat` times (default 3) under the Takatori record (verification/data)
 # and under the built-in near-fault pulse; the table gives the median wall time of the repeats,
 # measured one after another in this one process. The error that goes with these times is the
 # speed study's (verification/bridge/tools/results/speed.md): the default settings against a

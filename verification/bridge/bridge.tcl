@@ -116,8 +116,7 @@ set transverseSlack 0.05    ;# m, clearance of the transverse devices
 
 # Ground motion
 set motionAngle 30.0        ;# degrees between the motion and the bridge axis X
-set recordFile [file normalize [file join [file dirname [info script]] .. .. .. shared data \
-                    ground-motions RSN1120_KOBE_TAK090.AT2]]
+set recordFile [file normalize [file join [file dirname [info script]] .. data RSN1120_KOBE_TAK090.AT2]]
 # Mavroeidis-Papageorgiou pulse fitted to the Takatori EW velocity by tools/fit-pulse.tcl (least
 # squares on velocity over 0-20 s; it captures the main pulse at 5-7 s, relative rms misfit 0.74
 # over the whole 20 s because the record has further cycles at 2-4 s and 7-8 s)

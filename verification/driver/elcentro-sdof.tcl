@@ -4,7 +4,7 @@
 # Source: A. K. Chopra, Dynamics of Structures (4th ed.), §6.4 (Fig. 6.4.1 and the deformation
 # response of §6.4.1): peak deformation D in inches of SDF systems with Tn = 0.5, 1, 2 s and
 # zeta = 0, 2, 5 %, computed with g = 386.4 in/s^2 and the linear-acceleration method on the
-# record's 0.02 s step; values as tabulated in ../shared/data/ground-motions/README.md:
+# record's 0.02 s step; values as tabulated in verification/data/README.md:
 #   Tn = 0.5 s, zeta 2%: 2.67 in;  Tn = 1 s, 2%: 5.97 in;  Tn = 2 s, 2%: 7.47 in;
 #   Tn = 2 s, 0%: 9.91 in;  Tn = 2 s, 5%: 5.37 in.
 # Chopra prints two decimals and his digitisation of the record may differ slightly from the
@@ -13,7 +13,7 @@ source [file join [file dirname [info script]] .. lib check.tcl]
 
 set TOL_CHOPRA 0.02
 set g 386.4
-set record [sharedData ground-motions elCentro.at2]
+set record [recordPath elCentro.at2]
 set dt 0.02
 set nSteps 1559   ;# the record's NPTS: the run covers the whole record
 

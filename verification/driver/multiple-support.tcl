@@ -23,7 +23,7 @@ set nSteps 500   ;# the first 10 s of the record
 
 # read the El Centro record (values after the NPTS line), in g
 set values {}
-set f [open [sharedData ground-motions elCentro.at2]]
+set f [open [recordPath elCentro.at2]]
 set inData 0
 while {[gets $f line] >= 0} {
   if {$inData} { foreach v $line { if {[string is double -strict $v]} { lappend values $v } } }

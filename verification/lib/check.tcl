@@ -10,9 +10,9 @@
 namespace eval ::verify {
   variable passed 0
   variable failed 0
-  # Folder of ../shared/data beside the checkout (DABS_SHARED_DIR overrides it).
-  variable shared [expr {[info exists ::env(DABS_SHARED_DIR)] ? $::env(DABS_SHARED_DIR)
-                         : [file normalize [file join [file dirname [info script]] .. .. .. shared]]}]
+  # The project's verification folder: data/ holds the ground-motion records, opensees/ OpenSees'
+  # reference inputs and results.
+  variable verification [file normalize [file join [file dirname [info script]] ..]]
 }
 
 # Relative check: |computed - expected| <= tol * max(|expected|, tiny).
@@ -51,8 +51,19 @@ proc checkTrue {name condition} {
   }
 }
 
-# Path of a file in ../shared/data.
-proc sharedData {args} { return [file join $::verify::shared data {*}$args] }
+# Path of a ground-motion record in verification/data.
+proc recordPath {name} { return [file join $::verify::verification data $name] }
+# Path of an OpenSees reference input or result in verification/opensees.
+proc openseesReference {name} { return [file join $::verify::verification opensees $name] }
+# The same files under the layout of the shared data folder the project once read
+# (`sharedData ground-motions X`, `sharedData reference opensees X`), for scripts written then.
+proc sharedData {args} {
+  switch -- [lindex $args 0] {
+    ground-motions { return [recordPath [lindex $args end]] }
+    reference { return [openseesReference [lindex $args end]] }
+  }
+  error "sharedData: no project copy of $args"
+}
 
 # Prints the tally and exits with 1 when a check failed.
 proc finish {} {

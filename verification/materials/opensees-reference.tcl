@@ -1,9 +1,9 @@
 # SPDX-License-Identifier: MIT
-# Runs OpenSees' own input ../shared/data/reference/opensees/materials.tcl unchanged through dabs
+# Runs OpenSees' own input verification/opensees/materials.tcl unchanged through dabs
 # and compares every strain, stress and tangent with the CSV files OpenSees 3.8.0 wrote for it.
 source [file join [file dirname [info script]] .. lib check.tcl]
 
-set reference [sharedData reference opensees]
+set reference [file dirname [openseesReference materials.tcl]]
 source [file join $reference materials.tcl]   ;# writes <name>.csv in the working directory
 
 proc readCsv {path} {

@@ -1,9 +1,9 @@
 # SPDX-License-Identifier: MIT
-# Pier pushover against OpenSees. Source: ../shared/data/reference/opensees/pier-pushover.tcl (a
+# Pier pushover against OpenSees. Source: verification/opensees/pier-pushover.tcl (a
 # circular RC pier, D = 2 m, L = 10 m, one forceBeamColumn with a Concrete02/Steel02 fiber section,
 # PDelta, axial load 0.1 f'c Ag, displacement control in X) run unchanged; it writes
 # pier-pushover.csv in the working directory, which is compared with the CSV OpenSees wrote
-# (../shared/data/reference/opensees/pier-pushover.csv) at every reference point. OpenSees stops
+# (verification/opensees/pier-pushover.csv) at every reference point. OpenSees stops
 # at 0.355 m (its Newton fails); the pushover is then continued here past that point, to a drift of
 # 10 %, well past the peak, to check that the run completes through softening.
 source [file join [file dirname [info script]] .. lib check.tcl]
@@ -13,8 +13,8 @@ source [file join [file dirname [info script]] .. lib check.tcl]
 # convergence tolerance (NormDispIncr 1e-8) of both Newton iterations.
 set kShearTol 1e-4
 
-set refFile [sharedData reference opensees pier-pushover.csv]
-source [sharedData reference opensees pier-pushover.tcl]
+set refFile [openseesReference pier-pushover.csv]
+source [openseesReference pier-pushover.tcl]
 
 proc readCsv {path} {
   set f [open $path r]

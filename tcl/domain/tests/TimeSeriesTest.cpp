@@ -27,8 +27,8 @@ TEST(PathSeriesTest, InterpolatesLinearlyAndFollowsOpenSeesAtTheEnd) {
 }
 
 TEST(PathSeriesTest, ReadsPeerNgaRecordHeader) {
-  // Kobe Takatori EW: NPTS = 4096, DT = 0.01 s, PGA 0.671 g at 2.82 s (shared/data README).
-  const RecordFile r = readRecordFile(std::string(DABS_SHARED_DIR) + "/data/ground-motions/RSN1120_KOBE_TAK090.AT2");
+  // Kobe Takatori EW: NPTS = 4096, DT = 0.01 s, PGA 0.671 g at 2.82 s (verification/data/README.md).
+  const RecordFile r = readRecordFile(std::string(DABS_DATA_DIR) + "/RSN1120_KOBE_TAK090.AT2");
   EXPECT_EQ(r.values.size(), 4096u);
   EXPECT_NEAR(r.dt, 0.01, kExact);
   std::size_t peak = 0;
@@ -39,7 +39,7 @@ TEST(PathSeriesTest, ReadsPeerNgaRecordHeader) {
 }
 
 TEST(PathSeriesTest, ReadsElCentroWithTrailerAndRejectsBadFiles) {
-  const RecordFile r = readRecordFile(std::string(DABS_SHARED_DIR) + "/data/ground-motions/elCentro.at2");
+  const RecordFile r = readRecordFile(std::string(DABS_DATA_DIR) + "/elCentro.at2");
   EXPECT_EQ(r.values.size(), 1559u);
   EXPECT_NEAR(r.dt, 0.02, kExact);
   EXPECT_THROW(readRecordFile("/nonexistent/record.at2"), InputError);

@@ -17,7 +17,7 @@ set pi [expr {acos(-1.0)}]
 set g 9.81
 set here [file dirname [info script]]
 set record [expr {$argc > 0 ? [lindex $argv 0] :
-    [file normalize [file join $here .. .. .. .. shared data ground-motions RSN1120_KOBE_TAK090.AT2]]}]
+    [file normalize [file join $here .. .. data RSN1120_KOBE_TAK090.AT2]]}]
 
 set fh [open $record r]
 for {set i 0} {$i < 3} {incr i} { gets $fh }

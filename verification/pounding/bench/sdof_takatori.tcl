@@ -14,7 +14,7 @@ proc readAT2 {path} {
   set f [open $path]; set lines [split [read $f] "\n"]; close $f
   return [concat {*}[lrange $lines 4 end]]
 }
-set accel [readAT2 [sharedData ground-motions RSN1120_KOBE_TAK090.AT2]]
+set accel [readAT2 [recordPath RSN1120_KOBE_TAK090.AT2]]
 
 # SDOF 1: contactor node 1 (T1 = 1.0 s); SDOF 2: face 11-14 (T2 = 0.5 s), gap 0.05 m.
 set m 500.0

@@ -1,0 +1,96 @@
+// SPDX-License-Identifier: MIT
+// libFuzzer harness over the Tcl command layer: each input is a Tcl script run command by command
+// (an error does not stop the commands after it, as in the shell) in a fresh interpreter holding
+// the dabs commands. Built only with clang and -DDABS_BUILD_FUZZERS=ON; seeds, dictionary and the
+// way to run it are in README.md beside this file.
+//
+// The interpreter is made safe (no exec, open, file, source, exit, Tcl's load) and the dabs
+// commands that name files write only into the fuzzer's own temporary folder; loops are bounded by
+// Tcl's command limit, and `analyze` by step limits, so an input cannot hang the fuzzer on work
+// it asked for rather than on a fault.
+#include <tcl.h>
+
+#include <cstdint>
+#include <cstdlib>
+#include <string>
+
+#include "tcl/commands/CommandTable.h"
+
+namespace {
+
+// Commands a fuzz input may run (Tcl's command limit counts every command, procedures included).
+constexpr int kCommandLimit = 5000;
+
+// Wrappers evaluated before each input. Files: every -file, -filePath and -fileTime value and the
+// file name of print become names in the temporary folder (a record file is written there once).
+// analyze: at most 50 steps per call and 500 per input.
+constexpr const char* kPrelude = R"TCL(
+namespace eval ::fuzz {}
+foreach cmd {recorder timeSeries print printModel analyze} { rename ::$cmd ::fuzz::$cmd }
+proc ::fuzz::files {args} {
+  set out {}
+  set next 0
+  foreach a $args {
+    if {$next} { lappend out [expr {$next == 2 ? "record.txt" : "out.txt"}]; set next 0; continue }
+    if {$a in {-file}} { set next 1 } elseif {$a in {-filePath -fileTime}} { set next 2 }
+    lappend out $a
+  }
+  return $out
+}
+proc recorder {args} { ::fuzz::recorder {*}[::fuzz::files {*}$args] }
+proc timeSeries {args} { ::fuzz::timeSeries {*}[::fuzz::files {*}$args] }
+proc print {args} { ::fuzz::print {*}[lsearch -all -inline -not -glob $args {*[./]*}] }
+proc printModel {args} { ::fuzz::printModel {*}[lsearch -all -inline -not -glob $args {*[./]*}] }
+set ::fuzz::steps 0
+proc analyze {n args} {
+  if {[string is integer -strict $n]} {
+    if {$n > 50} { set n 50 }
+    if {[incr ::fuzz::steps [expr {max($n, 1)}]] > 500} { return -code error "fuzz: 500 steps spent" }
+  }
+  ::fuzz::analyze $n {*}$args
+}
+)TCL";
+
+// The fuzzer's own temporary folder (absolute: libFuzzer reads its corpus folders relative to the
+// working directory, which therefore stays as it is).
+std::string gFolder;
+
+}  // namespace
+
+extern "C" int LLVMFuzzerInitialize(int* /*argc*/, char*** argv) {
+  Tcl_FindExecutable((*argv)[0]);
+  char dir[] = "/tmp/dabs-fuzz-XXXXXX";
+  if (mkdtemp(dir) == nullptr) std::abort();
+  gFolder = dir;
+  FILE* record = std::fopen((gFolder + "/record.txt").c_str(), "w");
+  if (record == nullptr) std::abort();
+  std::fputs("0.0 0.1 0.3 -0.2 0.05 0.0\n", record);
+  std::fclose(record);
+  return 0;
+}
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+  Tcl_Interp* interp = Tcl_CreateInterp();
+  if (Tcl_MakeSafe(interp) != TCL_OK || dabs::tcl::registerCommands(interp) != TCL_OK ||
+      Tcl_Eval(interp, ("namespace eval ::fuzz {variable dir " + gFolder + "}").c_str()) != TCL_OK ||
+      Tcl_Eval(interp, kPrelude) != TCL_OK)
+    std::abort();
+  Tcl_LimitSetCommands(interp, kCommandLimit);
+  Tcl_LimitTypeSet(interp, TCL_LIMIT_COMMANDS);
+  const std::string script(reinterpret_cast<const char*>(data), size);
+  // One complete command at a time, as the shell reads them.
+  std::string command;
+  std::size_t start = 0;
+  while (start < script.size() && !Tcl_LimitExceeded(interp)) {
+    std::size_t end = script.find('\n', start);
+    end = end == std::string::npos ? script.size() : end + 1;
+    command.append(script, start, end - start);
+    start = end;
+    if (Tcl_CommandComplete(command.c_str()) || start >= script.size()) {
+      (void)Tcl_Eval(interp, command.c_str());
+      command.clear();
+    }
+  }
+  Tcl_DeleteInterp(interp);
+  return 0;
+}
