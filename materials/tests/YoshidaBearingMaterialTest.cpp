@@ -114,6 +114,30 @@ TEST(YoshidaBearingMaterialTest, BackForceFactorIsClippedAtZero) {
   EXPECT_NEAR(m.getStress().x(), -kY0, 0.05 * kY0);
 }
 
+// Before yield (|z| well below 1, |z|^n negligible for a large n) the hysteretic law reduces to
+// dF1 = Y(U) dU / U0 with Y = Y0 (1 + gamma (U/U0)^2): a non-linear elastic spring
+// F1 = (Y0/U0) (U + gamma U^3 / (3 U0^2)), whatever the back-force factor, and unloading retraces it.
+TEST(YoshidaBearingMaterialTest, HardeningBeforeYieldIsCubicElasticSpring) {
+  Params p = basic(40.0);
+  p.alpha0 = 0.5;  // constant back-force factor: must not change the elastic branch
+  p.gamma = 0.05;
+  YoshidaBearingMaterial m(1, p);
+  const Vec2 dir = Vec2(0.8, 0.6);
+  const double uEnd = 0.6 * kU0;  // |z| stays below 0.6: |z|^40 < 1e-8
+  const int steps = 300;
+  auto spring = [&](double u) {
+    return kY0 / kU0 * (u + p.gamma * u * u * u / (3.0 * kU0 * kU0));
+  };
+  for (int i = 1; i <= steps; ++i) {
+    const double u = uEnd * i / steps;
+    drive(m, u * dir);
+    EXPECT_NEAR(m.getStress().dot(dir), spring(u), 1e-5 * kY0) << "U/U0 = " << u / kU0;
+  }
+  EXPECT_GT(m.getStress().norm(), kY0 / kU0 * uEnd * 1.005);  // stiffer than the linear spring
+  for (int i = steps - 1; i >= 0; --i) drive(m, uEnd * i / steps * dir);
+  EXPECT_NEAR(m.getStress().norm(), 0.0, 1e-5 * kY0);  // elastic: back to zero force
+}
+
 // Circular orbit with no back force: rho = (R/U0) cos(phi), rho^n = sin(phi).
 struct Orbit {
   double rho, phi;
