@@ -48,8 +48,14 @@ constexpr int kNumParams = 7;
 constexpr unsigned long kSeed = 20261123;  // NLopt's random generator (CRS2-LM population)
 constexpr double kGlobalSubIncrement = 0.25;  // sub-step (fraction of U0) of the global stage
 constexpr int kGlobalEvaluations = 3000;
-constexpr int kLocalEvaluations = 400;
-constexpr double kLocalXtol = 1e-5;  // BOBYQA: relative step in the scaled variables [0, 1]
+constexpr int kLocalEvaluations = 800;
+constexpr double kLocalXtol = 1e-4;   // BOBYQA: step in the scaled variables [0, 1]
+constexpr double kLocalFtol = 1e-7;   // BOBYQA: relative change of the objective
+constexpr int kLocalRestarts = 6;
+constexpr double kLocalInitialStep = 0.02;  // BOBYQA's first trust region (scaled variables)
+constexpr double kPolishSubIncrement = 0.05;  // sub-step (fraction of U0) of the restarts
+constexpr int kFinalEvaluations = 150;        // last BOBYQA round, on the shipped sub-step
+constexpr double kFinalInitialStep = 0.002;
 constexpr double kFailureStrain = 3.0;  // shear strain at which the hardening bound is stated
 constexpr double kRefitPerturbation = 0.05;  // start of the refit check, in scaled variables
 constexpr double kRefitTol = 2e-3;           // refit must land this close (scaled variables)
@@ -220,14 +226,14 @@ std::vector<Target> targets() {
        {0.1, 0.2, 0.3, 0.5, 0.75, 1.0, 1.25, 1.5, 1.75, 2.0, 2.25, 2.5, 2.75, 3.0},
        bridgestoneX06,
        1.0,
-       {0.05, 0.005, 0.2, 0.0, -0.5, 0.01, 0.0},
+       {0.05, 0.005, 0.1, 0.0, -0.5, 0.01, 0.0},
        {2.0, 1.0, 20.0, 20.0, 1.0, 2.0, 5.0}},
       {"lrb",
        "Lead-rubber Qd=150 kN Kd=1500 kN/m K1=6.5Kd Tr=0.2 m (kN, m)",
        lrbAmplitudes,
        leadRubber,
        kTrLrb,
-       {0.2 * kQd, 0.001, 0.2, 0.0, -0.5, 0.01, 0.0},
+       {0.2 * kQd, 0.001, 0.1, 0.0, -0.5, 0.01, 0.0},
        {5.0 * kQd, 0.05, 20.0, 20.0, 1.0, 2.0, 5.0}},
   };
 }
@@ -246,13 +252,17 @@ FitResult fit(const Target& t, const std::vector<double>* start, int globalBudge
     const std::vector<double>* amplitudes;
     double subIncrement;
     int evaluations;
-  } ctx{&t, &t.amplitudes, kGlobalSubIncrement, 0};
+    double bestF;               // best of the local stage so far, and where
+    std::vector<double> bestX;
+  } ctx{&t, &t.amplitudes, kGlobalSubIncrement, 0, HUGE_VAL, {}};
   auto objective = [](const std::vector<double>& s, std::vector<double>&, void* data) {
     auto* c = static_cast<Context*>(data);
     Params p = fromScaled(*c->t, s);
     p.maxSubIncrement = c->subIncrement;
     ++c->evaluations;
-    return evaluate(*c->t, p, *c->amplitudes).objective;
+    const double f = evaluate(*c->t, p, *c->amplitudes).objective;
+    if (f < c->bestF) c->bestF = f, c->bestX = s;
+    return f;
   };
   const auto t0 = std::chrono::steady_clock::now();
   std::vector<double> x = start ? *start : std::vector<double>(kNumParams, 0.5);
@@ -270,19 +280,38 @@ FitResult fit(const Target& t, const std::vector<double>* start, int globalBudge
     }
     r.globalEvaluations = ctx.evaluations;
   }
-  ctx.subIncrement = Params{}.maxSubIncrement;
   ctx.evaluations = 0;
   nlopt::opt local(nlopt::LN_BOBYQA, kNumParams);
   local.set_lower_bounds(std::vector<double>(kNumParams, 0.0));
   local.set_upper_bounds(std::vector<double>(kNumParams, 1.0));
   local.set_min_objective(objective, &ctx);
-  local.set_maxeval(localBudget);
   local.set_xtol_abs(kLocalXtol);
-  local.set_initial_step(0.02);
-  try {
-    local.optimize(x, fx);
-  } catch (const nlopt::roundoff_limited&) {
-  }
+  local.set_ftol_rel(kLocalFtol);
+  // BOBYQA restarted from the best point so far (a fresh trust region, smaller each time) until a
+  // restart gains less than kLocalFtol: one run stops early in the long narrow valleys of these
+  // objectives. BOBYQA may shift a start that lies within its initial step of a bound, so the
+  // best point evaluated, not the last result, is kept. The restarts run on a sub-step of
+  // kPolishSubIncrement U0; the last round on the material exactly as shipped.
+  auto polish = [&](double subIncrement, double step, int budget, int rounds) {
+    ctx.subIncrement = subIncrement;
+    ctx.bestF = HUGE_VAL;
+    const int end = ctx.evaluations + budget;
+    double fPrev = HUGE_VAL;
+    for (int round = 0; round < rounds && ctx.evaluations < end; ++round) {
+      local.set_maxeval(end - ctx.evaluations);
+      local.set_initial_step(step);
+      try {
+        local.optimize(x, fx);
+      } catch (const nlopt::roundoff_limited&) {
+      }
+      x = ctx.bestX;
+      if (ctx.bestF > fPrev * (1.0 - kLocalFtol)) break;
+      fPrev = ctx.bestF;
+      step *= 0.25;
+    }
+  };
+  polish(kPolishSubIncrement, kLocalInitialStep, localBudget - kFinalEvaluations, kLocalRestarts);
+  polish(Params{}.maxSubIncrement, kFinalInitialStep, kFinalEvaluations, 1);
   r.localEvaluations = ctx.evaluations;
   r.p = rounded(fromScaled(t, x));
   r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
@@ -370,7 +399,7 @@ void writePlots(const Target& t, const Params& p, const std::string& dir) {
   const char* unitK = lrb ? "Keq (kN/m)" : "Geq (MPa)";
   const char* unitF = lrb ? "shear force (kN)" : "shear stress (MPa)";
   const char* targetName = lrb ? "bilinear target" : "target (Bridgestone X0.6)";
-  const char* loopTarget = lrb ? "bilinear target" : "equivalent linear loop of the target";
+  const char* loopTarget = lrb ? "bilinear target" : "target (equivalent linear)";
   std::fprintf(f, "set terminal pngcairo size 760,330 font ',9'\nset grid\nset key top right\n");
   std::fprintf(f, "set output '%s-curves.png'\nset multiplot layout 1,2\n", base.c_str());
   std::fprintf(f, "set xlabel 'shear strain amplitude'\nset ylabel '%s'\n", unitK);
@@ -381,7 +410,7 @@ void writePlots(const Target& t, const Params& p, const std::string& dir) {
                base.c_str(), targetName);
   std::fprintf(f, "unset multiplot\nset yrange [*:*]\n");
   std::fprintf(f, "set output '%s-loops.png'\nset terminal pngcairo size 760,300 font ',9'\n"
-               "set multiplot layout 1,3\nset key top left\n", base.c_str());
+               "set multiplot layout 1,3\nset key bottom right\n", base.c_str());
   for (int pct : {100, 200, 300}) {
     std::fprintf(f, "set title '%d %%'\nset xlabel 'shear strain'\nset ylabel '%s'\n", pct, unitF);
     std::fprintf(f, "plot '%s-loop%d.dat' u 3:4 w l lw 2 t '%s', '' u 1:2 w l t 'model'\n",
@@ -402,22 +431,22 @@ struct Shipped {
 
 std::vector<Shipped> shipped() {
   Params hdr;
-  hdr.Y0 = 0.265147;
-  hdr.U0 = 0.145833;
-  hdr.n = 1.0;
-  hdr.alpha0 = 4.33547;
-  hdr.beta = 3.49049;
-  hdr.q = 0.058481;
-  hdr.gamma = 0.00170082;
+  hdr.Y0 = 0.435794;
+  hdr.U0 = 0.0683367;
+  hdr.n = 0.115167;
+  hdr.alpha0 = 0.831926;
+  hdr.beta = 0.698464;
+  hdr.q = 0.0393774;
+  hdr.gamma = 0.000947439;
   Params lrb;
-  lrb.Y0 = 116.221;
-  lrb.U0 = 0.0209912;
-  lrb.n = 10.0;
-  lrb.alpha0 = 11.2634;
-  lrb.beta = 10.474;
-  lrb.q = 0.0106544;
-  lrb.gamma = 0.0;
-  return {{hdr, 7.3, 14, 7.5, 15}, {lrb, 7.3, 21, 4.1, 7}};
+  lrb.Y0 = 178.979;
+  lrb.U0 = 0.018842;
+  lrb.n = 19.9935;
+  lrb.alpha0 = 0.189001;
+  lrb.beta = 0.000226503;
+  lrb.q = 1.03444;
+  lrb.gamma = 3.16031e-05;
+  return {{hdr, 2.0, 3.5, 2.4, 4.2}, {lrb, 0.3, 0.6, 0.4, 0.8}};
 }
 
 std::string option(int argc, char** argv, const char* name) {
