@@ -7,17 +7,18 @@
 //      (bilinear idealisation, initial stiffness K1 = 6.5 Kd: an assumed ratio, commonly used
 //      for lead-rubber bearings in Japanese highway-bridge practice).
 //
-// Both fits use the same cyclic test: 3 quasi-static cycles of a triangular deformation history of
-// amplitude X, the last cycle measured, with
+// Both fits use the same cyclic test: 6 quasi-static cycles of a triangular deformation history of
+// amplitude X (a first quarter to +X, then 12 half cycles), the last cycle measured, with
 //   Keq = (F(+X) - F(-X)) / (2X)            Heq = dW / (2 pi Keq X^2)
 // (dW the loop area: the usual equivalent viscous damping ratio). The curves carry no rate
 // information, so the Maxwell part (k, eta) is not identifiable from them and is left off.
 //
 // The optimiser is NLopt (Johnson, "The NLopt nonlinear-optimization package"): every parameter
-// is bounded to its physical range (bounds() below), a global stage (controlled random search
-// with local mutation, CRS2-LM, Kaelo and Ali 2006, fixed seed) on a coarser integration of the
-// material, then a local gradient-free polish (BOBYQA, Powell 2009) on the material exactly as
-// shipped. The objective is the sum of squared relative errors of Keq and Heq.
+// is bounded to its physical range (targets() below; reasons in fitted-parameters.md), a global
+// stage (controlled random search with local mutation, CRS2-LM, Kaelo and Ali 2006, fixed seed)
+// on a coarser integration of the material, then a restarted gradient-free polish (BOBYQA,
+// Powell 2009), its last round on the material exactly as shipped. The objective is the sum of
+// squared relative errors of Keq and Heq.
 //
 // Usage: yoshida_calibration fit ?hdr|lrb? ?-plots dir?  fit and print the parameter sets
 //        yoshida_calibration check ?-plots dir?         evaluate the shipped sets; fail above bounds
@@ -29,8 +30,8 @@
 #include <nlopt.hpp>
 
 #include <algorithm>
-#include <chrono>
 #include <array>
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -64,7 +65,7 @@ struct LoopResult {
   double keq = 0.0, heq = 0.0;
 };
 
-/// Three triangular cycles of amplitude `x` along one axis; the last cycle gives Keq and Heq.
+/// Six triangular cycles of amplitude `x` along one axis; the last cycle gives Keq and Heq.
 /// `loop`, when given, receives the (U, F) points of the last cycle.
 LoopResult cyclicTest(const Params& p, double x, std::vector<std::array<double, 2>>* loop = nullptr) {
   YoshidaBearingMaterial m(1, p);
@@ -73,7 +74,7 @@ LoopResult cyclicTest(const Params& p, double x, std::vector<std::array<double, 
   double u = 0.0, work = 0.0, fPos = 0.0, fNeg = 0.0;
   double fPrev = 0.0;
   const Eigen::Vector2d zero = Eigen::Vector2d::Zero();
-  // path: 0 -> +X -> -X -> +X -> -X -> +X -> -X -> +X, last loop from the second-last +X
+  // path: 0 -> +X, then 12 half cycles -X, +X, ...; the last loop from the second-last +X
   const int quarters = 1 + 2 * 6;
   for (int qtr = 0; qtr < quarters; ++qtr) {
     const double sign = (qtr == 0) ? 1.0 : ((qtr % 2 == 1) ? -1.0 : 1.0);
