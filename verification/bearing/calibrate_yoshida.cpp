@@ -20,7 +20,7 @@
 // Powell 2009), its last round on the material exactly as shipped. The objective is the sum of
 // squared relative errors of Keq and Heq.
 //
-// Usage: yoshida_calibration fit ?hdr|lrb? ?-plots dir?  fit and print the parameter sets
+// Usage: yoshida_calibration fit ?hdr|lrb? ?-plots dir? ?-seed s?   fit and print the sets
 //        yoshida_calibration check ?-plots dir?         evaluate the shipped sets; fail above bounds
 //        yoshida_calibration refit ?hdr|lrb?            rerun the fit; fail unless it prints the
 //                                                       shipped sets digit for digit
@@ -49,6 +49,7 @@ using dabs::materials::YoshidaBearingMaterial;
 using Params = YoshidaBearingMaterial::Params;
 constexpr int kNumParams = 7;
 constexpr unsigned long kSeed = 20261123;  // NLopt's random generator (CRS2-LM population)
+unsigned long seed = kSeed;                 // `fit -seed s` changes it (spread of the search)
 constexpr double kGlobalSubIncrement = 0.25;  // sub-step (fraction of U0) of the global stage
 constexpr int kGlobalEvaluations = 3000;
 constexpr int kLocalEvaluations = 800;
@@ -269,7 +270,7 @@ FitResult fit(const Target& t, const std::vector<double>* start, int globalBudge
   std::vector<double> x = start ? *start : std::vector<double>(kNumParams, 0.5);
   double fx = 0.0;
   if (globalBudget > 0) {
-    nlopt::srand(kSeed);
+    nlopt::srand(seed);
     nlopt::opt global(nlopt::GN_CRS2_LM, kNumParams);
     global.set_lower_bounds(std::vector<double>(kNumParams, 0.0));
     global.set_upper_bounds(std::vector<double>(kNumParams, 1.0));
@@ -520,6 +521,8 @@ int main(int argc, char** argv) {
   const std::string plots = option(argc, argv, "-plots");
   const std::vector<Shipped> sets = shipped();
   if (mode == "fit") {
+    if (const std::string sd = option(argc, argv, "-seed"); !sd.empty())
+      seed = std::strtoul(sd.c_str(), nullptr, 10);
     for (const Target& t : ts) {
       if (!which.empty() && which != t.key) continue;
       const FitResult r = fit(t, nullptr, kGlobalEvaluations, kLocalEvaluations);
@@ -601,7 +604,7 @@ int main(int argc, char** argv) {
     return failed > 0 ? 1 : 0;
   }
   std::printf(
-      "usage: yoshida_calibration fit ?hdr|lrb? ?-plots dir?\n"
+      "usage: yoshida_calibration fit ?hdr|lrb? ?-plots dir? ?-seed s?\n"
       "       yoshida_calibration check ?-plots dir?\n"
       "       yoshida_calibration refit ?hdr|lrb?\n"
       "       yoshida_calibration stiffen\n"
