@@ -67,18 +67,27 @@ SubStep subStep(const YoshidaBearingMaterial::Params& p, const Vec2& u, const Ve
   double zeta = 0.0;
   if (bn > 0.0) {
     e = b / bn;
-    // Scalar equation phi(zeta) = zeta/(1+a) + d zeta^n - |b| = 0: increasing and convex, so Newton
-    // from an upper bound decreases monotonically to the root.
-    zeta = bn * opa;
-    if (d > 0.0) zeta = std::min(zeta, std::pow(bn / d, 1.0 / p.n));
+    // Scalar equation phi(zeta) = zeta/(1+a) + d zeta^n - |b| = 0, phi increasing. For n >= 1 it
+    // is convex, so Newton from an upper bound (each term alone reaching |b|) decreases
+    // monotonically to the root; for n < 1 it is concave, so Newton from a lower bound (each term
+    // at most |b|/2) increases monotonically to it.
+    const double share = p.n >= 1.0 ? 1.0 : 0.5;
+    zeta = share * bn * opa;
+    if (d > 0.0) zeta = std::min(zeta, std::pow(share * bn / d, 1.0 / p.n));
     r.converged = false;
     for (int it = 0; it < kMaxLocalIterations; ++it) {
       const double zn1 = std::pow(zeta, p.n - 1.0);
       const double phi = zeta / opa + d * zn1 * zeta - bn;
       const double dphi = 1.0 / opa + p.n * d * zn1;
       const double step = phi / dphi;
+      // The exact iteration moves one way only (down for n >= 1, up for n < 1): a step the other
+      // way, or none, is round-off at the root.
+      if (p.n >= 1.0 ? step <= 0.0 : step >= 0.0) {
+        r.converged = true;
+        break;
+      }
       zeta = std::max(zeta - step, 0.0);
-      if (std::abs(step) <= kLocalTolerance * (zeta + 1e-300) || phi == 0.0) {
+      if (std::abs(step) <= kLocalTolerance * (zeta + 1e-300)) {
         r.converged = true;
         break;
       }
@@ -89,11 +98,15 @@ SubStep subStep(const YoshidaBearingMaterial::Params& p, const Vec2& u, const Ve
   r.s = a * (Y * u / p.U0 - r.f1);
 
   // Implicit differentiation of res(z; U, delta, F1_prev, Umax_prev) = z/(1+a) + d g(z) - b = 0.
-  const double zn1 = std::pow(zeta, p.n - 1.0);
+  // For n < 1, dg/dz is unbounded at z = 0: there (b = 0, a point of no interest but reachable)
+  // z does not move to first order, J^-1 = 0.
+  const bool singular = p.n < 1.0 && zeta == 0.0;
+  const double zn1 = singular ? 0.0 : std::pow(zeta, p.n - 1.0);
   const Vec2 g = zn1 * r.z;  // |z|^(n-1) z
   const Mat2 G = zn1 * (Mat2::Identity() + (p.n - 1.0) * e * e.transpose());  // dg/dz
   const Mat2 J = Mat2::Identity() / opa + d * G;
-  const Mat2 Jinv = J.inverse();  // J is symmetric positive definite
+  // J is symmetric positive definite (eigenvalues 1/(1+a) + d |z|^(n-1) {n, 1})
+  const Mat2 Jinv = (singular && d > 0.0) ? Mat2::Zero() : Mat2(J.inverse());
   const Vec2 res_a = (u / p.U0 - r.z) / (opa * opa);
   const Vec2 res_Y = fPrev / (Y * Y);
   const Mat2 res_U = a / (p.U0 * opa) * Mat2::Identity() + res_a * da_dM * r.dM_dU + res_Y * dY_dU;
@@ -128,7 +141,7 @@ void YoshidaBearingMaterial::Params::validate() const {
   requireFinite(maxSubIncrement, "subIncrement");
   if (Y0 <= 0.0) throw InputError("Y0", "must be positive");
   if (U0 <= 0.0) throw InputError("U0", "must be positive");
-  if (n < 1.0) throw InputError("n", "must be at least 1");
+  if (n <= 0.0) throw InputError("n", "must be positive");
   if (alpha0 < 0.0) throw InputError("alpha0", "must not be negative");
   if (beta < 0.0) throw InputError("beta", "must not be negative");
   if (q <= 0.0) throw InputError("q", "must be positive");
@@ -142,7 +155,7 @@ void YoshidaBearingMaterial::Params::validate() const {
 
 YoshidaBearingMaterial::YoshidaBearingMaterial(int tag, const Params& p)
     : BiaxialMaterial(tag), p_(p) {
-  assert(p.Y0 > 0.0 && p.U0 > 0.0 && p.n >= 1.0 && p.maxSubIncrement > 0.0);
+  assert(p.Y0 > 0.0 && p.U0 > 0.0 && p.n > 0.0 && p.maxSubIncrement > 0.0);
   revertToStart();
 }
 

@@ -28,8 +28,8 @@ namespace dabs::materials {
 ///   straight path from the committed to the trial deformation, Y and a at the end of each
 ///   sub-step. Each sub-step is solved exactly by a local Newton iteration: the backward Euler
 ///   equation  z/(1+a) + (|dU|/U0) |z|^(n-1) z = b  makes z parallel to b, so only the scalar
-///   |z| is unknown; that scalar equation is increasing and convex for n >= 1, so Newton started
-///   from an upper bound converges monotonically.
+///   |z| is unknown; that scalar equation is increasing, convex for n >= 1 and concave for n < 1,
+///   so Newton started from an upper (n >= 1) or a lower (n < 1) bound converges monotonically.
 /// - Maxwell part: exact solution of dF2/dt + F2/tau = k dU/dt (tau = eta/k) for a deformation
 ///   rate constant over the step, dU/dt = (U - U_committed)/dt. With dt = 0 (a static step) the
 ///   dashpot does not move and the Maxwell part is a spring k.
@@ -50,7 +50,7 @@ class YoshidaBearingMaterial final : public BiaxialMaterial {
   struct Params {
     double Y0 = 0.0;      ///< characteristic (yield) force at small strain (force)
     double U0 = 0.0;      ///< yield deformation; Y0/U0 is the initial stiffness (length)
-    double n = 2.0;       ///< smoothness exponent, >= 1
+    double n = 2.0;       ///< smoothness exponent, > 0 (n < 1: a long, gradual approach to yield)
     double alpha0 = 0.0;  ///< back-force factor in the virgin state, >= 0
     double beta = 0.0;    ///< decay of the back-force factor with Umax, >= 0
     double q = 1.0;       ///< exponent of that decay, > 0

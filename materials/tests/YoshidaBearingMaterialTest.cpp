@@ -80,6 +80,47 @@ TEST(YoshidaBearingMaterialTest, MonotonicN1IsExponential) {
   }
 }
 
+// n = 1/2, no back force: dz/du = 1 - sqrt(z) on loading (z = F/Y, u = U/U0), so with w = sqrt(z)
+// u = -2 w - 2 ln(1 - w).
+TEST(YoshidaBearingMaterialTest, MonotonicNHalfFollowsClosedForm) {
+  YoshidaBearingMaterial m(1, basic(0.5));
+  const Vec2 dir = Vec2(-0.6, 0.8);
+  for (int i = 1; i <= 400; ++i) {
+    const double u = 4.0 * kU0 * i / 400.0;
+    drive(m, u * dir);
+    double lo = 0.0, hi = 1.0;  // -2w - 2 ln(1-w) increases from 0 to infinity on [0, 1)
+    for (int it = 0; it < 200; ++it) {
+      const double w = 0.5 * (lo + hi);
+      (-2.0 * w - 2.0 * std::log1p(-w) < u / kU0 ? lo : hi) = w;
+    }
+    const double w = 0.5 * (lo + hi);
+    EXPECT_NEAR(m.getStress().dot(dir), kY0 * w * w, kClosedFormTol * kY0) << "U/U0 = " << u / kU0;
+  }
+}
+
+// A set with n < 1 (the fitted high-damping-rubber range) whose local Newton once stopped on
+// round-off (the iteration is monotone: a step back is the root): triangular cycles of 0.3.
+TEST(YoshidaBearingMaterialTest, SmallNConvergesOnCycles) {
+  Params p;
+  p.Y0 = 0.466798;
+  p.U0 = 0.149951;
+  p.n = 0.219817;
+  p.alpha0 = 0.478224;
+  p.beta = 0.256229;
+  p.q = 0.168761;
+  p.gamma = 0.00355117;
+  YoshidaBearingMaterial m(1, p);
+  double u = 0.0;
+  for (int half = 0; half < 13; ++half) {
+    const double sign = (half % 2 == 0) ? 1.0 : -1.0;
+    for (int i = 0; i < (half == 0 ? 40 : 80); ++i) {
+      u += sign * 0.3 / 40;
+      ASSERT_TRUE(ok(m.setTrialStrain(Vec2(u, 0.0), Vec2::Zero(), 0.0))) << "half cycle " << half;
+      m.commitState();
+    }
+  }
+}
+
 TEST(YoshidaBearingMaterialTest, ConstantBackForceGivesPostYieldSlopeAndAsymptote) {
   for (double n : {1.0, 2.0, 3.0}) {
     Params p = basic(n);
@@ -112,6 +153,30 @@ TEST(YoshidaBearingMaterialTest, BackForceFactorIsClippedAtZero) {
   EXPECT_EQ(m.response("backForce")->norm(), 0.0);
   EXPECT_LT(m.getStress().norm(), kY0);
   EXPECT_NEAR(m.getStress().x(), -kY0, 0.05 * kY0);
+}
+
+// Before yield (|z| well below 1, |z|^n negligible for a large n) the hysteretic law reduces to
+// dF1 = Y(U) dU / U0 with Y = Y0 (1 + gamma (U/U0)^2): a non-linear elastic spring
+// F1 = (Y0/U0) (U + gamma U^3 / (3 U0^2)), whatever the back-force factor, and unloading retraces it.
+TEST(YoshidaBearingMaterialTest, HardeningBeforeYieldIsCubicElasticSpring) {
+  Params p = basic(40.0);
+  p.alpha0 = 0.5;  // constant back-force factor: must not change the elastic branch
+  p.gamma = 0.05;
+  YoshidaBearingMaterial m(1, p);
+  const Vec2 dir = Vec2(0.8, 0.6);
+  const double uEnd = 0.6 * kU0;  // |z| stays below 0.6: |z|^40 < 1e-8
+  const int steps = 300;
+  auto spring = [&](double u) {
+    return kY0 / kU0 * (u + p.gamma * u * u * u / (3.0 * kU0 * kU0));
+  };
+  for (int i = 1; i <= steps; ++i) {
+    const double u = uEnd * i / steps;
+    drive(m, u * dir);
+    EXPECT_NEAR(m.getStress().dot(dir), spring(u), 1e-5 * kY0) << "U/U0 = " << u / kU0;
+  }
+  EXPECT_GT(m.getStress().norm(), kY0 / kU0 * uEnd * 1.005);  // stiffer than the linear spring
+  for (int i = steps - 1; i >= 0; --i) drive(m, uEnd * i / steps * dir);
+  EXPECT_NEAR(m.getStress().norm(), 0.0, 1e-5 * kY0);  // elastic: back to zero force
 }
 
 // Circular orbit with no back force: rho = (R/U0) cos(phi), rho^n = sin(phi).
@@ -254,6 +319,10 @@ TEST(YoshidaBearingMaterialTest, TangentMatchesFiniteDifference) {
       {"all terms, static Maxwell", full, {a, b}, Vec2(1.1 * kU0, 1.9 * kU0), 0.0},
       {"back force clipped", [&] { Params q = full; q.alpha0 = 0.1; return q; }(), {a, b},
        Vec2(3.1 * kU0, 0.2 * kU0), 0.01},
+      {"n < 1, loading", [&] { Params q = full; q.n = 0.4; return q; }(), {a},
+       Vec2(2.7 * kU0, 1.1 * kU0), 0.01},
+      {"n < 1, unloading", [&] { Params q = full; q.n = 0.4; return q; }(), {a, b},
+       Vec2(0.4 * kU0, -0.3 * kU0), 0.02},
   };
   for (const auto& c : cases) {
     YoshidaBearingMaterial m(1, c.p);
@@ -379,7 +448,8 @@ TEST(YoshidaBearingMaterialTest, ValidateRejectsBadInput) {
       {"Y0", [](Params& p) { p.Y0 = 0.0; }},
       {"Y0", [](Params& p) { p.Y0 = NAN; }},
       {"U0", [](Params& p) { p.U0 = -1.0; }},
-      {"n", [](Params& p) { p.n = 0.5; }},
+      {"n", [](Params& p) { p.n = 0.0; }},
+      {"n", [](Params& p) { p.n = -0.5; }},
       {"alpha0", [](Params& p) { p.alpha0 = -0.1; }},
       {"beta", [](Params& p) { p.beta = -1.0; }},
       {"q", [](Params& p) { p.q = 0.0; }},
