@@ -14,7 +14,9 @@ namespace {
 
 constexpr const char* kUsage =
     "recorder Viewer -file page.html ?-dT dt? ?-nodes tags? ?-title text? ?-plots {{label node tag "
-    "dof disp|vel|accel} {label ele tag response.. component} ..}?";
+    "dof disp|vel|accel} {label ele tag response.. component} ..}? ?-beamSection {{rect width depth "
+    "tags..} {circle diameter tags..} ..}? ?-bearingPad {{lx ly tags..} ..}? ?-block {{lx ly lz ?-dz dz? "
+    "nodes..} ..}? ?-gaps {{label nodeA nodeB} ..}?";
 
 /// Words of a Tcl list; fails with the reader's context when `text` is not a list.
 std::vector<std::string> listWords(Runtime& rt, const ArgReader& a, const std::string& text,
@@ -72,6 +74,39 @@ domain::ViewerPlot readPlot(Runtime& rt, const ArgReader& a, const std::string& 
   return p;
 }
 
+double toReal(const ArgReader& a, const std::string& word, const std::string& what) {
+  std::size_t used = 0;
+  double v = 0.0;
+  try {
+    v = std::stod(word, &used);
+  } catch (const std::exception&) {
+    used = 0;
+  }
+  if (used == 0 || used != word.size()) a.fail(what + " expected a number, got \"" + word + "\"");
+  return v;
+}
+
+std::vector<int> toIntegers(const ArgReader& a, const std::vector<std::string>& w, std::size_t from,
+                            const std::string& what) {
+  std::vector<int> out;
+  for (std::size_t i = from; i < w.size(); ++i) out.push_back(toInteger(a, w[i], what));
+  if (out.empty()) a.fail(what + ": expected at least one tag");
+  return out;
+}
+
+/// Items of a list option, each a Tcl list of at least `minWords` words.
+std::vector<std::vector<std::string>> listItems(Runtime& rt, const ArgReader& a,
+                                                const std::string& text, const std::string& option,
+                                                std::size_t minWords, const std::string& form) {
+  std::vector<std::vector<std::string>> items;
+  for (const std::string& item : listWords(rt, a, text, option)) {
+    auto w = listWords(rt, a, item, option + " item");
+    if (w.size() < minWords) a.fail(option + " item {" + item + "}: expected " + form);
+    items.push_back(std::move(w));
+  }
+  return items;
+}
+
 }  // namespace
 
 void viewerRecorderCommand(Runtime& rt, ArgReader& a) {
@@ -87,6 +122,56 @@ void viewerRecorderCommand(Runtime& rt, ArgReader& a) {
   if (auto plots = a.optionalWordOption("-plots"))
     for (const std::string& item : listWords(rt, a, *plots, "-plots"))
       options.plots.push_back(readPlot(rt, a, item));
+  if (auto text = a.optionalWordOption("-beamSection"))
+    for (const auto& w : listItems(rt, a, *text, "-beamSection", 3, "{rect width depth tags..} or {circle diameter tags..}")) {
+      domain::ViewerBeamSection s;
+      const std::string where = "-beamSection item {" + w[0] + " ..}";
+      if (w[0] == "rect") {
+        if (w.size() < 4) a.fail(where + ": expected {rect width depth tags..}");
+        s.width = toReal(a, w[1], where + ": width");
+        s.depth = toReal(a, w[2], where + ": depth");
+        s.elements = toIntegers(a, w, 3, where);
+      } else if (w[0] == "circle") {
+        s.shape = domain::ViewerBeamSection::Shape::Circle;
+        s.width = toReal(a, w[1], where + ": diameter");
+        s.elements = toIntegers(a, w, 2, where);
+      } else {
+        a.fail(where + ": expected rect or circle, got \"" + w[0] + "\"");
+      }
+      if (!(s.width > 0.0) || (s.shape == domain::ViewerBeamSection::Shape::Rect && !(s.depth > 0.0)))
+        a.fail(where + ": sizes must be positive");
+      options.sections.push_back(std::move(s));
+    }
+  if (auto text = a.optionalWordOption("-bearingPad"))
+    for (const auto& w : listItems(rt, a, *text, "-bearingPad", 3, "{lx ly tags..}")) {
+      domain::ViewerPad p;
+      p.lx = toReal(a, w[0], "-bearingPad: lx");
+      p.ly = toReal(a, w[1], "-bearingPad: ly");
+      if (!(p.lx > 0.0) || !(p.ly > 0.0)) a.fail("-bearingPad: sizes must be positive");
+      p.elements = toIntegers(a, w, 2, "-bearingPad");
+      options.pads.push_back(std::move(p));
+    }
+  if (auto text = a.optionalWordOption("-block"))
+    for (const auto& w : listItems(rt, a, *text, "-block", 4, "{lx ly lz ?-dz dz? nodes..}")) {
+      domain::ViewerBlock b;
+      b.lx = toReal(a, w[0], "-block: lx");
+      b.ly = toReal(a, w[1], "-block: ly");
+      b.lz = toReal(a, w[2], "-block: lz");
+      if (!(b.lx > 0.0) || !(b.ly > 0.0) || !(b.lz > 0.0)) a.fail("-block: sizes must be positive");
+      std::size_t first = 3;
+      if (w[3] == "-dz") {
+        if (w.size() < 5) a.fail("-block: -dz needs a value");
+        b.dz = toReal(a, w[4], "-block: dz");
+        first = 5;
+      }
+      b.nodes = toIntegers(a, w, first, "-block");
+      options.blocks.push_back(std::move(b));
+    }
+  if (auto text = a.optionalWordOption("-gaps"))
+    for (const auto& w : listItems(rt, a, *text, "-gaps", 3, "{label nodeA nodeB}")) {
+      if (w.size() != 3) a.fail("-gaps item {" + w[0] + " ..}: expected {label nodeA nodeB}");
+      options.gaps.push_back({w[0], toInteger(a, w[1], "-gaps: nodeA"), toInteger(a, w[2], "-gaps: nodeB")});
+    }
   a.finish();
   auto recorder = std::make_unique<domain::ViewerRecorder>(std::move(options));
   setResult(rt, rt.domain.addRecorder(std::move(recorder)));
