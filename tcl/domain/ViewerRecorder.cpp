@@ -281,10 +281,6 @@ void ViewerRecorder::initialize(const Domain& domain) {
     for (int n : {g.nodeA, g.nodeB})
       if (drawn.count(n) == 0)
         throw InputError("-gaps", "\"" + g.label + "\": node " + std::to_string(n) + " is not drawn");
-  ground_.clear();
-  for (const auto& [tag, p] : domain.patterns())
-    if (const auto* u = dynamic_cast<const UniformExcitation*>(p.get()); u != nullptr && u->dof() < 3)
-      ground_.emplace_back(tag, u->dof());
   for (const ViewerPlot& p : options_.plots) {
     if (p.source == ViewerPlot::Source::Node) {
       const Node& n = domain.node(p.tag);
@@ -313,6 +309,14 @@ void ViewerRecorder::record(const Domain& domain) {
       t < nextTime_ - kDeltaTTolerance * std::max(1.0, std::abs(nextTime_)))
     return;
   nextTime_ = t + options_.deltaT;
+  if (time_.empty()) {
+    // The ground motions are those present at the first frame (a script may define its patterns
+    // after the recorder); the recorded series keep one value per pattern per frame.
+    ground_.clear();
+    for (const auto& [tag, p] : domain.patterns())
+      if (const auto* u = dynamic_cast<const UniformExcitation*>(p.get()); u != nullptr && u->dof() < 3)
+        ground_.emplace_back(tag, u->dof());
+  }
   time_.push_back(t);
   for (int tag : nodes_) {
     const Node* n = domain.findNode(tag);

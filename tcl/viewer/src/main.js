@@ -115,7 +115,7 @@ function main() {
   }
 
   // Members with a section: the outline swept between the two end nodes (sides and end caps).
-  const memberMaterial = new THREE.MeshLambertMaterial({ color: kColors.member });
+  const memberMaterial = new THREE.MeshLambertMaterial({ color: kColors.member, flatShading: true, transparent: true, opacity: 1 });
   for (const s of solids) {
     const n = s.outline.length / 2;
     const pos = new Float32Array(3 * 2 * n);
@@ -135,7 +135,7 @@ function main() {
   }
 
   // Blocks at nodes (caps, footings).
-  const blockMaterial = new THREE.MeshLambertMaterial({ color: kColors.block });
+  const blockMaterial = new THREE.MeshLambertMaterial({ color: kColors.block, transparent: true, opacity: 1 });
   const blocks = data.blocks.filter((b) => data.nodeIndex.has(b.node)).map((b) => {
     const mesh = new THREE.Mesh(new THREE.BoxGeometry(b.size[0], b.size[1], b.size[2]), blockMaterial);
     scene.add(mesh);
@@ -176,7 +176,9 @@ function main() {
   const pointGeometry = new THREE.BufferGeometry();
   pointGeometry.setAttribute('position', new THREE.BufferAttribute(position, 3));
   const points = new THREE.Points(pointGeometry, new THREE.PointsMaterial({
-    color: kColors.node, size: kNodePointSize, sizeAttenuation: false, depthTest: false }));
+    color: kColors.node, size: kNodePointSize, sizeAttenuation: false, depthTest: false, transparent: true }));
+  // transparent too, so that it is drawn after the (transparent-capable) members: renderOrder
+  // sorts within the transparent pass
   points.renderOrder = 10;
   points.frustumCulled = false;
   points.visible = false;
@@ -211,6 +213,20 @@ function main() {
   const makeLabel = (cls) => { const d = document.createElement('div'); d.className = 'label ' + cls; overlay.appendChild(d); return d; };
   const gaps = data.gaps.filter((g) => data.nodeIndex.has(g.a) && data.nodeIndex.has(g.b)).map((g) => ({
     ...g, ia: data.nodeIndex.get(g.a), ib: data.nodeIndex.get(g.b), el: makeLabel('gap') }));
+  gaps.forEach((g, k) => { g.el.classList.add(k % 2 ? 'below' : 'above'); g.contacts = []; });
+  // each contact belongs to the nearest joint (its contactor to the joint's midpoint)
+  for (const c of contacts) {
+    let best = null;
+    let bestD = Infinity;
+    for (const g of gaps) {
+      const a = data.coords[g.ia];
+      const b = data.coords[g.ib];
+      const p = data.coords[c.idx[0]];
+      const d = Math.hypot(p[0] - 0.5 * (a[0] + b[0]), p[1] - 0.5 * (a[1] + b[1]), p[2] - 0.5 * (a[2] + b[2]));
+      if (d < bestD) { bestD = d; best = g; }
+    }
+    if (best) best.contacts.push(c);
+  }
   for (const b of bearings) b.label = makeLabel('failed');
   const groundLabel = document.getElementById('ground');
 
@@ -349,7 +365,13 @@ function main() {
       const dy = d(g.ib, 1) - d(g.ia, 1);
       g.dx = dx;
       g.dy = dy;
-      g.el.textContent = `${g.label}: ${dx >= 0 ? '+' : ''}${dx.toFixed(3)} m long., ${dy >= 0 ? '+' : ''}${dy.toFixed(3)} m trans.`;
+      let text = `${g.label}: ${dx >= 0 ? '+' : ''}${dx.toFixed(3)} m long., ${dy >= 0 ? '+' : ''}${dy.toFixed(3)} m trans.`;
+      const withGap = g.contacts.filter((c) => c.gap);
+      if (withGap.length) {
+        const clear = Math.min(...withGap.map((c) => c.gap[frame]));
+        text += clear > 0 ? `; clear gap ${clear.toFixed(3)} m` : '; in contact';
+      }
+      g.el.textContent = text;
       tmpA.fromArray(position, 3 * g.ia).add(tmpB.fromArray(position, 3 * g.ib)).multiplyScalar(0.5);
       const s = toScreen(tmpA);
       g.el.style.left = `${s.x}px`;
@@ -380,30 +402,38 @@ function main() {
   let view = '3d';
   function setView(name) {
     view = name;
-    const dist = 1.25 * size;
+    // distance at which the model's extent fills the view (perspective camera, vertical fov)
+    const extent = box.getSize(new THREE.Vector3());
+    const fit = (w, h) => 0.6 * Math.max(h, w / Math.max(camera.aspect, 1e-3)) / Math.tan((camera.fov * Math.PI) / 360);
     controls.target.copy(center);
     if (!zUp) {
       camera.up.set(0, 1, 0);
-      camera.position.copy(center).add(new THREE.Vector3(0, 0, 1.6 * size));
+      camera.position.copy(center).add(new THREE.Vector3(0, 0, fit(extent.x, extent.y) + extent.z));
     } else if (name === 'plan') {
       camera.up.set(0, 1, 0);
-      camera.position.copy(center).add(new THREE.Vector3(0, 0, dist));
+      camera.position.copy(center).add(new THREE.Vector3(0, 0, fit(extent.x, extent.y) + extent.z));
     } else if (name === 'elevation') {
       camera.up.set(0, 0, 1);
-      camera.position.copy(center).add(new THREE.Vector3(0, -dist, 0));
+      camera.position.copy(center).add(new THREE.Vector3(0, -fit(extent.x, extent.z) - extent.y, 0));
     } else if (name === 'joint' && gaps.length) {
-      // close to the first joint, from above and the side
+      // close to the first joint, from the side and above
       const g = gaps[0];
       tmpA.fromArray(position, 3 * g.ia).add(tmpB.fromArray(position, 3 * g.ib)).multiplyScalar(0.5);
       controls.target.copy(tmpA);
       camera.up.set(0, 0, 1);
-      camera.position.copy(tmpA).add(new THREE.Vector3(0.1, -0.12, 0.06).multiplyScalar(size));
+      const d = Math.max(0.2 * size, 1e-3);
+      camera.position.copy(tmpA).add(new THREE.Vector3(0.3 * d, -0.9 * d, -0.05 * d));
     } else {
       camera.up.set(0, 0, 1);
-      camera.position.copy(center).add(new THREE.Vector3(0.45, -1.0, 0.45).multiplyScalar(size));
+      const d = 1.15 * fit(Math.hypot(extent.x, extent.y), extent.z);
+      camera.position.copy(center).add(new THREE.Vector3(0.35 * d, -0.85 * d, 0.4 * d));
     }
     camera.lookAt(controls.target);
     controls.update();
+    // in plan the girders are see-through, so the bearings under them show
+    memberMaterial.opacity = name === 'plan' ? 0.35 : 1;
+    blockMaterial.opacity = name === 'plan' ? 0.5 : 1;
+    memberMaterial.depthWrite = blockMaterial.depthWrite = name !== 'plan';
     document.querySelectorAll('#views button').forEach((b) => b.classList.toggle('on', b.dataset.view === name));
     render();
   }
@@ -585,7 +615,8 @@ function main() {
       for (let f = 1; f < data.frames; ++f) if (contactForceTotal(f) > contactForceTotal(best)) best = f;
       return best;
     },
-    cursorX: (k) => plots[k].u.valToPos(data.time[frame], 'x', false),
+    /** The uPlot instance of plot k (the browser test reads its scales). */
+    plotAt: (k) => plots[k].u,
     plots: () => plots.map((p) => ({ label: p.label, source: p.source, values: Array.from(p.values), text: p.head.textContent })),
   };
 }
