@@ -520,7 +520,7 @@ proc runCase {case scale dt integrator tol motion {csv ""} {perStep ""}} {
   set allBearings [bearingTags]        ;# every girder end, PC1 ... PC4
   set mids [list [dict get $::girderMid 1] [dict get $::girderMid 2] [dict get $::girderMid 3]]
   set peak [dict create]
-  foreach key {gap1x gap1y gap1z gap2x gap2y gap2z force1 force2 rot1 rot2 rot3 deckx decky g1x g2x g3x} { dict set peak $key 0.0 }
+  foreach key {gap1x gap1y gap1z gap2x gap2y gap2z open1 open2 close1 close2 force1 force2 rot1 rot2 rot3 deckx decky g1x g2x g3x} { dict set peak $key 0.0 }
   foreach bt $allBearings { dict set peak strain$bt 0.0; dict set peak bx$bt 0.0; dict set peak by$bt 0.0 }
   set impacts {0 0}
   set closed {0 0}
@@ -591,6 +591,8 @@ proc runCase {case scale dt integrator tol motion {csv ""} {perStep ""}} {
         set gy [expr {[nodeDisp $b 2] - [nodeDisp $a 2]}]
         lappend row $gx $gy
         if {abs($gx) > abs([dict get $peak gap${j}x])} { dict set peak gap${j}x $gx }
+        if {$gx > [dict get $peak open$j]} { dict set peak open$j $gx }    ;# largest opening
+        if {$gx < [dict get $peak close$j]} { dict set peak close$j $gx }  ;# largest closing (< 0)
         if {abs($gy) > abs([dict get $peak gap${j}y])} { dict set peak gap${j}y $gy }
         dict set last gap${j}x $gx
         dict set last gap${j}y $gy

@@ -62,7 +62,25 @@ proc findings::openingMax {r} {
   foreach which {peak last} {
     foreach j {1 2} { set m [expr {max($m, [dict get $r $which gap${j}x])}] }
   }
+  foreach j {1 2} { if {[dict exists $r peak open$j]} { set m [expr {max($m, [dict get $r peak open$j])}] } }
   return $m
+}
+# Largest closing (magnitude of the most negative longitudinal gap) of the two joints, m.
+proc findings::closingMax {r} {
+  set m 0.0
+  foreach j {1 2} {
+    set c [expr {[dict exists $r peak close$j] ? [dict get $r peak close$j] : min([dict get $r peak gap${j}x], 0.0)}]
+    set m [expr {max($m, -$c)}]
+  }
+  return $m
+}
+# Tag of the bearing with the largest longitudinal displacement.
+proc findings::bearingLongTag {r} {
+  set m -1.0; set tag ""
+  foreach bt [bearingTagsOf $r] {
+    if {abs([dict get $r peak bx$bt]) > $m} { set m [expr {abs([dict get $r peak bx$bt])}]; set tag $bt }
+  }
+  return $tag
 }
 proc findings::rotMax {r} {
   set m 0.0
@@ -118,10 +136,12 @@ proc findings::paperFindings {motions ladder limits} {
     lassign $runs rn rp rc
     set w [changeWord [bearingLong $rn] [bearingLong $rp]]
     lappend agree [expr {$w eq "reduces"}]
-    lappend ours "[motionName $runs], largest longitudinal bearing displacement, no pounding -> pounding: [compare [bearingLong $rn] [bearingLong $rp] m]"
+    lappend ours "[motionName $runs], largest longitudinal bearing displacement, no pounding -> pounding: [compare [bearingLong $rn] [bearingLong $rp] m]; largest closing of a joint (girder ends moving towards each other): [compare [closingMax $rn] [closingMax $rp] m]"
   }
+  set why ""
+  if {![all $agree]} { set why "[whereLargest $motions] [whyPounding $ladder]" }
   lappend rows [dict create n 1 paper "Pounding greatly reduces the large longitudinal displacement of the superstructure that the rubber bearings allow." \
-      ours [join $ours "; "] verdict [verdict $motions $agree] why [expr {[all $agree] ? "" : [whyPounding $ladder]}]]
+      ours [join $ours "; "] verdict [verdict $motions $agree] why $why]
 
   # (2) the countermeasure works longitudinally and in rotation about the vertical
   set ours {}; set agree {}
@@ -255,22 +275,48 @@ proc findings::whyFailure {ladder} {
   return $text
 }
 
-# Why the devices do not reduce the gap in direction dir (x or y): how far the joints move with
-# pounding alone against the devices' free travel.
+# Where the largest bearing displacement is: at an end of the bridge (PC1 or the last pier, where
+# the model has no neighbour to pound on) or at a joint.
+proc findings::whereLargest {motions} {
+  set parts {}
+  foreach runs $motions {
+    lassign $runs rn rp
+    set tags [bearingTagsOf $rp]
+    set bt [bearingLongTag $rp]
+    set where [expr {$bt == [lindex $tags 0] || $bt == [lindex $tags end] ? "an end of the bridge, where the model has no neighbour (no abutment) to pound on" : "a joint"}]
+    lappend parts "[motionName $runs]: with pounding the largest longitudinal bearing displacement is at bearing $bt (PC[expr {$bt / 1000}]), [format %.3f [expr {abs([dict get $rp peak bx$bt])}]] m, at $where"
+  }
+  return "[join $parts {; }]."
+}
+
+# Why the devices do not reduce a quantity: how far the joints move with pounding alone against
+# the devices' free travel (dir x: restrainer slack and bumper clearance; y: transverse clearance),
+# and for x the rotation about the vertical, which one device on the girder axis cannot resist.
 proc findings::whyDevices {motions dir} {
   set parts {}
+  set engaged 0
   foreach runs $motions {
     lassign $runs rn rp rc
     if {$dir eq "x"} {
-      lappend parts [format "%s: with pounding alone the joints open at most %.3f m (restrainer slack %.3f m) and close at most %.3f m (bumper clearance %.3f m)" \
-          [motionName $runs] [openingMax $rp] $::restrainerSlack [gapMax $rp x] $::bumperClearance]
+      set open [openingMax $rp]; set close [closingMax $rp]
+      if {$open > $::restrainerSlack || $close > $::bumperClearance} { set engaged 1 }
+      lappend parts [format "%s: with pounding alone the joints open up to %.3f m (restrainer slack %.3f m) and close up to %.3f m (bumper clearance %.3f m); rotation about the vertical %s" \
+          [motionName $runs] $open $::restrainerSlack $close $::bumperClearance [compare [rotMax $rp] [rotMax $rc] rad 4]]
     } else {
-      lappend parts [format "%s: with pounding alone the transverse gap reaches %.3f m (transverse device clearance %.3f m)" \
-          [motionName $runs] [gapMax $rp y] $::transverseSlack]
+      set g [gapMax $rp y]
+      if {$g > $::transverseSlack} { set engaged 1 }
+      lappend parts [format "%s: with pounding alone the transverse gap reaches %.3f m, %.3f m %s the transverse devices' clearance of %.3f m" \
+          [motionName $runs] $g [expr {abs($g - $::transverseSlack)}] [expr {$g > $::transverseSlack ? "beyond" : "short of"}] $::transverseSlack]
     }
   }
   set text "[join $parts {; }]."
-  append text " The devices act only beyond their free travel; where the joints stay within it they change nothing and the difference comes from the device settings of the model (ours), not from the physics."
+  if {!$engaged} {
+    append text " The joints stay within the devices' free travel, so the devices never act: the difference is the device settings of the model (ours), not the physics."
+  } elseif {$dir eq "x"} {
+    append text " The devices do act longitudinally; the countermeasure here is one link on the girder axis per joint (bridge.tcl), which resists the relative movement of the axis but no relative rotation about the vertical, so it cannot reduce the rotation: the difference is the model's device layout, not the physics."
+  } else {
+    append text " The devices act only on the part of the transverse gap beyond their clearance; how much they reduce it follows from that clearance and their stiffness, which are the model's (ours): the difference is the model's device settings."
+  }
   return $text
 }
 
