@@ -124,6 +124,7 @@ set recordFile [file normalize [file join [file dirname [info script]] .. .. .. 
 set pulseTp 1.612; set pulseVp 1.179; set pulseGamma 1.923; set pulseNu 1.792; set pulseT0 5.762
 set duration 20.0           ;# s of analysis
 set ladderScales {1.0 1.25 1.5 1.75 2.0} ;# scales of the record run by the whole study (case all)
+set viewerDt 0.05           ;# s between the frames of the viewer pages
 
 # Serviceability of the expansion joints after the earthquake (report: one verdict per case).
 # The paper's own criterion is not published with numbers we can use, so these are ours: a
@@ -536,7 +537,7 @@ proc runCase {case scale dt integrator tol motion {csv ""} {perStep ""}} {
       lappend elasticPier [expr {1000 * $p + 3}] [expr {1000 * $p + 4}]
     }
     set padSide [expr {sqrt($::bearingArea)}]
-    recorder Viewer -file "[file rootname $csv].html" -dT 0.05 -title "Three-span bridge: $case" \
+    recorder Viewer -file "[file rootname $csv].html" -dT $::viewerDt -title "Three-span bridge: $case" \
       -plots [list [list "girder G2 left end, longitudinal (m)" node $g2s 1 disp] \
                    [list "PC3 bearing of G2, shear strain" ele 3011 shearStrain 1] \
                    [list "PC2 bearing of G2, shear strain" ele 2012 shearStrain 1]] \
