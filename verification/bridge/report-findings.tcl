@@ -90,6 +90,8 @@ check "record: a residual opening of 0.080 m passes the 0.050 m slack: the devic
     [string match "*open up to 0.080 m*do act longitudinally*" [dict get [lindex $rows 1] why]] [dict get [lindex $rows 1] why]
 check "disagree: transverse gap 0.08 m beyond the 0.05 m clearance: the devices act" \
     [string match "*0.080 m, 0.030 m beyond*act only on the part*" [dict get [lindex $rows 3] why]] [dict get [lindex $rows 3] why]
+check "disagree: finding 3's why names the failing limits" \
+    [string match "largest peak opening 0.200 m exceeds the 0.050 m limit; largest residual offset 0.080 m exceeds*" [dict get [lindex $rows 2] why]] [dict get [lindex $rows 2] why]
 check "disagree: finding 5's why gives the scale at which bearings fail" \
     [string match "*nopound: bearings reach 300 % from scale 1.5*" [dict get [lindex $rows 4] why]] [dict get [lindex $rows 4] why]
 

@@ -234,7 +234,7 @@ proc makePlots {names outDir {results {}}} {
   # Plan view: each bearing (one element per girder end stands for the pair at +-bearingRollArm)
   # coloured by its damage state, one panel per case
   if {[llength $results] > 0} {
-    set height [expr {360 * [llength $results] + 80}]
+    set height [expr {250 * [llength $results] + 60}]
     puts $gp "set terminal [lindex $term 0] size 1100,$height [lrange $term 3 end]"
     puts $gp "set output '[file join $outDir plan.png]'"
     puts $gp "set multiplot layout [llength $results],1 title 'Plan: bearings by damage state (sound < 250 % <= past design < 300 % <= failed)'"
@@ -257,15 +257,17 @@ proc makePlots {names outDir {results {}}} {
         foreach y [list -$::bearingRollArm $::bearingRollArm] {
           lappend objs "set object [incr obj] rect from [expr {$x - $pad}],[expr {$y - $pad}] to [expr {$x + $pad}],[expr {$y + $pad}] fc rgb '$color' fs solid border lc rgb 'black' front"
         }
-        lappend objs "set label [incr obj] '[format %.0f [expr {100 * $e}]]%' at $x,[expr {$hw + 1.5}] center front"
+        # the two bearings of a pier are 2 x bearingOffset apart: left one's label to the left
+        set left [expr {$bt % 1000 == 11}]
+        lappend objs "set label [incr obj] '[format %.0f [expr {100 * $e}]]%' at [expr {$x + ($left ? -0.8 : 0.8)}],[expr {$hw + 1.8}] [expr {$left ? "right" : "left"}] front"
       }
-      puts $gp "set title '[dict get $r case]'; set xlabel 'x along the bridge (m)'; set ylabel 'y (m)'"
+      puts $gp "set title '[dict get $r case] (labels: peak shear strain)'; set xlabel 'x along the bridge (m)'; set ylabel 'y (m)'; set key outside right top"
       puts $gp "set xrange \[-3:[expr {$xmax + 3}]\]; set yrange \[[expr {-$hw - 3}]:[expr {$hw + 3}]\]; set size ratio -1"
       puts $gp [join $objs "\n"]
       puts $gp "plot NaN notitle, NaN with boxes fc rgb '#2ca02c' fs solid title 'sound', NaN with boxes fc rgb '#f2c81e' fs solid title 'past 250 %', NaN with boxes fc rgb '#d62728' fs solid title 'failed (300 %)'"
       puts $gp "unset object; unset label"
     }
-    puts $gp "unset multiplot; set size noratio; set autoscale; set xlabel 't (s)'"
+    puts $gp "unset multiplot; set size noratio; set autoscale; set xlabel 't (s)'; set key inside top right"
     puts $gp "set terminal $term"
   }
   set pn [lsearch -all -inline -not $names nopound]
