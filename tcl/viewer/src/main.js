@@ -416,8 +416,10 @@ function main() {
       camera.up.set(0, 0, 1);
       camera.position.copy(center).add(new THREE.Vector3(0, -fit(extent.x, extent.z) - extent.y, 0));
     } else if (name === 'joint' && gaps.length) {
-      // close to the first joint, from the side and above
-      const g = gaps[0];
+      // close to the joint with the largest contact force now (the first joint when none is closed),
+      // from the side at the height of the bearings
+      const jointForce = (j) => j.contacts.reduce((sum, c) => sum + (c.force ? Math.max(c.force[frame], 0) : 0), 0);
+      const g = gaps.reduce((best, j) => (jointForce(j) > jointForce(best) ? j : best), gaps[0]);
       tmpA.fromArray(position, 3 * g.ia).add(tmpB.fromArray(position, 3 * g.ib)).multiplyScalar(0.5);
       controls.target.copy(tmpA);
       camera.up.set(0, 0, 1);
@@ -608,6 +610,8 @@ function main() {
     groundText: () => groundLabel.textContent,
     groundAcceleration: (f) => groundVector(f),
     memberCount: () => solids.length,
+    /** Section outline [y0, z0, ..] of member `tag` (null: not drawn as a solid). */
+    memberOutline: (tag) => { const m = solids.find((x) => x.tag === tag); return m ? m.outline.slice() : null; },
     /** Sum of the contacts' normal forces at frame f, and the frame where it is largest. */
     contactForceTotal,
     frameOfMaxContactForce: () => {

@@ -21,7 +21,12 @@ fix 11 1 1 1 1 1 1
 geomTransf Linear 1 0.0 1.0 0.0
 geomTransf Linear 2 0.0 0.0 1.0
 element elasticBeamColumn 1 1 2 3.0 3.0e7 1.25e7 1.0 0.7 0.7 1
-element elasticBeamColumn 2 11 12 3.0 3.0e7 1.25e7 1.0 0.7 0.7 1
+# the second pier: a force-based element with a fiber section (circle D = 1.2 m, E chosen so that EI
+# is the first pier's 3.0e7 x 0.7), which the page draws as a solid of its fibers' outline
+uniaxialMaterial Elastic 1 [expr {3.0e7 * 0.7 / (acos(-1.0) * pow(0.6, 4) / 4.0)}]
+section Fiber 1 -GJ 1.25e7 { patch circ 1 16 4 0.0 0.0 0.0 0.6 0.0 360.0 }
+beamIntegration Lobatto 1 1 3
+element forceBeamColumn 2 11 12 1 1
 # girder nodes 3, 4, 13 with 100 t each
 node 3 0.0 0.0 8.0 -mass 100.0 100.0 100.0 0.0 0.0 0.0
 node 4 10.0 0.0 8.0 -mass 100.0 100.0 100.0 0.0 0.0 0.0
@@ -52,7 +57,7 @@ recorder Viewer -file [file join $out bridge.html] -title "viewer test bridge" -
   {"girder end x" node 13 1 disp}
   {"contact gap" ele 51 gap 1}
   {"bearing 21 shear strain" ele 21 shearStrain 1}
-} -beamSection {{rect 4.0 1.5 31 32} {circle 1.2 1 2}} -bearingPad {{0.8 0.8 21 22}} \
+} -beamSection {{rect 4.0 1.5 31 32} {circle 1.2 1}} -bearingPad {{0.8 0.8 21 22}} \
   -block {{1.5 4.0 1.0 -dz -0.5 2 12}} -gaps {{"Joint" 13 41}}
 
 timeSeries Trig 1 0.0 3.0 1.0 -factor 3.0

@@ -157,8 +157,19 @@ test('node markers are off by default', { skip }, async () => {
 });
 
 test('members are drawn as solids of their sections', { skip }, async () => {
-  // -beamSection gives the two girder elements and the two piers a section
+  // -beamSection gives the two girder elements and pier 1 a section, pier 2 has a fiber section
   assert.equal(await page.evaluate(() => window.dabsViewer.memberCount()), 4);
+  // the fiber outline: the hull of the fibers scaled to the section's area, pi 0.6^2
+  const o = await page.evaluate(() => window.dabsViewer.memberOutline(2));
+  let area = 0;
+  let rMax = 0;
+  for (let k = 0; k < o.length; k += 2) {
+    const j = (k + 2) % o.length;
+    area += 0.5 * (o[k] * o[j + 1] - o[j] * o[k + 1]);
+    rMax = Math.max(rMax, Math.hypot(o[k], o[k + 1]));
+  }
+  assert.ok(Math.abs(area - Math.PI * 0.36) <= 1e-4 * Math.PI * 0.36, `outline area ${area}`);
+  assert.ok(Math.abs(rMax - 0.6) <= 0.05 * 0.6, `outline radius ${rMax}`);
 });
 
 test('moving the slider moves the drawn nodes to the recorded positions', { skip }, async () => {

@@ -53,6 +53,7 @@ proc writeReport {results outDir {other {}} {ladder {}}} {
   # One animated page per case, written by `recorder Viewer` (open them in a browser).
   set pages {}
   foreach n $names { if {[file exists [file join $outDir $n.html]]} { lappend pages "\[$n\]($n.html)" } }
+  foreach n $names { if {[file exists [file join $outDir pulse-$n.html]]} { lappend pages "\[$n under the pulse\](pulse-$n.html)" } }
   if {[llength $pages] > 0} {
     puts $md "\n## See the bridge move\n\nViewer pages (open in a browser): [join $pages {, }]."
     set shots [viewerScreenshots $outDir pound]
@@ -179,7 +180,7 @@ proc viewerScreenshots {outDir case} {
   }
   if {![regexp {time ([-0-9.e+]+)} $out -> t]} { return {} }
   set shots [list $t]
-  foreach {view caption} {3d "3D view" plan "plan" elevation "elevation" joint "the joint over PC2, close up"} {
+  foreach {view caption} {3d "3D view" plan "plan" elevation "elevation" joint "the joint with the largest force, close up"} {
     if {[file exists [file join $outDir viewer-$case-$view.png]]} {
       lappend shots viewer-$case-$view.png "Pound case at the largest pounding force: $caption"
     }
