@@ -4,6 +4,7 @@
 
 #include <memory>
 #include <string>
+#include <type_traits>
 
 #include "tcl/commands/TclResult.h"
 #include "tcl/domain/ViewerRecorder.h"
@@ -34,16 +35,26 @@ std::vector<std::string> listWords(Runtime& rt, const ArgReader& a, const std::s
   return words;
 }
 
-int toInteger(const ArgReader& a, const std::string& word, const std::string& what) {
+/// The whole word read as an int or a double; fails with the reader's context otherwise.
+template <class T>
+T toNumber(const ArgReader& a, const std::string& word, const std::string& what) {
   std::size_t used = 0;
-  int v = 0;
+  T v{};
   try {
-    v = std::stoi(word, &used);
+    if constexpr (std::is_same_v<T, int>) v = std::stoi(word, &used);
+    else v = std::stod(word, &used);
   } catch (const std::exception&) {
     used = 0;
   }
-  if (used == 0 || used != word.size()) a.fail(what + " expected an integer, got \"" + word + "\"");
+  if (used == 0 || used != word.size())
+    a.fail(what + (std::is_same_v<T, int> ? " expected an integer" : " expected a number") + ", got \"" + word + "\"");
   return v;
+}
+int toInteger(const ArgReader& a, const std::string& word, const std::string& what) {
+  return toNumber<int>(a, word, what);
+}
+double toReal(const ArgReader& a, const std::string& word, const std::string& what) {
+  return toNumber<double>(a, word, what);
 }
 
 domain::ViewerPlot readPlot(Runtime& rt, const ArgReader& a, const std::string& text) {
@@ -72,18 +83,6 @@ domain::ViewerPlot readPlot(Runtime& rt, const ArgReader& a, const std::string& 
     a.fail(where + ": expected node or ele after the label, got \"" + w[1] + "\"");
   }
   return p;
-}
-
-double toReal(const ArgReader& a, const std::string& word, const std::string& what) {
-  std::size_t used = 0;
-  double v = 0.0;
-  try {
-    v = std::stod(word, &used);
-  } catch (const std::exception&) {
-    used = 0;
-  }
-  if (used == 0 || used != word.size()) a.fail(what + " expected a number, got \"" + word + "\"");
-  return v;
 }
 
 std::vector<int> toIntegers(const ArgReader& a, const std::vector<std::string>& w, std::size_t from,
