@@ -93,6 +93,18 @@ std::vector<int> toIntegers(const ArgReader& a, const std::vector<std::string>& 
   return out;
 }
 
+/// The first words of an option item read as positive sizes named `names`.
+std::vector<double> positiveSizes(const ArgReader& a, const std::vector<std::string>& w,
+                                  std::initializer_list<const char*> names, const std::string& option) {
+  std::vector<double> out;
+  for (const char* name : names) {
+    const double v = toReal(a, w[out.size()], option + ": " + name);
+    if (!(v > 0.0)) a.fail(option + ": sizes must be positive");
+    out.push_back(v);
+  }
+  return out;
+}
+
 /// Items of a list option, each a Tcl list of at least `minWords` words.
 std::vector<std::vector<std::string>> listItems(Runtime& rt, const ArgReader& a,
                                                 const std::string& text, const std::string& option,
@@ -144,19 +156,19 @@ void viewerRecorderCommand(Runtime& rt, ArgReader& a) {
   if (auto text = a.optionalWordOption("-bearingPad"))
     for (const auto& w : listItems(rt, a, *text, "-bearingPad", 3, "{lx ly tags..}")) {
       domain::ViewerPad p;
-      p.lx = toReal(a, w[0], "-bearingPad: lx");
-      p.ly = toReal(a, w[1], "-bearingPad: ly");
-      if (!(p.lx > 0.0) || !(p.ly > 0.0)) a.fail("-bearingPad: sizes must be positive");
+      const auto size = positiveSizes(a, w, {"lx", "ly"}, "-bearingPad");
+      p.lx = size[0];
+      p.ly = size[1];
       p.elements = toIntegers(a, w, 2, "-bearingPad");
       options.pads.push_back(std::move(p));
     }
   if (auto text = a.optionalWordOption("-block"))
     for (const auto& w : listItems(rt, a, *text, "-block", 4, "{lx ly lz ?-dz dz? nodes..}")) {
       domain::ViewerBlock b;
-      b.lx = toReal(a, w[0], "-block: lx");
-      b.ly = toReal(a, w[1], "-block: ly");
-      b.lz = toReal(a, w[2], "-block: lz");
-      if (!(b.lx > 0.0) || !(b.ly > 0.0) || !(b.lz > 0.0)) a.fail("-block: sizes must be positive");
+      const auto size = positiveSizes(a, w, {"lx", "ly", "lz"}, "-block");
+      b.lx = size[0];
+      b.ly = size[1];
+      b.lz = size[2];
       std::size_t first = 3;
       if (w[3] == "-dz") {
         if (w.size() < 5) a.fail("-block: -dz needs a value");
