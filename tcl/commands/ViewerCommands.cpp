@@ -4,6 +4,7 @@
 
 #include <memory>
 #include <string>
+#include <type_traits>
 
 #include "tcl/commands/TclResult.h"
 #include "tcl/domain/ViewerRecorder.h"
@@ -14,7 +15,9 @@ namespace {
 
 constexpr const char* kUsage =
     "recorder Viewer -file page.html ?-dT dt? ?-nodes tags? ?-title text? ?-plots {{label node tag "
-    "dof disp|vel|accel} {label ele tag response.. component} ..}?";
+    "dof disp|vel|accel} {label ele tag response.. component} ..}? ?-beamSection {{rect width depth "
+    "tags..} {circle diameter tags..} ..}? ?-bearingPad {{lx ly tags..} ..}? ?-block {{lx ly lz ?-dz dz? "
+    "nodes..} ..}? ?-gaps {{label nodeA nodeB} ..}?";
 
 /// Words of a Tcl list; fails with the reader's context when `text` is not a list.
 std::vector<std::string> listWords(Runtime& rt, const ArgReader& a, const std::string& text,
@@ -32,16 +35,26 @@ std::vector<std::string> listWords(Runtime& rt, const ArgReader& a, const std::s
   return words;
 }
 
-int toInteger(const ArgReader& a, const std::string& word, const std::string& what) {
+/// The whole word read as an int or a double; fails with the reader's context otherwise.
+template <class T>
+T toNumber(const ArgReader& a, const std::string& word, const std::string& what) {
   std::size_t used = 0;
-  int v = 0;
+  T v{};
   try {
-    v = std::stoi(word, &used);
+    if constexpr (std::is_same_v<T, int>) v = std::stoi(word, &used);
+    else v = std::stod(word, &used);
   } catch (const std::exception&) {
     used = 0;
   }
-  if (used == 0 || used != word.size()) a.fail(what + " expected an integer, got \"" + word + "\"");
+  if (used == 0 || used != word.size())
+    a.fail(what + (std::is_same_v<T, int> ? " expected an integer" : " expected a number") + ", got \"" + word + "\"");
   return v;
+}
+int toInteger(const ArgReader& a, const std::string& word, const std::string& what) {
+  return toNumber<int>(a, word, what);
+}
+double toReal(const ArgReader& a, const std::string& word, const std::string& what) {
+  return toNumber<double>(a, word, what);
 }
 
 domain::ViewerPlot readPlot(Runtime& rt, const ArgReader& a, const std::string& text) {
@@ -72,6 +85,39 @@ domain::ViewerPlot readPlot(Runtime& rt, const ArgReader& a, const std::string& 
   return p;
 }
 
+std::vector<int> toIntegers(const ArgReader& a, const std::vector<std::string>& w, std::size_t from,
+                            const std::string& what) {
+  std::vector<int> out;
+  for (std::size_t i = from; i < w.size(); ++i) out.push_back(toInteger(a, w[i], what));
+  if (out.empty()) a.fail(what + ": expected at least one tag");
+  return out;
+}
+
+/// The first words of an option item read as positive sizes named `names`.
+std::vector<double> positiveSizes(const ArgReader& a, const std::vector<std::string>& w,
+                                  std::initializer_list<const char*> names, const std::string& option) {
+  std::vector<double> out;
+  for (const char* name : names) {
+    const double v = toReal(a, w[out.size()], option + ": " + name);
+    if (!(v > 0.0)) a.fail(option + ": sizes must be positive");
+    out.push_back(v);
+  }
+  return out;
+}
+
+/// Items of a list option, each a Tcl list of at least `minWords` words.
+std::vector<std::vector<std::string>> listItems(Runtime& rt, const ArgReader& a,
+                                                const std::string& text, const std::string& option,
+                                                std::size_t minWords, const std::string& form) {
+  std::vector<std::vector<std::string>> items;
+  for (const std::string& item : listWords(rt, a, text, option)) {
+    auto w = listWords(rt, a, item, option + " item");
+    if (w.size() < minWords) a.fail(option + " item {" + item + "}: expected " + form);
+    items.push_back(std::move(w));
+  }
+  return items;
+}
+
 }  // namespace
 
 void viewerRecorderCommand(Runtime& rt, ArgReader& a) {
@@ -87,6 +133,56 @@ void viewerRecorderCommand(Runtime& rt, ArgReader& a) {
   if (auto plots = a.optionalWordOption("-plots"))
     for (const std::string& item : listWords(rt, a, *plots, "-plots"))
       options.plots.push_back(readPlot(rt, a, item));
+  if (auto text = a.optionalWordOption("-beamSection"))
+    for (const auto& w : listItems(rt, a, *text, "-beamSection", 3, "{rect width depth tags..} or {circle diameter tags..}")) {
+      domain::ViewerBeamSection s;
+      const std::string where = "-beamSection item {" + w[0] + " ..}";
+      if (w[0] == "rect") {
+        if (w.size() < 4) a.fail(where + ": expected {rect width depth tags..}");
+        s.width = toReal(a, w[1], where + ": width");
+        s.depth = toReal(a, w[2], where + ": depth");
+        s.elements = toIntegers(a, w, 3, where);
+      } else if (w[0] == "circle") {
+        s.shape = domain::ViewerBeamSection::Shape::Circle;
+        s.width = toReal(a, w[1], where + ": diameter");
+        s.elements = toIntegers(a, w, 2, where);
+      } else {
+        a.fail(where + ": expected rect or circle, got \"" + w[0] + "\"");
+      }
+      if (!(s.width > 0.0) || (s.shape == domain::ViewerBeamSection::Shape::Rect && !(s.depth > 0.0)))
+        a.fail(where + ": sizes must be positive");
+      options.sections.push_back(std::move(s));
+    }
+  if (auto text = a.optionalWordOption("-bearingPad"))
+    for (const auto& w : listItems(rt, a, *text, "-bearingPad", 3, "{lx ly tags..}")) {
+      domain::ViewerPad p;
+      const auto size = positiveSizes(a, w, {"lx", "ly"}, "-bearingPad");
+      p.lx = size[0];
+      p.ly = size[1];
+      p.elements = toIntegers(a, w, 2, "-bearingPad");
+      options.pads.push_back(std::move(p));
+    }
+  if (auto text = a.optionalWordOption("-block"))
+    for (const auto& w : listItems(rt, a, *text, "-block", 4, "{lx ly lz ?-dz dz? nodes..}")) {
+      domain::ViewerBlock b;
+      const auto size = positiveSizes(a, w, {"lx", "ly", "lz"}, "-block");
+      b.lx = size[0];
+      b.ly = size[1];
+      b.lz = size[2];
+      std::size_t first = 3;
+      if (w[3] == "-dz") {
+        if (w.size() < 5) a.fail("-block: -dz needs a value");
+        b.dz = toReal(a, w[4], "-block: dz");
+        first = 5;
+      }
+      b.nodes = toIntegers(a, w, first, "-block");
+      options.blocks.push_back(std::move(b));
+    }
+  if (auto text = a.optionalWordOption("-gaps"))
+    for (const auto& w : listItems(rt, a, *text, "-gaps", 3, "{label nodeA nodeB}")) {
+      if (w.size() != 3) a.fail("-gaps item {" + w[0] + " ..}: expected {label nodeA nodeB}");
+      options.gaps.push_back({w[0], toInteger(a, w[1], "-gaps: nodeA"), toInteger(a, w[2], "-gaps: nodeB")});
+    }
   a.finish();
   auto recorder = std::make_unique<domain::ViewerRecorder>(std::move(options));
   setResult(rt, rt.domain.addRecorder(std::move(recorder)));

@@ -7,9 +7,12 @@
 #include <filesystem>
 #include <fstream>
 #include <map>
+#include <numbers>
 #include <set>
 
+#include "elements/beam/SectionBeamColumn.h"
 #include "materials/InputError.h"
+#include "materials/section/FiberSection.h"
 #include "tcl/domain/Domain.h"
 #include "tcl/domain/RecorderFile.h"
 #include "tcl/viewer/ViewerPageTemplate.h"
@@ -118,6 +121,64 @@ double nodeValue(const Node& n, int dof, ViewerPlot::NodeQuantity quantity) {
   return 0.0;
 }
 
+/// Vertices of a circle of diameter d as a polygon (local y, z pairs).
+std::vector<double> circleOutline(double d) {
+  constexpr int kSides = 32;
+  std::vector<double> out;
+  for (int k = 0; k < kSides; ++k) {
+    const double a = 2.0 * std::numbers::pi * k / kSides;
+    out.push_back(0.5 * d * std::cos(a));
+    out.push_back(0.5 * d * std::sin(a));
+  }
+  return out;
+}
+
+/// Outline of a fiber section: the convex hull of the fiber positions (Andrew's monotone chain),
+/// scaled about the area centroid so that it encloses the section's area. The outermost fibers
+/// sit at their patch cells' centroids, inside the true edge; scaling to the area puts the
+/// drawn edge where the area says it is (exact for a rectangle of equal cells, within 1 % of the
+/// radius for a circle of 12 sectors).
+std::vector<double> fiberOutline(const materials::section::FiberSection3d& s) {
+  struct P { double y, z; };
+  std::vector<P> p;
+  double area = 0.0, cy = 0.0, cz = 0.0;
+  for (int i = 0; i < s.numFibers(); ++i) {
+    p.push_back({s.fiberY(i), s.fiberZ(i)});
+    area += s.fiberArea(i);
+    cy += s.fiberArea(i) * s.fiberY(i);
+    cz += s.fiberArea(i) * s.fiberZ(i);
+  }
+  if (p.size() < 3 || area <= 0.0) return {};
+  cy /= area;
+  cz /= area;
+  std::sort(p.begin(), p.end(), [](P a, P b) { return a.y < b.y || (a.y == b.y && a.z < b.z); });
+  auto cross = [](P o, P a, P b) { return (a.y - o.y) * (b.z - o.z) - (a.z - o.z) * (b.y - o.y); };
+  std::vector<P> hull(2 * p.size());
+  std::size_t k = 0;
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    while (k >= 2 && cross(hull[k - 2], hull[k - 1], p[i]) <= 0.0) --k;
+    hull[k++] = p[i];
+  }
+  for (std::size_t i = p.size() - 1, lower = k + 1; i-- > 0;) {
+    while (k >= lower && cross(hull[k - 2], hull[k - 1], p[i]) <= 0.0) --k;
+    hull[k++] = p[i];
+  }
+  hull.resize(k - 1);
+  if (hull.size() < 3) return {};
+  double hullArea = 0.0;
+  for (std::size_t i = 0; i < hull.size(); ++i) {
+    const P a = hull[i], b = hull[(i + 1) % hull.size()];
+    hullArea += 0.5 * (a.y * b.z - b.y * a.z);
+  }
+  const double scale = hullArea > 0.0 ? std::sqrt(area / hullArea) : 1.0;
+  std::vector<double> out;
+  for (const P& h : hull) {
+    out.push_back(cy + scale * (h.y - cy));
+    out.push_back(cz + scale * (h.z - cz));
+  }
+  return out;
+}
+
 }  // namespace
 
 std::string_view viewerElementKind(std::string_view typeName) {
@@ -171,10 +232,56 @@ void ViewerRecorder::initialize(const Domain& domain) {
     const auto& en = e->nodeTags();
     if (!std::all_of(en.begin(), en.end(), [&](int n) { return drawn.count(n) != 0; })) continue;
     const std::string_view kind = viewerElementKind(e->typeName());
-    elements_.push_back({tag, std::string(kind), std::string(e->typeName()), en});
+    std::vector<double> outline;
+    if (kind == "beam") {
+      if (const auto* b = dynamic_cast<const elements::SectionBeamColumn<3>*>(e.get());
+          b != nullptr && b->numSections() > 0)
+        if (const auto* f = dynamic_cast<const materials::section::FiberSection3d*>(&b->section(0)))
+          outline = fiberOutline(*f);
+    }
+    elements_.push_back({tag, std::string(kind), std::string(e->typeName()), en, outline});
     if (kind == "contact") contacts_.push_back(tag);
     if (kind == "bearing") bearings_.push_back(tag);
   }
+  auto drawnElement = [&](int tag, const char* option, std::string_view kind) -> DrawnElement& {
+    for (DrawnElement& d : elements_)
+      if (d.tag == tag) {
+        if (d.kind != kind)
+          throw InputError(option, "element " + std::to_string(tag) + " (" + d.type + ") is not a " +
+                                       std::string(kind));
+        return d;
+      }
+    throw InputError(option, "element " + std::to_string(tag) +
+                                 " does not exist or has nodes that are not drawn");
+  };
+  for (const ViewerBeamSection& s : options_.sections) {
+    if (!(s.width > 0.0) || (s.shape == ViewerBeamSection::Shape::Rect && !(s.depth > 0.0)))
+      throw InputError("-beamSection", "sizes must be positive");
+    for (int tag : s.elements) {
+      DrawnElement& d = drawnElement(tag, "-beamSection", "beam");
+      if (s.shape == ViewerBeamSection::Shape::Circle) {
+        d.outline = circleOutline(s.width);
+      } else {
+        const double y = 0.5 * s.width, z = 0.5 * s.depth;
+        d.outline = {-y, -z, y, -z, y, z, -y, z};
+      }
+    }
+  }
+  for (const ViewerPad& p : options_.pads) {
+    if (!(p.lx > 0.0) || !(p.ly > 0.0)) throw InputError("-bearingPad", "sizes must be positive");
+    for (int tag : p.elements) drawnElement(tag, "-bearingPad", "bearing").outline = {p.lx, p.ly};
+  }
+  for (const ViewerBlock& b : options_.blocks) {
+    if (!(b.lx > 0.0) || !(b.ly > 0.0) || !(b.lz > 0.0))
+      throw InputError("-block", "sizes must be positive");
+    for (int n : b.nodes)
+      if (drawn.count(n) == 0)
+        throw InputError("-block", "node " + std::to_string(n) + " is not drawn");
+  }
+  for (const ViewerGap& g : options_.gaps)
+    for (int n : {g.nodeA, g.nodeB})
+      if (drawn.count(n) == 0)
+        throw InputError("-gaps", "\"" + g.label + "\": node " + std::to_string(n) + " is not drawn");
   for (const ViewerPlot& p : options_.plots) {
     if (p.source == ViewerPlot::Source::Node) {
       const Node& n = domain.node(p.tag);
@@ -203,6 +310,14 @@ void ViewerRecorder::record(const Domain& domain) {
       t < nextTime_ - kDeltaTTolerance * std::max(1.0, std::abs(nextTime_)))
     return;
   nextTime_ = t + options_.deltaT;
+  if (time_.empty()) {
+    // The ground motions are those present at the first frame (a script may define its patterns
+    // after the recorder); the recorded series keep one value per pattern per frame.
+    ground_.clear();
+    for (const auto& [tag, p] : domain.patterns())
+      if (const auto* u = dynamic_cast<const UniformExcitation*>(p.get()); u != nullptr && u->dof() < 3)
+        ground_.emplace_back(tag, u->dof());
+  }
   time_.push_back(t);
   for (int tag : nodes_) {
     const Node* n = domain.findNode(tag);
@@ -215,8 +330,20 @@ void ViewerRecorder::record(const Domain& domain) {
     const auto r = e != nullptr ? e->response(words) : std::nullopt;
     return r && r->size() > 0 ? (*r)(0) : 0.0;
   };
-  for (int tag : contacts_) status_.push_back(scalar(tag, "status"));
-  for (int tag : bearings_) damage_.push_back(scalar(tag, "damage"));
+  for (int tag : contacts_) {
+    status_.push_back(scalar(tag, "status"));
+    gap_.push_back(scalar(tag, "gap"));
+    force_.push_back(scalar(tag, "contactForce"));  // normal component N
+  }
+  for (int tag : bearings_) {
+    damage_.push_back(scalar(tag, "damage"));
+    strain_.push_back(scalar(tag, "shearStrain"));
+  }
+  for (const auto& [tag, dof] : ground_) {
+    const auto& patterns = domain.patterns();
+    const auto it = patterns.find(tag);
+    groundAccel_.push_back(it != patterns.end() ? it->second->factor(t) : 0.0);
+  }
   for (const ViewerPlot& p : options_.plots) {
     double v = 0.0;
     if (p.source == ViewerPlot::Source::Node) {
@@ -234,7 +361,7 @@ std::string ViewerRecorder::dataJson() const {
   std::string json;
   std::string bytes;
   json.reserve(64 * (nodes_.size() + elements_.size()) + 16 * n);
-  json += "{\"format\":\"dabs-viewer\",\"version\":1,\"title\":";
+  json += "{\"format\":\"dabs-viewer\",\"version\":2,\"title\":";
   appendString(json, options_.title);
   json += ",\"ndm\":" + std::to_string(ndm_);
   json += ",\"frames\":" + std::to_string(n) + ",\"time\":[";
@@ -270,7 +397,35 @@ std::string ViewerRecorder::dataJson() const {
       if (k) json += ',';
       json += std::to_string(e.nodes[k]);
     }
+    json += "],[";
+    for (std::size_t k = 0; k < e.outline.size(); ++k) {
+      if (k) json += ',';
+      appendNumber(json, e.outline[k], 6);
+    }
     json += "]]";
+  }
+  json += "],\"blocks\":[";
+  bool first = true;
+  for (const ViewerBlock& b : options_.blocks)
+    for (int node : b.nodes) {
+      json += first ? "[" : ",[";
+      first = false;
+      json += std::to_string(node);
+      for (double v : {b.lx, b.ly, b.lz, b.dz}) {
+        json += ',';
+        appendNumber(json, v, 6);
+      }
+      json += ']';
+    }
+  json += "],\"gaps\":[";
+  for (std::size_t i = 0; i < options_.gaps.size(); ++i) {
+    json += i ? ",[" : "[";
+    appendString(json, options_.gaps[i].label);
+    json += ',';
+    json += std::to_string(options_.gaps[i].nodeA);
+    json += ',';
+    json += std::to_string(options_.gaps[i].nodeB);
+    json += ']';
   }
   json += "],\"disp\":[";
   const std::size_t perFrame = 3 * nodes_.size();
@@ -284,6 +439,10 @@ std::string ViewerRecorder::dataJson() const {
     json += std::to_string(contacts_[i]);
     json += ',';
     appendSeries(json, bytes, status_, i, contacts_.size(), n, true);
+    json += ',';
+    appendSeries(json, bytes, gap_, i, contacts_.size(), n, false);
+    json += ',';
+    appendSeries(json, bytes, force_, i, contacts_.size(), n, false);
     json += ']';
   }
   json += "],\"bearings\":[";
@@ -292,6 +451,16 @@ std::string ViewerRecorder::dataJson() const {
     json += std::to_string(bearings_[i]);
     json += ',';
     appendSeries(json, bytes, damage_, i, bearings_.size(), n, true);
+    json += ',';
+    appendSeries(json, bytes, strain_, i, bearings_.size(), n, false);
+    json += ']';
+  }
+  json += "],\"ground\":[";
+  for (std::size_t i = 0; i < ground_.size(); ++i) {
+    json += i ? ",[" : "[";
+    json += std::to_string(ground_[i].second);
+    json += ',';
+    appendSeries(json, bytes, groundAccel_, i, ground_.size(), n, false);
     json += ']';
   }
   json += "],\"plots\":[";

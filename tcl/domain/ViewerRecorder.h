@@ -24,6 +24,35 @@ struct ViewerPlot {
   int component = 0;                   ///< element response component, 0-based
 };
 
+/// Cross-section drawn for beam elements (`-beamSection`): a rectangle width x depth (local y x
+/// local z) or a circle of diameter `width`.
+struct ViewerBeamSection {
+  enum class Shape { Rect, Circle };
+  Shape shape = Shape::Rect;
+  double width = 0.0;                  ///< rectangle width along local y, or circle diameter (m)
+  double depth = 0.0;                  ///< rectangle depth along local z (m)
+  std::vector<int> elements;           ///< beam element tags
+};
+
+/// Bearing pads drawn between the two nodes of bearing elements (`-bearingPad`).
+struct ViewerPad {
+  double lx = 0.0, ly = 0.0;           ///< plan size along global X and Y (m)
+  std::vector<int> elements;           ///< bearing element tags
+};
+
+/// Solid blocks drawn at nodes and moving with them (`-block`): pier caps, footings.
+struct ViewerBlock {
+  double lx = 0.0, ly = 0.0, lz = 0.0; ///< size along global X, Y, Z (m)
+  double dz = 0.0;                     ///< centre of the block above the node (m)
+  std::vector<int> nodes;
+};
+
+/// A joint whose relative displacement (node b minus node a) the page prints (`-gaps`).
+struct ViewerGap {
+  std::string label;
+  int nodeA = 0, nodeB = 0;
+};
+
 /// Options of `recorder Viewer`.
 struct ViewerOptions {
   std::string file;                    ///< output HTML page
@@ -31,6 +60,10 @@ struct ViewerOptions {
   std::vector<int> nodes;              ///< nodes drawn (empty: all nodes when the recorder is created)
   std::vector<ViewerPlot> plots;       ///< plotted time histories
   std::string title;                   ///< page title
+  std::vector<ViewerBeamSection> sections;  ///< drawn beam sections (fiber sections: automatic)
+  std::vector<ViewerPad> pads;              ///< drawn bearing pads
+  std::vector<ViewerBlock> blocks;          ///< drawn blocks at nodes
+  std::vector<ViewerGap> gaps;              ///< joints whose gaps are printed
 };
 
 /// `recorder Viewer`: records the deformed shape, contact status, bearing damage and chosen time
@@ -38,8 +71,12 @@ struct ViewerOptions {
 /// data inlined) that opens from disk.
 ///
 /// Data block (JSON in `<script id="dabs-data">`, read by tcl/viewer/src/data.js): model
-/// (node tags and coordinates, elements with a kind: beam, bearing, contact, link, other), the
-/// frame times, and per series [q, offset]: values q * k_i, with integers k_i stored as zigzag
+/// (node tags and coordinates, elements with a kind: beam, bearing, contact, link, other, and a
+/// drawn shape: a beam's section outline in local (y, z) -- from -beamSection, else the convex hull
+/// of a fiber section's fibers scaled to the section's area -- or a bearing's pad size), blocks,
+/// gaps, the frame times, per contact its status, gap and normal force, per bearing its damage and
+/// shear strain, the ground acceleration of every UniformExcitation pattern (with its dof), and per
+/// series [q, offset]: values q * k_i, with integers k_i stored as zigzag
 /// LEB128 varints of k_i - k_{i-1} at byte `offset` of the base64 string "bytes". q is the peak
 /// |value| / kQuantizationLevels (1 for status and damage, which are integers), so every value is
 /// kept to half of q, i.e. 5 significant digits of the series' peak, in about 2 bytes.
@@ -77,6 +114,7 @@ class ViewerRecorder final : public Recorder {
     std::string kind;
     std::string type;
     std::vector<int> nodes;
+    std::vector<double> outline;  // beams: section outline, y z pairs; bearings: pad lx ly
   };
   ViewerOptions options_;
   std::string template_;
@@ -87,9 +125,12 @@ class ViewerRecorder final : public Recorder {
   std::vector<DrawnElement> elements_;
   std::vector<int> contacts_;  // nodeToSurface element tags
   std::vector<int> bearings_;  // yoshidaBearing element tags
-  // Recorded values, frame by frame: time; 3 translations per node; one status per contact; one
-  // damage per bearing; one value per plot.
-  std::vector<double> time_, disp_, status_, damage_, plotValues_;
+  std::vector<std::pair<int, int>> ground_;  // UniformExcitation pattern tag, dof (0-based)
+  // Recorded values, frame by frame: time; 3 translations per node; status, gap and normal force
+  // per contact; damage and shear strain per bearing; ground acceleration per pattern; one value
+  // per plot.
+  std::vector<double> time_, disp_, status_, gap_, force_, damage_, strain_, groundAccel_,
+      plotValues_;
   double nextTime_ = 0.0;
   std::size_t written_ = 0;  // frames in the file
   bool everWritten_ = false;

@@ -122,6 +122,16 @@ set recordFile [file normalize [file join [file dirname [info script]] .. data R
 # over the whole 20 s because the record has further cycles at 2-4 s and 7-8 s)
 set pulseTp 1.612; set pulseVp 1.179; set pulseGamma 1.923; set pulseNu 1.792; set pulseT0 5.762
 set duration 20.0           ;# s of analysis
+set ladderScales {1.0 1.25 1.5 1.75 2.0} ;# scales of the record run by the whole study (case all)
+set viewerDt 0.05           ;# s between the frames of the viewer pages
+
+# Serviceability of the expansion joints after the earthquake (report: one verdict per case).
+# The paper's own criterion is not published with numbers we can use, so these are ours: a
+# finger joint made for a 50 mm gap is taken to accommodate a movement of +- the gap, so the joint
+# stays passable when the peak opening and the residual longitudinal and transverse offsets stay
+# within the gap (beyond it the fingers disengage or jam).
+set serviceMaxOpening $jointGap   ;# m, largest longitudinal opening during the motion
+set serviceMaxResidual $jointGap  ;# m, largest residual longitudinal or transverse offset
 
 # Analysis defaults, chosen by tools/speed-study.tcl (results in tools/results/speed.md): the
 # fastest run within 1 % of the reference (dt 0.0005 s, tol 1e-6) on every reported quantity
@@ -146,6 +156,12 @@ set parameterNames [info globals]
 # 10000s + i, pounding 50000 + 100j, devices 60000 + 10j.
 
 proc pierX {p} { return [expr {($p - 1) * $::spanLength}] }
+# Bearing element tags, one per girder end, along the bridge: 1012 (PC1), 2011, 2012, ... (PC4).
+proc bearingTags {} {
+  set tags {}
+  for {set s 1} {$s <= $::nSpans} {incr s} { lappend tags [expr {1000 * $s + 12}] [expr {1000 * ($s + 1) + 11}] }
+  return $tags
+}
 # Mass moments of inertia about X, Y, Z of a solid block of mass m and sides {a b c} along X, Y, Z.
 proc blockInertia {m sides} {
   lassign $sides a b c
@@ -500,22 +516,40 @@ proc runCase {case scale dt integrator tol motion {csv ""} {perStep ""}} {
   # Quantities followed
   lassign $::girderEndNodes g1s g1e g2s g2e g3s g3e
   set joints [list [list $g1e $g2s] [list $g2e $g3s]]
-  set bearings {2011 2012 3011 3012}   ;# PC2 left/right, PC3 left/right
+  set bearings {2011 2012 3011 3012}   ;# PC2 left/right, PC3 left/right (the joints)
+  set allBearings [bearingTags]        ;# every girder end, PC1 ... PC4
   set mids [list [dict get $::girderMid 1] [dict get $::girderMid 2] [dict get $::girderMid 3]]
   set peak [dict create]
-  foreach key {gap1x gap1y gap2x gap2y force1 force2 rot1 rot2 rot3 deckx decky} { dict set peak $key 0.0 }
-  foreach bt $bearings { dict set peak strain$bt 0.0; dict set peak bx$bt 0.0; dict set peak by$bt 0.0 }
+  foreach key {gap1x gap1y gap1z gap2x gap2y gap2z open1 open2 close1 close2 force1 force2 rot1 rot2 rot3 deckx decky g1x g2x g3x} { dict set peak $key 0.0 }
+  foreach bt $allBearings { dict set peak strain$bt 0.0; dict set peak bx$bt 0.0; dict set peak by$bt 0.0 }
   set impacts {0 0}
   set closed {0 0}
   set fh ""
   if {$csv ne ""} {
-    # The animated page of this case: deformed bridge, bearings by damage, closed contacts.
-    recorder Viewer -file "[file rootname $csv].html" -dT 0.05 -title "Three-span bridge: $case" \
+    # The animated page of this case: the bridge with its members' real sizes, bearings coloured
+    # by shear strain, contact faces lit while closed, the joint gaps and the ground motion.
+    set pads {}
+    foreach bt $allBearings { lappend pads $bt }
+    set caps {}; set footings {}; set elasticPier {}
+    for {set p 1} {$p <= $::nSpans + 1} {incr p} {
+      lappend caps [expr {1000 * $p + 5}]; lappend footings [expr {1000 * $p + 2}]
+      lappend elasticPier [expr {1000 * $p + 3}] [expr {1000 * $p + 4}]
+    }
+    set padSide [expr {sqrt($::bearingArea)}]
+    recorder Viewer -file "[file rootname $csv].html" -dT $::viewerDt -title "Three-span bridge: $case" \
       -plots [list [list "girder G2 left end, longitudinal (m)" node $g2s 1 disp] \
                    [list "PC3 bearing of G2, shear strain" ele 3011 shearStrain 1] \
-                   [list "PC2 bearing of G2, shear strain" ele 2012 shearStrain 1]]
+                   [list "PC2 bearing of G2, shear strain" ele 2012 shearStrain 1]] \
+      -beamSection [list [list rect $::girderWidth $::girderDepth {*}$::girderEles] \
+                         [list circle $::pierD {*}$elasticPier]] \
+      -bearingPad [list [list $padSide $padSide {*}$pads]] \
+      -block [list [list {*}$::capSize -dz [expr {-0.5 * [lindex $::capSize 2]}] {*}$caps] \
+                   [list {*}$::footingSize -dz [expr {-0.5 * [lindex $::footingSize 2]}] {*}$footings]] \
+      -gaps [list [list Gap1 $g1e $g2s] [list Gap2 $g2e $g3s]]
     set fh [open $csv w]
-    puts $fh "t,gap1x,gap1y,gap2x,gap2y,strain2011,strain2012,strain3011,strain3012,bx2012,by2012,bx3011,by3011,force1,force2,rot1,rot2,rot3,deck2x,deck2y"
+    # columns 1-20 as before; 21-23 longitudinal displacement of the girders' mid-span nodes (to
+    # the ground), 24-25 vertical offset at the joints, 26-27 strains of the end bearings
+    puts $fh "t,gap1x,gap1y,gap2x,gap2y,strain2011,strain2012,strain3011,strain3012,bx2012,by2012,bx3011,by3011,force1,force2,rot1,rot2,rot3,deck2x,deck2y,g1x,g2x,g3x,gap1z,gap2z,strain1012,strain[lindex $allBearings end]"
   }
   set nSteps [expr {int(round($duration / $dt))}]
   set failed 0
@@ -557,14 +591,25 @@ proc runCase {case scale dt integrator tol motion {csv ""} {perStep ""}} {
         set gy [expr {[nodeDisp $b 2] - [nodeDisp $a 2]}]
         lappend row $gx $gy
         if {abs($gx) > abs([dict get $peak gap${j}x])} { dict set peak gap${j}x $gx }
+        if {$gx > [dict get $peak open$j]} { dict set peak open$j $gx }    ;# largest opening
+        if {$gx < [dict get $peak close$j]} { dict set peak close$j $gx }  ;# largest closing (< 0)
         if {abs($gy) > abs([dict get $peak gap${j}y])} { dict set peak gap${j}y $gy }
         dict set last gap${j}x $gx
         dict set last gap${j}y $gy
       }
       set disps {}
-      foreach bt $bearings {
+      set gz {}
+      foreach pair $joints j {1 2} {
+        lassign $pair a b
+        set z [expr {[nodeDisp $b 3] - [nodeDisp $a 3]}]
+        lappend gz $z
+        if {abs($z) > abs([dict get $peak gap${j}z])} { dict set peak gap${j}z $z }
+        dict set last gap${j}z $z
+      }
+      set endStrains {}
+      foreach bt $allBearings {
         set e [eleResponse $bt shearStrain]
-        lappend row $e
+        if {$bt in $bearings} { lappend row $e } else { lappend endStrains $e }
         if {$e > [dict get $peak strain$bt]} { dict set peak strain$bt $e }
         lassign [eleResponse $bt deformation] d0 d1 d2
         if {abs($d1) > abs([dict get $peak bx$bt])} { dict set peak bx$bt $d1 }
@@ -595,6 +640,14 @@ proc runCase {case scale dt integrator tol motion {csv ""} {perStep ""}} {
       }
       set dx [nodeDisp [lindex $mids 1] 1]; set dy [nodeDisp [lindex $mids 1] 2]
       lappend row $dx $dy
+      set s 0
+      foreach m $mids {
+        incr s
+        set x [nodeDisp $m 1]
+        lappend row $x
+        if {abs($x) > abs([dict get $peak g${s}x])} { dict set peak g${s}x $x }
+      }
+      lappend row {*}$gz {*}$endStrains
       if {abs($dx) > abs([dict get $peak deckx])} { dict set peak deckx $dx }
       if {abs($dy) > abs([dict get $peak decky])} { dict set peak decky $dy }
       if {$fh ne "" && $tEnd - [getTime] <= 1e-9 * $dt} { puts $fh [join $row ,] }
@@ -604,7 +657,7 @@ proc runCase {case scale dt integrator tol motion {csv ""} {perStep ""}} {
   set wall2 [clock microseconds]
   if {$fh ne ""} { close $fh }
   set damage {}
-  foreach bt $bearings { dict set peak damage$bt [eleResponse $bt damage] }
+  foreach bt $allBearings { dict set peak damage$bt [eleResponse $bt damage] }
   set stats [analysisStatistics]
   set dofs [expr {6 * [llength [getNodeTags]]}]
   return [dict create case $case scale $scale dt $dt integrator $integrator tol $tol motion $used \
@@ -628,16 +681,41 @@ set motion     [expr {$argc > 5 ? [lindex $argv 5] : "auto"}]
 set outDir     [expr {$argc > 6 ? [lindex $argv 6] : "bridge-out"}]
 file mkdir $outDir
 set cases [expr {$case eq "all" ? {nopound pound countermeasure} : [list $case]}]
+# Runs one case and prints its statistics; csv "" writes no histories and no page.
+proc runAndPrint {c scale dt integrator tol motion csv} {
+  set r [runCase $c $scale $dt $integrator $tol $motion $csv]
+  set st [dict get $r stats]
+  puts [format "%-15s %-6s x%-4s wall %.2f s, %d equations, %d steps (%d in contact sub-steps), %d failed, %d sub-stepped, %d iterations, %d factorizations" \
+      $c [lindex [dict get $r motion] 0] $scale [dict get $r wall] [dict get $st equations] [dict get $st steps] [dict get $r contactSubsteps] \
+      [dict get $st failedSteps] [dict get $st subSteppedSteps] [dict get $st iterations] [dict get $st factorizations]]
+  return $r
+}
 set results {}
 foreach c $cases {
-  set r [runCase $c $scale $dt $integrator $tol $motion [file join $outDir $c.csv]]
-  lappend results $r
-  set st [dict get $r stats]
-  puts [format "%-15s wall %.2f s, %d equations, %d steps (%d in contact sub-steps), %d failed, %d sub-stepped, %d iterations, %d factorizations" \
-      $c [dict get $r wall] [dict get $st equations] [dict get $st steps] [dict get $r contactSubsteps] \
-      [dict get $st failedSteps] [dict get $st subSteppedSteps] [dict get $st iterations] [dict get $st factorizations]]
-  puts "  peaks: [dict get $r peak]"
+  lappend results [runAndPrint $c $scale $dt $integrator $tol $motion [file join $outDir $c.csv]]
 }
+# The whole study (case all with the default motion): the three cases under the other motion too
+# (the built-in pulse when the record is used, and the other way round when the record is there),
+# and a ladder of scales of the record for the no-pounding and pounding cases, which shows at
+# which shaking bearings fail and whether pounding then reduces the displacement.
+set other {}
+set ladder {}
+if {$case eq "all" && $motion eq "auto"} {
+  set primary [expr {[file exists $recordFile] ? "record" : "pulse"}]
+  set second [expr {$primary eq "record" ? "pulse" : ""}]
+  if {$second ne ""} {
+    foreach c $cases {
+      lappend other [runAndPrint $c $scale $dt $integrator $tol $second [file join $outDir $second-$c.csv]]
+    }
+  }
+  foreach s $ladderScales {
+    foreach c {nopound pound} {
+      set r [expr {$s == $scale ? [lindex $results [lsearch $cases $c]] : [runAndPrint $c $s $dt $integrator $tol $primary ""]}]
+      lappend ladder [dict create scale $s case $c peak [dict get $r peak] completed [dict get $r completed]]
+    }
+  }
+}
+source [file join [file dirname [info script]] tools findings.tcl]
 source [file join [file dirname [info script]] tools report.tcl]
-writeReport $results $outDir
+writeReport $results $outDir $other $ladder
 puts "report: [file join $outDir report.md]"

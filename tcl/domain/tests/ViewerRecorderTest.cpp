@@ -21,6 +21,8 @@
 #include "materials/Elastic.h"
 #include "materials/InputError.h"
 #include "tcl/domain/Domain.h"
+#include "tcl/domain/LinearSeries.h"
+#include "tcl/domain/LoadPattern.h"
 #include "tcl/domain/NodeRecorder.h"
 #include "tcl/viewer/ViewerPageTemplate.h"
 
@@ -340,6 +342,64 @@ TEST(ViewerRecorderTest, PlotsHoldNodeAndElementResponses) {
     // Small-displacement truss along x: N = EA/L (u2x - u1x).
     EXPECT_NEAR(n[f], kEA_L * (imposed(2, 0, t) - imposed(1, 0, t)), kHalfLevel * qn + 1e-6 * std::abs(n[f]));
   }
+}
+
+// The drawing data: beam sections, blocks and gaps as given; the ground acceleration of a
+// UniformExcitation pattern defined after the recorder, at every frame: fact * t for a Linear series.
+TEST(ViewerRecorderTest, DrawingDataAndGroundAcceleration) {
+  const std::string page = tempPath("drawing.html");
+  constexpr double kFact = 2.5;
+  {
+    Domain domain;
+    buildModel(domain);
+    ViewerOptions options;
+    options.file = page;
+    ViewerBeamSection rect;
+    rect.width = 4.0;
+    rect.depth = 1.5;
+    rect.elements = {7};
+    options.sections = {rect};
+    ViewerBlock block;
+    block.lx = 1.0; block.ly = 2.0; block.lz = 3.0; block.dz = -1.5;
+    block.nodes = {1, 3};
+    options.blocks = {block};
+    options.gaps = {{"Gap1", 1, 2}};
+    domain.addRecorder(std::make_unique<ViewerRecorder>(options, kTemplate));
+    domain.addPattern(std::make_unique<UniformExcitation>(5, 1, std::make_shared<LinearSeries>(1, 1.0), kFact, 0.0));
+    for (int k = 1; k <= kSteps; ++k) step(domain, k);
+    domain.flushRecorders();
+  }
+  const PageData d = readPage(page);
+  const Json& outline = d.json["elements"][0][4];
+  ASSERT_EQ(outline.size(), 8u);
+  // corners (-w/2, -d/2), (w/2, -d/2), (w/2, d/2), (-w/2, d/2)
+  const double want[8] = {-2.0, -0.75, 2.0, -0.75, 2.0, 0.75, -2.0, 0.75};
+  for (std::size_t i = 0; i < 8; ++i) EXPECT_DOUBLE_EQ(outline[i].num(), want[i]);
+  ASSERT_EQ(d.json["blocks"].size(), 2u);
+  EXPECT_EQ(d.json["blocks"][1][0].num(), 3.0);
+  EXPECT_EQ(d.json["blocks"][1][4].num(), -1.5);
+  EXPECT_EQ(d.json["gaps"][0][0].str(), "Gap1");
+  EXPECT_EQ(d.json["gaps"][0][2].num(), 2.0);
+  ASSERT_EQ(d.json["ground"].size(), 1u);
+  EXPECT_EQ(d.json["ground"][0][0].num(), 1.0);  // dof 2 (Y), 0-based
+  const auto a = d.series(d.json["ground"][0][1]);
+  const double q = d.q(d.json["ground"][0][1]);
+  for (int k = 1; k <= kSteps; ++k) EXPECT_NEAR(a[static_cast<std::size_t>(k - 1)], kFact * kDt * k, kHalfLevel * q);
+}
+
+TEST(ViewerRecorderTest, RejectsShapesOnTheWrongElements) {
+  Domain domain;
+  buildModel(domain);
+  ViewerOptions options;
+  options.file = tempPath("wrong.html");
+  ViewerPad pad;
+  pad.lx = pad.ly = 1.0;
+  pad.elements = {7};  // a truss, not a bearing
+  options.pads = {pad};
+  EXPECT_THROW(domain.addRecorder(std::make_unique<ViewerRecorder>(options, kTemplate)), InputError);
+  options.pads.clear();
+  options.gaps = {{"G", 1, 99}};
+  EXPECT_THROW(domain.addRecorder(std::make_unique<ViewerRecorder>(options, kTemplate)), InputError);
 }
 
 TEST(ViewerRecorderTest, DeltaTRecordsTheSameFramesAsTheNodeRecorder) {

@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: MIT
 // Reads the data block written by the Viewer recorder (tcl/domain/ViewerRecorder.cpp).
 //
-// Every time series (node displacement component, contact status, bearing damage, plotted
-// quantity) is stored as [q, offset]: its values are q * k_i, where the integers k_i were
+// Every time series (node displacement component, contact status, gap and normal force, bearing
+// damage and shear strain, ground acceleration, plotted quantity) is stored as [q, offset]: its values are q * k_i, where the integers k_i were
 // written as zigzag LEB128 varints of the differences k_i - k_{i-1} (k_{-1} = 0), starting at
 // byte `offset` of the base64 string `bytes`. One series holds `frames` values.
 
@@ -53,10 +53,16 @@ export function readData(text) {
     nodes: d.nodes,
     nodeIndex,
     coords: d.coords,
-    elements: d.elements.map(([tag, kind, type, nodes]) => ({ tag, kind, type, nodes })),
+    // shape: a beam's section outline [y0, z0, y1, z1, ..] in local axes, or a bearing's pad
+    // [lx, ly]; empty when none was given
+    elements: d.elements.map(([tag, kind, type, nodes, shape]) => ({ tag, kind, type, nodes, shape: shape || [] })),
     disp,
-    contacts: d.contacts.map(([tag, series]) => ({ tag, status: s(series) })),
-    bearings: d.bearings.map(([tag, series]) => ({ tag, damage: s(series) })),
+    blocks: (d.blocks || []).map(([node, lx, ly, lz, dz]) => ({ node, size: [lx, ly, lz], dz: dz || 0 })),
+    gaps: (d.gaps || []).map(([label, a, b]) => ({ label, a, b })),
+    contacts: d.contacts.map(([tag, status, gap, force]) => ({
+      tag, status: s(status), gap: gap ? s(gap) : null, force: force ? s(force) : null })),
+    bearings: d.bearings.map(([tag, damage, strain]) => ({ tag, damage: s(damage), strain: strain ? s(strain) : null })),
+    ground: (d.ground || []).map(([dof, series]) => ({ dof, accel: s(series) })),
     plots: d.plots.map((p) => ({ label: p.label, source: p.source, values: s(p.values) })),
   };
 }

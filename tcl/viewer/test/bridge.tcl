@@ -4,8 +4,9 @@
 # Units kN, m, t, s. Two piers (elasticBeamColumn, 8 m) carry a 20 m girder (two elasticBeamColumn)
 # on two yoshidaBearing elements; the girder end at x = 20 m pounds against a fixed abutment face
 # 0.05 m away (nodeToSurface). A 1 Hz sine of 3 m/s^2 along x shakes the bridge for 3 s.
-# Writes outDir/bridge.html (recorder Viewer) and, to check the page against, outDir/disp.out
-# (Node recorder: time, then x y z of every node) and outDir/gap.out (Element recorder: contact gap).
+# Writes outDir/bridge.html (recorder Viewer: members with sizes, pads, cap blocks, a joint gap)
+# and, to check the page against, outDir/disp.out (Node recorder: time, then x y z of every node),
+# and Element recorder files of the contact's gap and force and bearing 21's strain and damage.
 set out [lindex $argv 0]
 file mkdir $out
 
@@ -20,7 +21,12 @@ fix 11 1 1 1 1 1 1
 geomTransf Linear 1 0.0 1.0 0.0
 geomTransf Linear 2 0.0 0.0 1.0
 element elasticBeamColumn 1 1 2 3.0 3.0e7 1.25e7 1.0 0.7 0.7 1
-element elasticBeamColumn 2 11 12 3.0 3.0e7 1.25e7 1.0 0.7 0.7 1
+# the second pier: a force-based element with a fiber section (circle D = 1.2 m, E chosen so that EI
+# is the first pier's 3.0e7 x 0.7), which the page draws as a solid of its fibers' outline
+uniaxialMaterial Elastic 1 [expr {3.0e7 * 0.7 / (acos(-1.0) * pow(0.6, 4) / 4.0)}]
+section Fiber 1 -GJ 1.25e7 { patch circ 1 16 4 0.0 0.0 0.0 0.6 0.0 360.0 }
+beamIntegration Lobatto 1 1 3
+element forceBeamColumn 2 11 12 1 1
 # girder nodes 3, 4, 13 with 100 t each
 node 3 0.0 0.0 8.0 -mass 100.0 100.0 100.0 0.0 0.0 0.0
 node 4 10.0 0.0 8.0 -mass 100.0 100.0 100.0 0.0 0.0 0.0
@@ -44,11 +50,15 @@ element nodeToSurface 51 13 41 42 43 44 -K 1.0e6
 set nodes {1 2 3 4 11 12 13 41 42 43 44}
 recorder Node -file [file join $out disp.out] -time -precision 12 -node {*}$nodes -dof 1 2 3 disp
 recorder Element -file [file join $out gap.out] -time -precision 12 -ele 51 gap
+recorder Element -file [file join $out force.out] -time -precision 12 -ele 51 contactForce
+recorder Element -file [file join $out strain.out] -time -precision 12 -ele 21 shearStrain
+recorder Element -file [file join $out damage.out] -time -precision 12 -ele 21 damage
 recorder Viewer -file [file join $out bridge.html] -title "viewer test bridge" -plots {
   {"girder end x" node 13 1 disp}
   {"contact gap" ele 51 gap 1}
   {"bearing 21 shear strain" ele 21 shearStrain 1}
-}
+} -beamSection {{rect 4.0 1.5 31 32} {circle 1.2 1}} -bearingPad {{0.8 0.8 21 22}} \
+  -block {{1.5 4.0 1.0 -dz -0.5 2 12}} -gaps {{"Joint" 13 41}}
 
 timeSeries Trig 1 0.0 3.0 1.0 -factor 3.0
 pattern UniformExcitation 1 1 -accel 1

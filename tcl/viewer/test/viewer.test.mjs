@@ -1,13 +1,20 @@
 // SPDX-License-Identifier: MIT
-// Browser test of the Viewer page (issue 7): a small analysis (bridge.tcl, run by dabs) writes the
-// page plus Node and Element recorder files; headless Chromium (Debian's), driven by
-// playwright-core, opens the page from disk and checks that
-//   - the canvas draws the model (pixels other than the background),
-//   - moving the slider moves every drawn node to coordinates + magnification x the displacement in
-//     the Node recorder's file, and a node marker is drawn at the projected recorded position,
-//   - contacts are highlighted exactly while the Element recorder's gap is closed,
-//   - the plots hold the recorded values (Node and Element recorder files) and draw them,
-// and saves a screenshot (DABS_VIEWER_OUT/viewer.png).
+// Browser test of the Viewer page: a small analysis (bridge.tcl, run by dabs) writes the page plus
+// Node and Element recorder files; headless Chromium (Debian's), driven by playwright-core, opens
+// the page from disk and checks that
+//   - the canvas draws the model (pixels other than the background), members as solids,
+//   - node markers are off by default; shown, they sit at coordinates + magnification x the
+//     displacement in the Node recorder's file, for every node, as the slider moves,
+//   - a contact face changes colour exactly when the Element recorder's gap closes (the colour is
+//     also read from the canvas pixels),
+//   - a bearing's colour follows its recorded shear strain on the strain scale, and the failed mark
+//     its recorded damage,
+//   - the gap printed at the joint is the recorded relative displacement, the ground acceleration
+//     the closed form of the test's Trig series,
+//   - the plan and elevation views look along Z and Y,
+//   - the plots hold the recorded values, draw them, and every plot's time cursor follows the slider,
+//   - the screenshots (screenshot.mjs) are taken at the frame of the largest recorded contact force,
+// and saves screenshots in DABS_VIEWER_OUT.
 // Environment: DABS_EXE (the dabs program), DABS_VIEWER_MODULES (node_modules with
 // playwright-core), DABS_VIEWER_OUT (output folder). Run by ctest as `node --test`.
 import { test, before, after } from 'node:test';
@@ -18,6 +25,8 @@ import fs from 'node:fs';
 import os from 'node:os';
 import path from 'node:path';
 import { fileURLToPath } from 'node:url';
+import { strainColor } from '../src/colors.js';
+import { screenshots } from './screenshot.mjs';
 
 const here = path.dirname(fileURLToPath(import.meta.url));
 const out = process.env.DABS_VIEWER_OUT || fs.mkdtempSync(path.join(os.tmpdir(), 'dabs-viewer-'));
@@ -40,6 +49,9 @@ let context;
 let page;
 let disp;   // rows: time, then x y z per node of `nodes`
 let gap;    // rows: time, gap
+let force;  // rows: time, N, t1, t2 of the contact
+let strain; // rows: time, shear strain of bearing 21
+let damage; // rows: time, damage of bearing 21
 const nodes = [1, 2, 3, 4, 11, 12, 13, 41, 42, 43, 44];
 
 // The analysis runs first; until `recorder` dispatches the Viewer type (tcl/commands/
@@ -59,6 +71,9 @@ before(async () => {
   if (skip) return;
   disp = readRows(path.join(out, 'disp.out'));
   gap = readRows(path.join(out, 'gap.out'));
+  force = readRows(path.join(out, 'force.out'));
+  strain = readRows(path.join(out, 'strain.out'));
+  damage = readRows(path.join(out, 'damage.out'));
   const profile = fs.mkdtempSync(path.join(os.tmpdir(), 'dabs-viewer-chromium-'));
   context = await chromium.launchPersistentContext(profile, {
     executablePath: '/usr/bin/chromium',
@@ -136,7 +151,29 @@ test('the canvas draws the model', { skip }, async () => {
   assert.ok(s.count > 2000, `only ${s.count} non-background pixels of ${s.total}`);
 });
 
+test('node markers are off by default', { skip }, async () => {
+  assert.equal(await page.evaluate(() => window.dabsViewer.nodesShown()), false);
+  assert.equal(await page.evaluate(() => document.getElementById('nodes').checked), false);
+});
+
+test('members are drawn as solids of their sections', { skip }, async () => {
+  // -beamSection gives the two girder elements and pier 1 a section, pier 2 has a fiber section
+  assert.equal(await page.evaluate(() => window.dabsViewer.memberCount()), 4);
+  // the fiber outline: the hull of the fibers scaled to the section's area, pi 0.6^2
+  const o = await page.evaluate(() => window.dabsViewer.memberOutline(2));
+  let area = 0;
+  let rMax = 0;
+  for (let k = 0; k < o.length; k += 2) {
+    const j = (k + 2) % o.length;
+    area += 0.5 * (o[k] * o[j + 1] - o[j] * o[k + 1]);
+    rMax = Math.max(rMax, Math.hypot(o[k], o[k + 1]));
+  }
+  assert.ok(Math.abs(area - Math.PI * 0.36) <= 1e-4 * Math.PI * 0.36, `outline area ${area}`);
+  assert.ok(Math.abs(rMax - 0.6) <= 0.05 * 0.6, `outline radius ${rMax}`);
+});
+
 test('moving the slider moves the drawn nodes to the recorded positions', { skip }, async () => {
+  await page.evaluate(() => window.dabsViewer.showNodes(true));
   const mag = await page.evaluate(() => window.dabsViewer.magnification());
   assert.ok(mag > 0);
   // Frame where the girder end (node 13, column of x) moves most, and two others.
@@ -173,24 +210,105 @@ test('moving the slider moves the drawn nodes to the recorded positions', { skip
   assert.ok(moved > 5, `node 13 moved only ${moved} px on the screen`);
   await moveSlider(fMax);
   await page.screenshot({ path: path.join(out, 'viewer.png') });
+  await page.evaluate(() => window.dabsViewer.showNodes(false));
 });
 
-test('contacts are highlighted while the recorded gap is closed', { skip }, async () => {
+const rgb = (h) => [1, 3, 5].map((i) => parseInt(h.slice(i, i + 2), 16));
+
+test('a contact face changes colour when the recorded contact closes', { skip }, async () => {
+  const [openColor, closedColor] = await page.evaluate(() => [window.dabsViewer.contactOpenColor, window.dabsViewer.contactClosedColor]);
+  assert.notEqual(openColor, closedColor);
   let closedFrames = 0;
+  let openFrames = 0;
+  let changes = 0;
+  let previous = null;
   for (let f = 0; f < gap.length; ++f) {
     const g = gap[f][1];
     if (Math.abs(g) < 1e-9) continue;  // touching: either state
     await moveSlider(f);
-    const shown = await page.evaluate(() => window.dabsViewer.contactClosed(51));
-    assert.equal(shown, g < 0, `frame ${f}: gap ${g}, highlighted ${shown}`);
-    if (g < 0) ++closedFrames;
+    const color = await page.evaluate(() => window.dabsViewer.contactFaceColor(51));
+    assert.equal(color, g < 0 ? closedColor : openColor, `frame ${f}: gap ${g}, face colour ${color}`);
+    if (previous !== null && previous !== color) ++changes;
+    previous = color;
+    if (g < 0) ++closedFrames; else ++openFrames;
   }
-  assert.ok(closedFrames > 0, 'the test analysis closes the contact');
+  assert.ok(closedFrames > 0 && openFrames > 0 && changes >= 2, 'the test analysis closes and opens the contact');
+  // what is on the screen: the face's pixels in the 3D view, open and closed
+  const fClosed = gap.findIndex((r) => r[1] < -1e-3);
+  const fOpen = gap.findIndex((r) => r[1] > 1e-3);
+  for (const [f, want] of [[fClosed, closedColor], [fOpen, openColor]]) {
+    await moveSlider(f);
+    const c = await page.evaluate(() => window.dabsViewer.project(window.dabsViewer.contactFaceCenter(51)));
+    const s = await canvasStats('#scene canvas', [c]);
+    const target = rgb(want);
+    const hit = s.near[0].some((px) => px.every((v, k) => Math.abs(v - target[k]) <= 60));
+    assert.ok(hit, `frame ${f}: the face is not drawn in ${want} at its centre (pixels ${JSON.stringify(s.near[0].slice(0, 3))})`);
+  }
+});
+
+test("a bearing's colour follows its recorded shear strain", { skip }, async () => {
+  assert.equal(strain.length, gap.length);
+  const peakStrain = peakOf(strain.map((r) => r[1]));
+  const q = peakStrain / kLevels;
+  const seen = new Set();
+  for (let f = 0; f < strain.length; f += 7) {
+    await moveSlider(f);
+    const color = await page.evaluate(() => window.dabsViewer.bearingColor(21));
+    // the strain drawn is the recorded one to half a quantization level: the colour lies between
+    // the scale's colours at the two ends of that interval
+    const s = Math.abs(strain[f][1]);
+    const lo = rgb(strainColor(Math.max(s - q, 0)));
+    const hi = rgb(strainColor(s + q));
+    const got = rgb(color);
+    got.forEach((v, k) => assert.ok(v >= Math.min(lo[k], hi[k]) - 1 && v <= Math.max(lo[k], hi[k]) + 1,
+      `frame ${f}: strain ${s}, colour ${color}, scale ${strainColor(s)}`));
+    seen.add(color);
+    const failed = await page.evaluate(() => window.dabsViewer.bearingFailedMark(21));
+    assert.equal(failed, damage[f][1] >= 2, `frame ${f}: damage ${damage[f][1]}, failed mark ${failed}`);
+  }
+  assert.ok(seen.size > 5, `only ${seen.size} colours over the strain history`);
+  assert.ok(peakStrain > 3.0, 'the test bearing passes 300 %');
+});
+
+test('the joint gap and the ground acceleration are printed', { skip }, async () => {
+  const f = 150;
+  await moveSlider(f);
+  const [text] = await page.evaluate(() => window.dabsViewer.gapTexts());
+  const dx = disp[f][1 + 3 * nodes.indexOf(41)] - disp[f][1 + 3 * nodes.indexOf(13)];
+  const m = /Joint: ([-+0-9.]+) m long\./.exec(text);
+  assert.ok(m, text);
+  assert.ok(Math.abs(Number(m[1]) - dx) <= 0.0006, `${text} vs recorded ${dx}`);
+  assert.match(text, gap[f][1] > 0 ? /clear gap/ : /in contact/);
+  // timeSeries Trig 1 0.0 3.0 1.0 -factor 3.0 along X: a_g = 3 sin(2 pi t)
+  for (const k of [37, 150, 222]) {
+    const a = await page.evaluate((i) => window.dabsViewer.groundAcceleration(i), k);
+    const t = disp[k][0];
+    assert.ok(Math.abs(a[0] - 3 * Math.sin(2 * Math.PI * t)) <= 3e-5 * 3 + 1e-9, `frame ${k}: ${a[0]}`);
+    assert.equal(a[1], 0);
+  }
+  assert.match(await page.evaluate(() => window.dabsViewer.groundText()), /ground acceleration .* m\/s²/);
+});
+
+test('plan and elevation look along Z and along Y', { skip }, async () => {
+  await moveSlider(0);
+  for (const [view, same] of [['plan', 2], ['elevation', 1]]) {
+    await page.evaluate((v) => window.dabsViewer.setView(v), view);
+    // two points that differ only along the viewing axis fall on the same pixel
+    const p = [10, 0, 8];
+    const q = p.slice();
+    q[same] += 5;
+    const [a, b] = await page.evaluate(([x, y]) => [window.dabsViewer.project(x), window.dabsViewer.project(y)], [p, q]);
+    const r = [15, 0, 8];  // and a point 5 m along X does not
+    const c = await page.evaluate((x) => window.dabsViewer.project(x), r);
+    assert.ok(Math.hypot(a.x - b.x, a.y - b.y) < 0.5 * Math.hypot(a.x - c.x, a.y - c.y), `${view}: ${JSON.stringify([a, b, c])}`);
+  }
+  await page.evaluate(() => window.dabsViewer.setView('3d'));
 });
 
 test('the plots show the recorded values', { skip }, async () => {
   const plots = await page.evaluate(() => window.dabsViewer.plots());
-  assert.deepEqual(plots.map((p) => p.label), ['girder end x', 'contact gap', 'bearing 21 shear strain']);
+  assert.deepEqual(plots.map((p) => p.label), ['girder end x', 'contact gap', 'bearing 21 shear strain',
+    'ground acceleration along the motion (m/s²)']);
   const recorded = [disp.map((r) => r[1 + 3 * nodes.indexOf(13)]), gap.map((r) => r[1])];
   for (let k = 0; k < 2; ++k) {
     const tol = 0.5 * peakOf(recorded[k]) / kLevels * (1 + 1e-9);
@@ -205,9 +323,46 @@ test('the plots show the recorded values', { skip }, async () => {
   const shown = Number(/= (\S+)/.exec(heads[1])[1]);
   assert.ok(Math.abs(shown - gap[f][1]) <= 1e-4 * peakOf(recorded[1]), `heading ${heads[1]} vs ${gap[f][1]}`);
   const n = await page.evaluate(() => document.querySelectorAll('.plot canvas').length);
-  assert.equal(n, 3);
-  for (let k = 1; k <= 3; ++k) {
+  assert.equal(n, 4, 'three plots and the ground acceleration');
+  for (let k = 1; k <= n; ++k) {
     const s = await canvasStats(`.plot:nth-of-type(${k}) canvas`);
     assert.ok(s.count > 500, `plot ${k} draws only ${s.count} pixels`);
   }
+});
+
+test("every plot's time cursor follows the slider", { skip }, async () => {
+  const red = [0xd6, 0x27, 0x28];
+  for (const f of [40, 250]) {
+    await moveSlider(f);
+    const n = await page.evaluate(() => document.querySelectorAll('.plot').length);
+    for (let k = 0; k < n; ++k) {
+      // the cursor's canvas column at the time of the frame, halfway up the plotting area
+      const px = await page.evaluate(([i, t]) => {
+        const el = document.querySelectorAll('.plot')[i];
+        const c = el.querySelector('canvas');
+        const u = window.dabsViewer.plotAt(i);
+        const x = Math.round(u.valToPos(t, 'x', true));
+        const y = Math.round(u.bbox.top + 0.5 * u.bbox.height);
+        const copy = document.createElement('canvas');
+        copy.width = c.width; copy.height = c.height;
+        const g = copy.getContext('2d');
+        g.drawImage(c, 0, 0);
+        const row = [];
+        for (let dx = -1; dx <= 1; ++dx) row.push(Array.from(g.getImageData(x + dx, y, 1, 1).data.slice(0, 3)));
+        return row;
+      }, [k, disp[f][0]]);
+      const hit = px.some((p) => p.every((v, c) => Math.abs(v - red[c]) <= 40));
+      assert.ok(hit, `frame ${f}, plot ${k}: no cursor at the frame's time (${JSON.stringify(px)})`);
+    }
+  }
+});
+
+test('screenshots are taken at the largest recorded contact force', { skip }, async () => {
+  let fMax = 0;
+  force.forEach((r, f) => { if (r[1] > force[fMax][1]) fMax = f; });
+  const r = await screenshots(page, out, 'viewer-contact');
+  assert.equal(r.frame, fMax);
+  assert.ok(Math.abs(r.force - force[fMax][1]) <= 1e-4 * force[fMax][1], `${r.force} vs ${force[fMax][1]}`);
+  assert.equal(r.files.length, 4);
+  for (const file of r.files) assert.ok(fs.statSync(file).size > 10000, file);
 });

@@ -1,7 +1,12 @@
 # SPDX-License-Identifier: MIT
-# Report of the bridge case study (issue 6): report.md with one table comparing the cases and PNG
-# plots made by gnuplot from the CSV histories written by runCase (bridge.tcl). Sourced by
-# bridge.tcl; `writeReport results outDir` with results a list of runCase dicts.
+# Report of the bridge case study: report.md with the findings against the paper (findings.tcl),
+# the serviceability verdicts, a table comparing the cases, the scale ladder, PNG figures made by
+# gnuplot from the CSV histories written by runCase (bridge.tcl), and screenshots of the pound
+# case's viewer page. Sourced by bridge.tcl; `writeReport results outDir ?other? ?ladder?` with
+# results and other lists of runCase dicts (main and second motion) and ladder a list of
+# {scale case peak completed} dicts.
+
+set reportToolsDir [file dirname [file normalize [info script]]]
 
 proc fmt {x {digits 3}} { return [format "%.${digits}f" $x] }
 
@@ -12,12 +17,25 @@ proc damageWord {strain} {
   return "sound"
 }
 
-proc writeReport {results outDir} {
+proc writeReport {results outDir {other {}} {ladder {}}} {
   set names {}
   foreach r $results { lappend names [dict get $r case] }
   set r0 [lindex $results 0]
   set md [open [file join $outDir report.md] w]
   puts $md "# Three-span isolated bridge under a near-fault motion\n"
+  # The findings first: what a reader takes from the study.
+  if {$names eq {nopound pound countermeasure}} {
+    set motions [list $results]
+    if {[llength $other] == 3} { lappend motions $other }
+    puts $md "## The paper's findings and this model\n"
+    puts $md "Zhu, Abe and Fujino (2004), three-span isolated bridge under the Takatori record, against"
+    puts $md "this model under [join [lmap m $motions {findings::motionName $m}] { and }] (\"record\": [dict get $r0 motion];"
+    puts $md "\"pulse\": the fitted near-fault pulse). Displacements are magnitudes of peaks over both joints or"
+    puts $md "all bearings.\n"
+    puts $md [findings::markdown $motions $ladder [list $::serviceMaxOpening $::serviceMaxResidual]]
+    if {[llength $ladder] > 0} { puts $md [ladderTable $ladder] }
+    puts $md "## The runs\n"
+  }
   puts $md "Motion: [dict get $r0 motion], scaled by [dict get $r0 scale], at $::motionAngle degrees to the"
   puts $md "bridge axis; $::duration s analysed, integrator [dict get $r0 integrator],"
   puts $md "dt = [dict get $r0 dt] s (at most $::contactDt s while a joint is closed or closing), NormDispIncr"
@@ -26,14 +44,50 @@ proc writeReport {results outDir} {
   puts $md "$::bearingArea m^2 x $::bearingTr m rubber per girder end). Gap = right girder end minus left girder end"
   puts $md "(longitudinal: + opening, - closing); bearing displacement = top minus bottom.\n"
 
+  runsTable $md $results
+  if {[llength $other] > 0} {
+    puts $md "\nThe same under [dict get [lindex $other 0] motion], scaled by [dict get [lindex $other 0] scale]:\n"
+    runsTable $md $other
+  }
+
+  # One animated page per case, written by `recorder Viewer` (open them in a browser).
+  set pages {}
+  foreach n $names { if {[file exists [file join $outDir $n.html]]} { lappend pages "\[$n\]($n.html)" } }
+  foreach n $names { if {[file exists [file join $outDir pulse-$n.html]]} { lappend pages "\[$n under the pulse\](pulse-$n.html)" } }
+  if {[llength $pages] > 0} {
+    puts $md "\n## See the bridge move\n\nViewer pages (open in a browser): [join $pages {, }]."
+    set shots [viewerScreenshots $outDir pound]
+    if {[llength $shots] > 0} {
+      puts $md "\nThe pound case at the moment of the largest pounding force (t = [lindex $shots 0] s), true scale:\n"
+      foreach {file caption} [lrange $shots 1 end] { puts $md "!\[$caption\]($file)\n" }
+    } else {
+      puts $md "\n(No screenshots: they need node, Chromium and the viewer's npm modules in the build.)"
+    }
+  }
+
+  # Plots
+  set plots [makePlots $names $outDir $results]
+  if {$plots ne ""} {
+    puts $md "\n## Histories\n"
+    foreach {file caption} $plots { puts $md "!\[$caption\]($file)\n" }
+  } else {
+    puts $md "\n(gnuplot not found: no plots; the histories are in the CSV files beside this report.)"
+  }
+  close $md
+}
+
+# The table of one motion's runs, one column per case.
+proc runsTable {md results} {
+  set names {}
+  foreach r $results { lappend names [dict get $r case] }
   set header "| quantity | unit |"
   set rule "|---|---|"
   foreach n $names { append header " $n |"; append rule "---:|" }
   puts $md $header
   puts $md $rule
   proc row {md label unit values} { puts $md "| $label | $unit | [join $values { | }] |" }
-  foreach {key label} {gap1x "Gap1 (PC2) longitudinal" gap1y "Gap1 (PC2) transverse"
-                       gap2x "Gap2 (PC3) longitudinal" gap2y "Gap2 (PC3) transverse"} {
+  foreach {key label} {gap1x "Gap1 (PC2) longitudinal" gap1y "Gap1 (PC2) transverse" gap1z "Gap1 (PC2) vertical offset"
+                       gap2x "Gap2 (PC3) longitudinal" gap2y "Gap2 (PC3) transverse" gap2z "Gap2 (PC3) vertical offset"} {
     set peaks {}; set residuals {}
     foreach r $results {
       lappend peaks [fmt [dict get $r peak $key]]
@@ -42,7 +96,8 @@ proc writeReport {results outDir} {
     row $md "$label, peak" m $peaks
     row $md "$label, residual" m $residuals
   }
-  foreach {bt label} {2011 "PC2 bearing of G1" 2012 "PC2 bearing of G2" 3011 "PC3 bearing of G2" 3012 "PC3 bearing of G3"} {
+  foreach {bt label} {1012 "PC1 bearing of G1" 2011 "PC2 bearing of G1" 2012 "PC2 bearing of G2" 3011 "PC3 bearing of G2" 3012 "PC3 bearing of G3" 4011 "PC4 bearing of G3"} {
+    if {![dict exists [lindex $results 0] peak strain$bt]} { continue }
     set vals {}; set res {}; set strains {}; set states {}
     foreach r $results {
       lappend vals "[fmt [dict get $r peak bx$bt]] / [fmt [dict get $r peak by$bt]]"
@@ -70,6 +125,11 @@ proc writeReport {results outDir} {
     foreach r $results { lappend v [format %.4f [dict get $r peak rot$s]] }
     row $md "G$s rotation about the vertical, peak" rad $v
   }
+  foreach s {1 2 3} {
+    set v {}
+    foreach r $results { lappend v [fmt [dict get $r peak g${s}x]] }
+    row $md "G$s mid-span longitudinal displacement (to the ground), peak" m $v
+  }
   set v {}; foreach r $results { lappend v "[fmt [dict get $r peak deckx]] / [fmt [dict get $r peak decky]]" }
   row $md "G2 deck displacement X / Y (to the ground), peak" m $v
   foreach {key label unit} {wall "wall time" s} {
@@ -87,44 +147,49 @@ proc writeReport {results outDir} {
   row $md "steps accepted at 100x the tolerance (last resort)" - $v
   set v {}; foreach r $results { lappend v [expr {[dict get $r completed] ? "yes" : "NO"}] }
   row $md "completed" - $v
+}
 
-  # Findings of the paper, checked on these numbers.
-  if {[llength $names] == 3} {
-    lassign $results rn rp rc
-    puts $md "\n## Findings\n"
-    set bn 0.0; set bp 0.0
-    foreach bt {2011 2012 3011 3012} {
-      set bn [expr {max($bn, abs([dict get $rn peak bx$bt]))}]
-      set bp [expr {max($bp, abs([dict get $rp peak bx$bt]))}]
+# The scale ladder: no pounding against pounding at several scales of the record.
+proc ladderTable {ladder} {
+  set out "## Scale ladder\n\nThe record scaled; no pounding -> pounding. A bearing fails at 300 % shear strain.\n\n"
+  append out "| scale | largest longitudinal bearing displacement | largest bearing strain, no pounding / pounding | failed bearings, no pounding / pounding | pounding force, peak (kN) |\n|---:|---|---|---|---:|\n"
+  foreach pn [findings::ladderOf $ladder nopound] pp [findings::ladderOf $ladder pound] {
+    lassign $pn s ln; lassign $pp sp lp
+    if {$s != $sp} { continue }
+    set rn [dict create peak [dict get $ln peak]]; set rp [dict create peak [dict get $lp peak]]
+    set force [expr {max([dict get $lp peak force1], [dict get $lp peak force2])}]
+    append out "| $s | [findings::compare [findings::bearingLong $rn] [findings::bearingLong $rp] m] | [findings::pct [findings::strainMax $rn]] / [findings::pct [findings::strainMax $rp]] | [findings::failedCount $rn] / [findings::failedCount $rp] | [format %.0f $force] |\n"
+  }
+  return $out
+}
+
+# Screenshots of the case's viewer page at the frame of the largest total contact force, by the
+# browser script tcl/viewer/test/screenshot.mjs (headless Chromium through the build's
+# playwright-core). Returns {time file caption ...}, or {} when node, Chromium or the modules are
+# missing or the script fails.
+proc viewerScreenshots {outDir case} {
+  set page [file join $outDir $case.html]
+  set script [file normalize [file join $::reportToolsDir .. .. .. tcl viewer test screenshot.mjs]]
+  set modules [file join [file dirname [info nameofexecutable]] tcl viewer npm node_modules]
+  set node [auto_execok node]
+  if {![file exists $page] || ![file exists $script] || $node eq "" || ![file isdirectory $modules/playwright-core]
+      || ![file executable /usr/bin/chromium]} { return {} }
+  if {[catch {exec env DABS_VIEWER_MODULES=$modules {*}$node $script $page $outDir viewer-$case 2>@1} out]} {
+    puts "viewer screenshots failed: $out"
+    return {}
+  }
+  if {![regexp {time ([-0-9.e+]+)} $out -> t]} { return {} }
+  set shots [list $t]
+  foreach {view caption} {3d "3D view" plan "plan" elevation "elevation" joint "the joint with the largest force, close up"} {
+    if {[file exists [file join $outDir viewer-$case-$view.png]]} {
+      lappend shots viewer-$case-$view.png "Pound case at the largest pounding force: $caption"
     }
-    puts $md "- Pounding and longitudinal displacement: the largest longitudinal bearing displacement at the"
-    puts $md "  joints (PC2, PC3) is [fmt $bn] m without pounding and [fmt $bp] m with pounding"
-    puts $md "  ([expr {$bp < $bn ? "reduced, as in the paper" : "not reduced: see the discussion in README"}])."
-    set tp [expr {max(abs([dict get $rp peak gap1y]), abs([dict get $rp peak gap2y]))}]
-    set tc [expr {max(abs([dict get $rc peak gap1y]), abs([dict get $rc peak gap2y]))}]
-    puts $md "- Countermeasure and transverse gap: the largest transverse gap is [fmt $tp] m with pounding"
-    puts $md "  alone and [fmt $tc] m with restrainers and bumpers"
-    puts $md "  ([expr {$tc < $tp ? "reduced, as in the paper" : "not reduced"}])."
   }
-
-  # One animated page per case, written by `recorder Viewer` (open them in a browser).
-  set pages {}
-  foreach n $names { if {[file exists [file join $outDir $n.html]]} { lappend pages "\[$n\]($n.html)" } }
-  if {[llength $pages] > 0} { puts $md "\n## See the bridge move\n\n[join $pages {, }]" }
-
-  # Plots
-  set plots [makePlots $names $outDir]
-  if {$plots ne ""} {
-    puts $md "\n## Histories\n"
-    foreach {file caption} $plots { puts $md "!\[$caption\]($file)\n" }
-  } else {
-    puts $md "\n(gnuplot not found: no plots; the histories are in the CSV files beside this report.)"
-  }
-  close $md
+  return $shots
 }
 
 # Plots with gnuplot (pngcairo, else png). Returns {file caption ...} or "" without gnuplot.
-proc makePlots {names outDir} {
+proc makePlots {names outDir {results {}}} {
   if {[auto_execok gnuplot] eq ""} { return "" }
   set term "pngcairo size 1100,800 font ',10'"
   if {[catch {exec gnuplot -e "set terminal pngcairo" 2>@1}]} { set term "png size 1100,800" }
@@ -154,6 +219,58 @@ proc makePlots {names outDir} {
     puts $gp "plot [plotLines $names $outDir $col $colors], 2.5 with lines dt 2 lc rgb 'gray' title '250%', 3.0 with lines dt 3 lc rgb 'black' title '300%'"
   }
   puts $gp "unset multiplot"
+  # The paper's figures: girder displacement histories, longitudinal and rotation about the
+  # vertical, for the three cases
+  puts $gp "set output '[file join $outDir girders.png]'"
+  puts $gp "set multiplot layout 2,3 title 'Girder mid-span: longitudinal displacement to the ground (top) and rotation about the vertical (bottom)'"
+  foreach col {21 22 23} title {G1 G2 G3} {
+    puts $gp "set title '$title, longitudinal'; set ylabel 'm'"
+    puts $gp "plot [plotLines $names $outDir $col $colors]"
+  }
+  foreach col {16 17 18} title {G1 G2 G3} {
+    puts $gp "set title '$title, rotation about the vertical'; set ylabel 'rad'"
+    puts $gp "plot [plotLines $names $outDir $col $colors]"
+  }
+  puts $gp "unset multiplot"
+  # Plan view: each bearing (one element per girder end stands for the pair at +-bearingRollArm)
+  # coloured by its damage state, one panel per case
+  if {[llength $results] > 0} {
+    set height [expr {250 * [llength $results] + 60}]
+    puts $gp "set terminal [lindex $term 0] size 1100,$height [lrange $term 3 end]"
+    puts $gp "set output '[file join $outDir plan.png]'"
+    puts $gp "set multiplot layout [llength $results],1 title 'Plan: bearings by damage state (sound < 250 % <= past design < 300 % <= failed)'"
+    set xmax [expr {$::nSpans * $::spanLength}]
+    set hw [expr {0.5 * $::girderWidth}]
+    set pad [expr {0.5 * sqrt(0.5 * $::bearingArea)}]
+    set obj 0
+    foreach r $results {
+      set objs {}
+      for {set sp 1} {$sp <= $::nSpans} {incr sp} {
+        set x0 [expr {[pierX $sp] + ($sp > 1 ? 0.5 * $::jointGap : 0.0)}]
+        set x1 [expr {[pierX [expr {$sp + 1}]] - ($sp < $::nSpans ? 0.5 * $::jointGap : 0.0)}]
+        lappend objs "set object [incr obj] rect from $x0,-$hw to $x1,$hw fc rgb '#dde3ea' fs solid border lc rgb '#8a9bb0' back"
+      }
+      foreach bt [findings::bearingTagsOf $r] {
+        set p [expr {$bt / 1000}]
+        set x [expr {[pierX $p] + ($bt % 1000 == 11 ? -1.0 : 1.0) * $::bearingOffset}]
+        set e [dict get $r peak strain$bt]
+        set color [expr {$e >= 3.0 ? "#d62728" : ($e >= 2.5 ? "#f2c81e" : "#2ca02c")}]
+        foreach y [list -$::bearingRollArm $::bearingRollArm] {
+          lappend objs "set object [incr obj] rect from [expr {$x - $pad}],[expr {$y - $pad}] to [expr {$x + $pad}],[expr {$y + $pad}] fc rgb '$color' fs solid border lc rgb 'black' front"
+        }
+        # the two bearings of a pier are 2 x bearingOffset apart: left one's label to the left
+        set left [expr {$bt % 1000 == 11}]
+        lappend objs "set label [incr obj] '[format %.0f [expr {100 * $e}]]%' at [expr {$x + ($left ? -0.8 : 0.8)}],[expr {$hw + 1.8}] [expr {$left ? "right" : "left"}] front"
+      }
+      puts $gp "set title '[dict get $r case] (labels: peak shear strain)'; set xlabel 'x along the bridge (m)'; set ylabel 'y (m)'; set key outside right top"
+      puts $gp "set xrange \[-3:[expr {$xmax + 3}]\]; set yrange \[[expr {-$hw - 3}]:[expr {$hw + 3}]\]; set size ratio -1"
+      puts $gp [join $objs "\n"]
+      puts $gp "plot NaN notitle, NaN with boxes fc rgb '#2ca02c' fs solid title 'sound', NaN with boxes fc rgb '#f2c81e' fs solid title 'past 250 %', NaN with boxes fc rgb '#d62728' fs solid title 'failed (300 %)'"
+      puts $gp "unset object; unset label"
+    }
+    puts $gp "unset multiplot; set size noratio; set autoscale; set xlabel 't (s)'; set key inside top right"
+    puts $gp "set terminal $term"
+  }
   set pn [lsearch -all -inline -not $names nopound]
   if {[llength $pn] > 0} {
     puts $gp "set output '[file join $outDir pounding.png]'"
@@ -169,7 +286,7 @@ proc makePlots {names outDir} {
     puts "gnuplot failed: $err"
     return ""
   }
-  set out {gaps.png "Gap histories" bearings.png "Bearing shear strain histories"}
+  set out {girders.png "Girder displacement histories, longitudinal and rotation about the vertical" gaps.png "Gap1 and Gap2 histories" plan.png "Plan view: bearings by damage state" bearings.png "Bearing shear strain histories"}
   if {[llength $pn] > 0} { lappend out pounding.png "Pounding forces" }
   return $out
 }

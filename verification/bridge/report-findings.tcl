@@ -1,0 +1,140 @@
+# SPDX-License-Identifier: MIT
+# The report's findings follow from their numbers (tools/findings.tcl), checked with synthetic
+# run results: every comparison "a -> b unit (p %, word)" in the generated text is parsed and its
+# word and percentage are recomputed here, independently of findings.tcl; each finding's verdict
+# must follow from those words; the serviceability verdicts from their limits. A finding that
+# contradicts its numbers (such as "0.422 m and 0.422 m, reduced") fails this script.
+source [file join [file dirname [info script]] tools findings.tcl]
+
+set failures 0
+proc check {name ok {detail ""}} {
+  if {$ok} { puts "PASSED $name" } else { puts "FAILED $name $detail"; incr ::failures }
+}
+
+# Parameters of bridge.tcl the text quotes.
+set restrainerSlack 0.05; set bumperClearance 0.03; set transverseSlack 0.05; set jointGap 0.05
+set limits {0.05 0.05}
+set kSame 0.05   ;# the threshold the report states: a change below 5 % of the larger value
+
+# A synthetic run: bearing longitudinal displacement bx, strain, gaps, rotation.
+proc run {case motion bx strain gx gy rot {resx 0.0} {resy 0.0}} {
+  set peak [dict create gap1x $gx gap1y $gy gap1z 0.0 gap2x [expr {-0.5 * $gx}] gap2y 0.0 gap2z 0.0 \
+      rot1 $rot rot2 0.0 rot3 0.0]
+  foreach bt {1012 2011 2012 3011 3012 4011} {
+    dict set peak bx$bt [expr {$bt == 2012 ? $bx : 0.5 * $bx}]
+    dict set peak by$bt 0.0
+    dict set peak strain$bt [expr {$bt == 3011 ? $strain : 0.5 * $strain}]
+  }
+  set last [dict create gap1x $resx gap1y $resy gap1z 0.002 gap2x 0.0 gap2y 0.0 gap2z 0.0]
+  return [dict create case $case motion $motion scale 1.0 peak $peak last $last]
+}
+
+# Independent reading of a comparison: word from the two magnitudes.
+proc expectedWord {a b} {
+  set ref [expr {max($a, $b)}]
+  if {$ref == 0.0 || abs($b - $a) < $::kSame * $ref} { return "about the same" }
+  return [expr {$b < $a ? "reduces" : "increases"}]
+}
+# Every "a -> b unit (p %, word)" in text; returns the number of comparisons checked.
+proc checkComparisons {label text} {
+  set n 0
+  foreach {all a b p word} [regexp -all -inline {([0-9.]+) -> ([0-9.]+) [a-z]+ \(([-+0-9.]+) %, ([a-z ]+)\)} $text] {
+    incr n
+    set want [expectedWord $a $b]
+    check "$label: \"$all\" says $want" [expr {$word eq $want}] "(says $word)"
+    set pct [expr {$a > 0 ? 100.0 * ($b - $a) / $a : 0.0}]
+    check "$label: \"$all\" percentage" [expr {abs($pct - $p) <= 0.05 + 100.0 * 0.0005 / max($a, 1e-3)}] "(recomputed $pct)"
+  }
+  return $n
+}
+
+# --- 1. equal numbers are "about the same", never a reduction ------------------------------------
+check "changeWord: equal values" [expr {[findings::changeWord 0.422 0.422] eq "about the same"}]
+check "changeWord: 4 % smaller is about the same" [expr {[findings::changeWord 1.0 0.96] eq "about the same"}]
+check "changeWord: 6 % smaller reduces" [expr {[findings::changeWord 1.0 0.94] eq "reduces"}]
+check "changeWord: 6 % larger increases" [expr {[findings::changeWord 0.94 1.0] eq "increases"}]
+check "changeWord: zero and zero" [expr {[findings::changeWord 0.0 0.0] eq "about the same"}]
+check "compare: the 0.422/0.422 case" [expr {[findings::compare 0.422 0.422 m] eq "0.422 -> 0.422 m (+0.0 %, about the same)"}] [findings::compare 0.422 0.422 m]
+
+# --- 2. a model that disagrees with the paper everywhere ------------------------------------------
+set disagree [list \
+  [list [run nopound "RSN1120_KOBE_TAK090.AT2" 0.422 2.32 0.20 0.05 0.010] \
+        [run pound "RSN1120_KOBE_TAK090.AT2" 0.422 2.29 0.05 0.08 0.012 0.08] \
+        [run countermeasure "RSN1120_KOBE_TAK090.AT2" 0.42 2.31 0.06 0.09 0.013]] \
+  [list [run nopound "Mavroeidis-Papageorgiou pulse" 0.30 1.5 0.15 0.04 0.008] \
+        [run pound "Mavroeidis-Papageorgiou pulse" 0.33 1.6 0.05 0.05 0.009] \
+        [run countermeasure "Mavroeidis-Papageorgiou pulse" 0.33 1.6 0.05 0.05 0.009]]]
+set ladder {}
+foreach s {1.0 1.5 2.0} bx {0.422 0.60 0.80} st {2.32 3.1 3.9} {
+  lappend ladder [dict create scale $s case nopound completed 1 peak [dict get [run nopound r $bx $st 0.2 0.05 0.01] peak]]
+  lappend ladder [dict create scale $s case pound completed 1 peak [dict get [run pound r $bx $st 0.05 0.05 0.01] peak]]
+}
+set rows [findings::paperFindings $disagree $ladder $limits]
+check "five findings" [expr {[llength $rows] == 5}]
+set n 0
+foreach row $rows { incr n [checkComparisons "disagree #[dict get $row n]" "[dict get $row ours] [dict get $row why]"] }
+check "the comparisons were found and checked" [expr {$n >= 10}] "($n)"
+foreach k {0 1 3 4} {
+  check "disagree: finding [expr {$k + 1}] differs" [expr {[dict get [lindex $rows $k] verdict] eq "differs"}] [dict get [lindex $rows $k] verdict]
+}
+check "disagree: residual 0.08 m (record) and opening 0.15 m (pulse) > 0.05 m are not passable" [expr {[dict get [lindex $rows 2] verdict] eq "differs"}] [dict get [lindex $rows 2] verdict]
+check "disagree: equal bearing displacements are not called a reduction" \
+    [regexp {record, largest longitudinal bearing displacement, no pounding -> pounding: 0.422 -> 0.422 m \(\+0.0 %, about the same\)} [dict get [lindex $rows 0] ours]] [dict get [lindex $rows 0] ours]
+check "disagree: finding 1's why says where the largest displacement is" [string match "*at bearing 2012 (PC2)*at a joint*" [dict get [lindex $rows 0] why]] [dict get [lindex $rows 0] why]
+check "disagree: finding 1's why names the ladder and its first failure" \
+    [expr {[string match "*x2.0:*" [dict get [lindex $rows 0] why]] && ![string match "*reduces it from*" [dict get [lindex $rows 0] why]]}] [dict get [lindex $rows 0] why]
+set why [findings::whyDevices [list [lindex $disagree 1]] x]
+check "pulse: joints within the devices' free travel: the devices never act" \
+    [string match "pulse: *open up to 0.050 m (restrainer slack 0.050 m) and close up to 0.025 m*never act*" $why] $why
+check "record: a residual opening of 0.080 m passes the 0.050 m slack: the devices act" \
+    [string match "*open up to 0.080 m*do act longitudinally*" [dict get [lindex $rows 1] why]] [dict get [lindex $rows 1] why]
+check "disagree: transverse gap 0.08 m beyond the 0.05 m clearance: the devices act" \
+    [string match "*0.080 m, 0.030 m beyond*act only on the part*" [dict get [lindex $rows 3] why]] [dict get [lindex $rows 3] why]
+check "disagree: finding 3's why names the failing limits" \
+    [string match "largest peak opening 0.200 m exceeds the 0.050 m limit; largest residual offset 0.080 m exceeds*" [dict get [lindex $rows 2] why]] [dict get [lindex $rows 2] why]
+check "disagree: finding 5's why gives the scale at which bearings fail" \
+    [string match "*nopound: bearings reach 300 % from scale 1.5*" [dict get [lindex $rows 4] why]] [dict get [lindex $rows 4] why]
+
+# --- 3. a model that agrees with the paper everywhere ---------------------------------------------
+set agree [list \
+  [list [run nopound "RSN1120_KOBE_TAK090.AT2" 0.70 3.4 0.02 0.06 0.020] \
+        [run pound "RSN1120_KOBE_TAK090.AT2" 0.40 3.1 0.03 0.06 0.020 0.01] \
+        [run countermeasure "RSN1120_KOBE_TAK090.AT2" 0.38 2.9 0.02 0.02 0.005]]]
+set rows [findings::paperFindings $agree $ladder $limits]
+foreach row $rows {
+  checkComparisons "agree #[dict get $row n]" [dict get $row ours]
+  check "agree: finding [dict get $row n] agrees" [expr {[dict get $row verdict] eq "agrees"}] [dict get $row verdict]
+  check "agree: finding [dict get $row n] needs no why" [expr {[dict get $row why] eq ""}]
+}
+
+# --- 4. one motion agrees, the other not ----------------------------------------------------------
+set mixed [list [lindex $agree 0] [lindex $disagree 1]]
+set row [lindex [findings::paperFindings $mixed $ladder $limits] 0]
+check "mixed: verdict names the motions" [expr {[dict get $row verdict] eq "agrees for record, differs for pulse"}] [dict get $row verdict]
+
+# --- 5. pounding reduces the displacement from some scale on: the why says so and which scale ------
+set ladder2 {}
+foreach s {1.0 1.5 2.0} bn {0.422 0.60 0.80} bp {0.422 0.50 0.60} {
+  lappend ladder2 [dict create scale $s case nopound completed 1 peak [dict get [run nopound r $bn 2.0 0.2 0.05 0.01] peak]]
+  lappend ladder2 [dict create scale $s case pound completed 1 peak [dict get [run pound r $bp 2.0 0.05 0.05 0.01] peak]]
+}
+set why [findings::whyPounding $ladder2]
+checkComparisons "ladder why" $why
+check "ladder: reduction found from scale 1.5" [string match "*reduces it from scale 1.5 on*" $why] $why
+
+# --- 6. serviceability verdicts follow their limits ---------------------------------------------------
+lassign [findings::serviceability [run pound m 0.3 1.0 0.04 0.01 0.0 0.049 0.0] 0.05 0.05] ok word text
+check "serviceability: 0.049 <= 0.05 passable" [expr {$ok == 1 && $word eq "passable"}] $text
+lassign [findings::serviceability [run pound m 0.3 1.0 0.04 0.01 0.0 0.0 0.051] 0.05 0.05] ok word text
+check "serviceability: residual transverse 0.051 > 0.05 not passable" [expr {$ok == 0 && $word eq "not passable"}] $text
+foreach part [split $text ,] {
+  if {[regexp {([0-9.]+) m (<=|>) ([0-9.]+) m} $part -> v op lim]} {
+    check "serviceability: \"[string trim $part]\" is true" [expr "$v $op $lim"]
+  }
+}
+set md [findings::markdown $disagree $ladder $limits]
+check "markdown: the threshold is stated" [string match "*below 5 % of the larger value*" $md]
+check "markdown: one verdict line per case and motion" [expr {[regexp -all {\*\*(passable|not passable)\*\*} $md] == 6}]
+
+if {$failures > 0} { puts "$failures checks FAILED"; exit 1 }
+puts "all checks passed"
