@@ -139,13 +139,19 @@ class StateFiberGroup final : public FiberGroup {
   void setSource(const UniaxialMaterial* source) { source_ = source; }
 
   Status setTrial(double e0, double kz, double ky, FiberSums& sums) override {
+    // One pass: the update is inlined (no call to save the accumulators around), and each fiber's
+    // state is summed while it is in cache; on large models the state arrays do not fit in it.
+    FiberSums local = sums;
     Status status = Status::Ok;
     const std::size_t n = trial_.size();
     for (std::size_t i = 0; i < n; ++i) {
-      const Status s = law_.computeTrial(committed_[i], trial_[i], e0 - y_[i] * kz + z_[i] * ky);
+      const double y = y_[i], z = z_[i], a = area_[i];
+      State& t = trial_[i];
+      const Status s = law_.computeTrial(committed_[i], t, e0 - y * kz + z * ky);
       if (!ok(s)) status = s;
+      local.add(y, z, t.stress * a, t.tangent * a);
     }
-    addTo(sums, false);
+    sums = local;
     return status;
   }
   void addTo(FiberSums& sums, bool initial) const override {
