@@ -16,7 +16,7 @@ set nSpans [expr {$argc > 0 ? [lindex $argv 0] : 3}]
 set nSteps [expr {$argc > 1 ? [lindex $argv 1] : 4000}]
 set outDir [expr {$argc > 2 ? [lindex $argv 2] : "bridge-bench-out"}]
 file mkdir $outDir
-source [file join [file dirname [info script]] record.tcl]
+source [file join [file dirname [info script]] common.tcl]
 
 wipe
 model basic -ndm 3 -ndf 6
@@ -135,8 +135,4 @@ test NormDispIncr 1.0e-8 20
 algorithm Newton
 integrator Newmark 0.5 0.25
 analysis Transient
-set t0 [clock milliseconds]
-set ok [analyze $nSteps 0.005]
-set wall [expr {([clock milliseconds] - $t0)/1000.0}]
-puts "bridge nSpans=$nSpans steps=$nSteps status=$ok analyze_s=$wall"
-if {[info commands analysisStatistics] ne ""} { puts "counts [analysisStatistics]" }
+timedAnalyze "bridge nSpans=$nSpans steps=$nSteps" $nSteps 0.005

@@ -8,7 +8,7 @@
 set nSteps [expr {$argc > 0 ? [lindex $argv 0] : 1500}]
 set outDir [expr {$argc > 1 ? [lindex $argv 1] : "linear-frame-out"}]
 file mkdir $outDir
-source [file join [file dirname [info script]] record.tcl]
+source [file join [file dirname [info script]] common.tcl]
 wipe
 model basic -ndm 3 -ndf 6
 set g 9.81; set nb 6; set ns 10; set bay 6.0; set h 3.2
@@ -51,9 +51,5 @@ constraints Plain; numberer RCM; system BandSPD
 set algorithmArgs [expr {$argc > 2 ? [lindex $argv 2] : ""}]
 test NormDispIncr 1.0e-8 10; algorithm Linear {*}$algorithmArgs
 integrator Newmark 0.5 0.25; analysis Transient
-set t0 [clock milliseconds]
-set ok [analyze $nSteps 0.01]
-set wall [expr {([clock milliseconds] - $t0)/1000.0}]
-puts "linear-frame steps=$nSteps status=$ok analyze_s=$wall"
-if {[info commands analysisStatistics] ne ""} { puts "counts [analysisStatistics]" }
+timedAnalyze "linear-frame steps=$nSteps" $nSteps 0.01
 wipe

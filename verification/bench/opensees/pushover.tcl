@@ -8,6 +8,7 @@
 set nSteps [expr {$argc > 0 ? [lindex $argv 0] : 140}]
 set outDir [expr {$argc > 1 ? [lindex $argv 1] : "pushover-out"}]
 file mkdir $outDir
+source [file join [file dirname [info script]] common.tcl]
 wipe
 model basic -ndm 3 -ndf 6
 set PI [expr {acos(-1.0)}]
@@ -39,9 +40,5 @@ pattern Plain 2 2 { load 2 1.0 0 0 0 0 0 }
 recorder Node -file [file join $outDir tip.out] -time -precision 12 -node 2 -dof 1 disp
 recorder Element -file [file join $outDir force.out] -time -precision 12 -ele 1 localForce
 integrator DisplacementControl 2 1 0.0015
-set t0 [clock milliseconds]
-set ok [analyze $nSteps]
-set wall [expr {([clock milliseconds] - $t0)/1000.0}]
-puts "pushover steps=$nSteps status=$ok analyze_s=$wall"
-if {[info commands analysisStatistics] ne ""} { puts "counts [analysisStatistics]" }
+timedAnalyze "pushover steps=$nSteps" $nSteps
 wipe

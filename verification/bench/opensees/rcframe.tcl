@@ -8,7 +8,7 @@
 set nSteps [expr {$argc > 0 ? [lindex $argv 0] : 1500}]
 set outDir [expr {$argc > 1 ? [lindex $argv 1] : "rcframe-out"}]
 file mkdir $outDir
-source [file join [file dirname [info script]] record.tcl]
+source [file join [file dirname [info script]] common.tcl]
 
 wipe
 model basic -ndm 2 -ndf 3
@@ -77,9 +77,5 @@ recorder Element -file [file join $outDir force.out] -time -precision 12 -ele 2 
 constraints Plain; numberer RCM; system BandGeneral
 test NormDispIncr 1.0e-8 20; algorithm Newton
 integrator Newmark 0.5 0.25; analysis Transient
-set t0 [clock milliseconds]
-set ok [analyze $nSteps 0.01]
-set wall [expr {([clock milliseconds] - $t0)/1000.0}]
-puts "rcframe steps=$nSteps status=$ok analyze_s=$wall"
-if {[info commands analysisStatistics] ne ""} { puts "counts [analysisStatistics]" }
+timedAnalyze "rcframe steps=$nSteps" $nSteps 0.01
 wipe

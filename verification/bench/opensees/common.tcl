@@ -1,4 +1,17 @@
 # SPDX-License-Identifier: MIT
+# Shared by the benchmark models (plain Tcl, so dabs and OpenSees run the same code).
+#
+# timedAnalyze label args: runs `analyze args`, prints "label status=.. analyze_s=.." (the line
+# compare.sh reads) and, in dabs, the work counts of analysisStatistics.
+proc timedAnalyze {label args} {
+  set t0 [clock milliseconds]
+  set ok [analyze {*}$args]
+  set wall [expr {([clock milliseconds] - $t0)/1000.0}]
+  puts "$label status=$ok analyze_s=$wall"
+  if {[info commands analysisStatistics] ne ""} { puts "counts [analysisStatistics]" }
+  return $ok
+}
+
 # Reads a PEER NGA .AT2 record (header lines, then `NPTS= n, DT= dt SEC`, then values in g, up
 # to a trailer such as `*** End data ***` if there is one) and
 # writes its values one a line to a plain file that `timeSeries Path -filePath` reads in any
@@ -9,12 +22,9 @@
 set ::benchRecordDir [file dirname [file normalize [info script]]]
 
 proc findRecord {name} {
-  set here $::benchRecordDir
-  foreach dir [list [file join $here .. .. data] [file join $here .. .. .. .. shared data ground-motions]] {
-    set f [file normalize [file join $dir $name]]
-    if {[file exists $f]} { return $f }
-  }
-  error "record $name not found in verification/data or ../shared/data/ground-motions"
+  set f [file normalize [file join $::benchRecordDir .. .. data $name]]
+  if {![file exists $f]} { error "record $name not found in verification/data" }
+  return $f
 }
 
 proc writePlainRecord {at2 out} {
