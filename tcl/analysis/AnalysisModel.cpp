@@ -507,7 +507,6 @@ void AnalysisModel::buildConstantDynamics() {
     addElementMatrix(damping, l, c);
   }
   for (const NodeLink& nl : nodes_) {
-    const int ndf = nl.node->ndf();
     const double* m = nl.node->mass().data();
     for (const MatEntry& me : nl.mass) {
       const double v = me.coef * m[me.local];
