@@ -9,8 +9,8 @@
 
 namespace dabs::contact {
 
-/// Decides whether a contactor is near enough to its target quad to be worth evaluating (issue 5,
-/// "only what the scene needs"). The test is one bounding-sphere distance per update: a pair is
+/// Decides whether a contactor is near enough to its target quad to be worth evaluating ("only
+/// what the scene needs"). The test is one bounding-sphere distance per update: a pair is
 /// far when |x_k - c| - r > distance, where c and r are the centre and radius of the quad's
 /// current bounding sphere. A far pair adds no force and no stiffness; its element still owns its
 /// place in the sparse matrix pattern, so nothing is re-analysed when it closes.

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// Element-level checks of the node-to-surface contact (issue 5 "Hard cases" that need no driver):
+// Element-level checks of the node-to-surface contact (the hard cases that need no driver):
 // closed forms for open/penetration/stick/slide, return-map memory and revert, FD tangents in
 // every state, corners, edges, sliding off, nodal equilibrium, search distance, and small
 // integrations for the head-on and oblique impacts and the block on a plane.

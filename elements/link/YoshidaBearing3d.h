@@ -10,7 +10,7 @@
 
 namespace dabs::elements {
 
-/// Laminated rubber bearing between two 6-dof nodes (Tcl: `element yoshidaBearing`, issue 4).
+/// Laminated rubber bearing between two 6-dof nodes (Tcl: `element yoshidaBearing`).
 ///
 /// Local frame: x is the bearing's axis from iNode to jNode (vertical in a bridge); for coincident
 /// nodes x is global Z unless `-orient` gives it. Local y is the orient y vector made normal to x,

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// Checks of the yoshidaBearing element (issue 4): geometry, equilibrium, rigid-body motion,
+// Checks of the yoshidaBearing element: geometry, equilibrium, rigid-body motion,
 // FD tangents, damage by shear strain, failure handling, mass, and Newton convergence on a
 // bearing-mass oscillator under the Takatori record.
 #include <gtest/gtest.h>

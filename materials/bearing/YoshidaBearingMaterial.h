@@ -11,7 +11,7 @@
 namespace dabs::materials {
 
 /// Bi-axial hysteresis of a laminated rubber bearing after Yoshida, Takesada, Abe and Fujino (1999),
-/// in the form used by DABS (issue 4). With U the shear deformation (2-vector in the bearing's
+/// in the form used by DABS. With U the shear deformation (2-vector in the bearing's
 /// shear plane) and F = F1 + F2 the shear force:
 ///
 ///   dF1 / Y = dU / U0 - (|dU| / U0) |z|^(n-1) z,      z = (F1 - S) / Y           (hysteretic part)

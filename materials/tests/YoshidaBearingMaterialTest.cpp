@@ -1,6 +1,5 @@
 // SPDX-License-Identifier: MIT
-// Closed-form and consistency checks of the Yoshida et al. (1999) bi-axial bearing material
-// (issue 4, section "Verification").
+// Closed-form and consistency checks of the Yoshida et al. (1999) bi-axial bearing material.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -237,7 +236,7 @@ OrbitResult runOrbit(bool coupled, double radius, int perRev) {
 TEST(YoshidaBearingMaterialTest, CircularOrbitSettlesOnClosedForm) {
   const double r = 3.0;  // R/U0
   const Orbit o = solveOrbit(r, 2.0);
-  EXPECT_NEAR(o.rho, 0.97262, 1e-5);  // values given in issue 4
+  EXPECT_NEAR(o.rho, 0.97262, 1e-5);  // closed-form values of the circular orbit
   EXPECT_NEAR(o.phi, 1.2406, 1e-4);
   const OrbitResult res = runOrbit(true, r * kU0, 4000);
   EXPECT_NEAR(res.minForce, kY0 * o.rho, kClosedFormTol * kY0);

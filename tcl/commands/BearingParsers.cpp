@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// Tcl parsers for the bi-axial rubber bearing (issue 4): the new command family `biaxialMaterial`
+// Tcl parsers for the bi-axial rubber bearing: the new command family `biaxialMaterial`
 // (no OpenSees counterpart; OpenSees' bearings take uniaxial materials per direction and cannot
 // couple the two shear directions) and `element yoshidaBearing`.
 #include <array>

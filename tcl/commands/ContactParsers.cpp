@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// Issue 5 (girder pounding): `uniaxialMaterial Restrainer|Bumper`, `element nodeToSurface` and the
+// Girder pounding: `uniaxialMaterial Restrainer|Bumper`, `element nodeToSurface` and the
 // `pounding` command that creates the contact pairs between two girder ends both ways.
 
 #include <tcl.h>

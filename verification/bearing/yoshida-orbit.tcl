@@ -1,8 +1,8 @@
 # SPDX-License-Identifier: MIT
-# Yoshida bi-axial bearing (issue 4) driven through the whole program: imposed displacements on a
+# Yoshida bi-axial bearing driven through the whole program: imposed displacements on a
 # yoshidaBearing with coincident nodes (local y = global X, local z = global Y).
 #
-# Closed forms (issue 4, "Verification"):
+# Closed forms:
 #  1. monotonic, no back force, n = 2: F = Y tanh(U/U0), here along an oblique direction;
 #  2. circular orbit U = R (cos t, sin t), no back force: |F| settles at Y rho and F is phi ahead
 #     of U in the direction of motion, where rho = (R/U0) cos(phi), rho^n = sin(phi)
@@ -75,8 +75,8 @@ proc orbitClosedForm {r n} {
   return [list [expr {$r * cos($lo)}] $lo]
 }
 lassign [orbitClosedForm 3.0 2.0] rho phi
-check "orbit closed form rho (issue 4 value)" $rho 0.97262 1e-5
-check "orbit closed form phi (issue 4 value)" $phi 1.2406 1e-4
+check "orbit closed form rho" $rho 0.97262 1e-5
+check "orbit closed form phi" $phi 1.2406 1e-4
 set R [expr {3.0 * $U0}]
 set perRev 720
 set xs {}; set ys {}

@@ -1,5 +1,5 @@
 # SPDX-License-Identifier: MIT
-# Bearing-mass oscillator under the Takatori record (issue 4): a 500 t deck mass on one
+# Bearing-mass oscillator under the Takatori record: a 500 t deck mass on one
 # yoshidaBearing (with back force, hardening and the Maxwell part), the EW record applied at 30
 # degrees to global X so both shear directions work at once. Checks that the full Newton
 # iteration converges at every step (the consistent tangent) and that the response is a bearing

@@ -1,5 +1,5 @@
 # SPDX-License-Identifier: MIT
-# Benchmark of the Yoshida bearing (issue 4, "Speed"): an isolated-deck oscillator under the
+# Benchmark of the Yoshida bearing (speed): an isolated-deck oscillator under the
 # Takatori record, wall time against the error from a reference run with a ten times smaller step.
 # Run: dabs verification/bench/bearing-deck.tcl ?csv? ?nBearings?
 #      (defaults bearing-deck.csv and 4; nBearings 1 or 4)

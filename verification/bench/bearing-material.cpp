@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// Benchmarks of the Yoshida bi-axial bearing (issue 4, "Speed"): material updates per second
+// Benchmarks of the Yoshida bi-axial bearing (speed): material updates per second
 // (setTrialStrain + commitState on a circular orbit, with and without the Maxwell part, for several
 // deformation increments per step) and yoshidaBearing element updates per second. A counting
 // global operator new checks that the timed loops allocate nothing: the counter

@@ -1,5 +1,5 @@
 # SPDX-License-Identifier: MIT
-# Benchmark of the bridge case study (issue 6): wall time of each case at the default settings,
+# Benchmark of the bridge case study: wall time of each case at the default settings,
 # with equations, steps, iterations and factorisations; the target is under 10 s per case on a
 # 2-core machine.
 #

@@ -1,5 +1,5 @@
 # SPDX-License-Identifier: MIT
-# Benchmarks of the analysis driver (issue 2). Run: dabs verification/bench/driver-bench.tcl ?csv?
+# Benchmarks of the analysis driver. Run: dabs verification/bench/driver-bench.tcl ?csv?
 # Prints a table and writes a CSV (default driver-bench.csv in the working directory).
 #  1. a linear 3D frame of about 2,000 dofs, 4,000 Newmark steps with algorithm Linear;
 #  2. the same frame with elastic-plastic zeroLength hinges at the column bases, algorithm Newton

@@ -1,5 +1,5 @@
 # SPDX-License-Identifier: MIT
-# Benchmark of a 3D fiber pier (issue 3): pushover and cyclic time history, wall time and Newton
+# Benchmark of a 3D fiber pier: pushover and cyclic time history, wall time and Newton
 # iterations against the error from a reference run with a ten times smaller step.
 # Run: dabs verification/bench/piers-pushover.tcl ?csv?   (default piers-pushover.csv)
 # Model: circular RC pier D = 2 m, L = 10 m (the materials and section of

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// Benchmarks of the fiber-section piers (issue 3): section state determination throughput for a
+// Benchmarks of the fiber-section piers: section state determination throughput for a
 // 200-fiber RC section (fibers per second), element state determination of force- and
 // displacement-based 3D beam-columns with 5 Lobatto points, and an elastic 3D beam with a Linear
 // transformation. A counting global operator new checks that the timed loops allocate nothing:

@@ -1,5 +1,5 @@
 # SPDX-License-Identifier: MIT
-# Three-span base-isolated steel bridge under a near-fault ground motion (issue 6): the main job
+# Three-span base-isolated steel bridge under a near-fault ground motion: the main job
 # of DABS. A readable model that a user can copy and change: every dimension, material and
 # device is a variable at the top, with its unit.
 #

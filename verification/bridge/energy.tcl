@@ -1,5 +1,5 @@
 # SPDX-License-Identifier: MIT
-# Energy balance of the three-span bridge over the whole run (issue 6, verification), for the
+# Energy balance of the three-span bridge over the whole run (verification), for the
 # three cases at the default settings.
 #
 #   dabs verification/bridge/energy.tcl ?motion? ?dt? ?integrator?    (writes energy.md here)

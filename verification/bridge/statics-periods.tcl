@@ -1,5 +1,5 @@
 # SPDX-License-Identifier: MIT
-# Bridge case study (issue 6): dead-load reactions against hand calculation, and the model's
+# Bridge case study: dead-load reactions against hand calculation, and the model's
 # fundamental longitudinal and transverse periods against an independent isolated-deck estimate.
 source [file join [file dirname [info script]] .. lib check.tcl]
 set ::bridgeLibraryOnly 1

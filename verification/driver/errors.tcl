@@ -3,7 +3,7 @@
 # and leaves the model as it was; a singular system is a failed step (negative return code), not
 # an error; recorders keep what was written before a failed step.
 #
-# Source: the behaviour required by issue 2 ("Behaviour on bad input", "Recorders"); the
+# Source: the required behaviour ("Behaviour on bad input", "Recorders"); the
 # expected values (tags, displacements, recorded lines) follow from the script's own input.
 source [file join [file dirname [info script]] .. lib check.tcl]
 source [file join [file dirname [info script]] .. lib expect-error.tcl]

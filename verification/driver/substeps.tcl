@@ -2,7 +2,7 @@
 # `analysis Transient -numSubLevels n -numSubSteps m`: a step that fails is retried as m smaller
 # steps, and the result equals running the smaller steps directly.
 #
-# Source: the behaviour required by issue 2 (analysis ... -numSubLevels n -numSubSteps m: "on a
+# Source: the required behaviour (analysis ... -numSubLevels n -numSubSteps m: "on a
 # failed step, retry it as m smaller steps, down to n levels"). Construction: a linear SDF system
 # (m = 1, k = 100, wn = 10) under a step load P = 1 from rest, Newmark average acceleration, and a
 # convergence test NormDispIncr with ONE iteration allowed and tol = 1.5e-3. For a linear system

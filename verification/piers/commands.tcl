@@ -1,5 +1,5 @@
 # SPDX-License-Identifier: MIT
-# Commands added for the piers (issue 3): section Elastic / Aggregator, element zeroLengthSection,
+# Commands added for the piers: section Elastic / Aggregator, element zeroLengthSection,
 # geomTransf Corotational (3D), -cMass on forceBeamColumn/dispBeamColumn. Bad input is a Tcl
 # error with a message naming the argument (and nothing is created); good input builds a model
 # whose response matches a closed form:

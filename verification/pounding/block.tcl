@@ -1,5 +1,5 @@
 # SPDX-License-Identifier: MIT
-# A block on a plane (issue 5, hard case 3): contactor node of mass m pressed by its weight W on a
+# A block on a plane (hard case 3): contactor node of mass m pressed by its weight W on a
 # fixed face. Closed forms (Coulomb friction): under a ramp P = r t it stays stuck until
 # P = mu_s W, then slides with acceleration (P - mu_k W)/m, so
 # v(t) = [r (t^2 - ts^2)/2 - mu_k W (t - ts)] / m with ts = mu_s W / r; launched with speed v0 it

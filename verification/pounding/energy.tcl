@@ -1,5 +1,5 @@
 # SPDX-License-Identifier: MIT
-# Energy balance of a head-on impact (issue 5, hard case 6): kinetic + strain + dissipated = work
+# Energy balance of a head-on impact (hard case 6): kinetic + strain + dissipated = work
 # done. After the pulse that launches the contactor no external work is done and after separation
 # no strain energy remains, so KE_before = KE_after + dissipated, where `dissipatedEnergy` is the
 # element's dashpot work (trapezoid rule over the steps) plus friction work. A stiff contact hit

@@ -1,5 +1,5 @@
 # SPDX-License-Identifier: MIT
-# Two masses colliding head-on through a nodeToSurface pair (issue 5, hard case 1).
+# Two masses colliding head-on through a nodeToSurface pair (hard case 1).
 # Closed forms: momentum M1 v1 + M2 v2 is conserved; the exit/approach relative-speed ratio is the
 # no-tension restitution e_eff(xi(e)) of a linear spring-dashpot (lib/contact.tcl), larger than
 # e; the element's normal impulse equals M1 |dv1| (Newmark's trapezoid rule is exact for the

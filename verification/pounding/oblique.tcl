@@ -1,5 +1,5 @@
 # SPDX-License-Identifier: MIT
-# Oblique impact with friction on a fixed target face (issue 5, hard case 2).
+# Oblique impact with friction on a fixed target face (hard case 2).
 # Closed forms (rigid-body impact with Coulomb friction): the normal velocity reverses by the
 # restitution, dv_n = (1 + e_eff) v_n (e_eff: no-tension restitution, lib/contact.tcl), and while
 # the contactor slides the tangential velocity drops by mu dv_n = mu (1 + e_eff) |v_n| (the

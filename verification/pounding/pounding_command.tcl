@@ -1,5 +1,5 @@
 # SPDX-License-Identifier: MIT
-# The `pounding` command between two girder ends (issue 5): pairs both ways, numbering tag,
+# The `pounding` command between two girder ends: pairs both ways, numbering tag,
 # tag+1, ..., all-or-nothing on errors, and a head-on impact of two girder ends of mass m each in
 # -ndf 3 and -ndf 6 models. Every contactor sits on a corner of the opposite face (corner contact;
 # each node is in two pairs: as contactor and as face node). Closed forms (e = 1): momentum

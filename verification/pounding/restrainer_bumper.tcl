@@ -1,5 +1,5 @@
 # SPDX-License-Identifier: MIT
-# Restrainer and bumper gap springs (issue 5, hard case 8): force-displacement through their
+# Restrainer and bumper gap springs (hard case 8): force-displacement through their
 # clearances in both directions and yielding, through the material tester and through a
 # zeroLength element between two girder ends under imposed displacements.
 # Closed forms: restrainer F = 0 for u <= gap, k (u - gap) beyond, Fy + b k (u - gap - Fy/k) once

@@ -1,5 +1,5 @@
 # SPDX-License-Identifier: MIT
-# Stick-slip oscillator (issue 5, hard case 4): a contactor of mass m pressed by its weight W on a
+# Stick-slip oscillator (hard case 4): a contactor of mass m pressed by its weight W on a
 # fixed face and tied to the ground by a spring k (zeroLength, Elastic). Closed form (Coulomb-
 # damped oscillator, e.g. Den Hartog): each half cycle the amplitude falls by 2 mu_k N/k, so
 # 4 mu_k N/k per cycle, and the motion stops at |x| <= mu_s N/k.

@@ -463,7 +463,7 @@ TEST(ViewerRecorderTest, ElementKindsFollowTypeNames) {
   EXPECT_EQ(viewerElementKind("somethingElse"), "other");
 }
 
-// Issue 7 limit: 8,000 frames of 100 nodes give a page under 10 MB (with the built page template).
+// Page size limit: 8,000 frames of 100 nodes stay under 10 MB (with the built page template).
 TEST(ViewerRecorderTest, CaseStudySizedPageStaysUnderTenMegabytes) {
   constexpr int kNodes = 100;
   constexpr int kFrames = 8000;

@@ -1,5 +1,5 @@
 # SPDX-License-Identifier: MIT
-# Fits the Mavroeidis-Papageorgiou (2003) near-fault pulse to the Takatori EW record (issue 6), so
+# Fits the Mavroeidis-Papageorgiou (2003) near-fault pulse to the Takatori EW record, so
 # that the bridge case study has a built-in motion when the record is not shipped.
 #
 #   dabs verification/bridge/tools/fit-pulse.tcl ?record.AT2?

@@ -1,5 +1,5 @@
 # SPDX-License-Identifier: MIT
-# Speed against error of the bridge case study (issue 6) and its stability runs.
+# Speed against error of the bridge case study and its stability runs.
 #
 #   dabs verification/bridge/tools/speed-study.tcl ?case? ?motion? ?outDir? ?speed|stability|both?
 #

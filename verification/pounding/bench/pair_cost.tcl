@@ -1,5 +1,5 @@
 # SPDX-License-Identifier: MIT
-# Cost of contact pairs that never touch (issue 5, "only what the scene needs"): a row of J girder
+# Cost of contact pairs that never touch (only what the scene needs): a row of J girder
 # joints, each two girder-end faces of 4 nodes on springs, shaken along the row; the same model is
 # timed without contact, with `pounding` pairs (8 per joint) beyond their search distance, and with
 # the pairs but no search distance (every pair evaluated, none touching). Not a pass/fail test:

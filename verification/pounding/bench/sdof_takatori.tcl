@@ -1,5 +1,5 @@
 # SPDX-License-Identifier: MIT
-# Pounding of two SDOF oscillators under the Takatori EW record (issue 5 benchmark): wall time
+# Pounding of two SDOF oscillators under the Takatori EW record (a benchmark): wall time
 # against the error in the exit relative velocity of the first impact and in the peak contact
 # force, for several steps, the error measured against a run with a 20x smaller step than the
 # finest. Not a pass/fail test: prints CSV. Units kN, m, t, s.
