@@ -3,7 +3,7 @@
 # iterations against the error from a reference run with a ten times smaller step.
 # Run: dabs verification/bench/piers-pushover.tcl ?csv?   (default piers-pushover.csv)
 # Model: circular RC pier D = 2 m, L = 10 m (the materials and section of
-# ../shared/data/reference/opensees/pier-pushover.tcl), one forceBeamColumn with 5 Lobatto points,
+# verification/opensees/pier-pushover.tcl), one forceBeamColumn with 5 Lobatto points,
 # PDelta, axial load 0.1 f'c Ag, 800 t deck mass at the top for the time history.
 #  1. pushover in X by DisplacementControl to 0.4 m (past the peak), steps du and du/10;
 #     error: largest |V - V_ref| at the coarse points, relative to the peak shear;
