@@ -119,7 +119,9 @@ template <class M>
 class StateFiberGroup final : public FiberGroup {
  public:
   using State = typename M::State;
-  explicit StateFiberGroup(const M& prototype) : law_(prototype) {}
+  /// `prototype` is the material object whose fibers this group holds (identity decides
+  /// membership) and whose parameters it uses.
+  explicit StateFiberGroup(const M& prototype) : law_(prototype), source_(&prototype) {}
 
   double stress(int i) const override { return trial_[static_cast<std::size_t>(i)].stress; }
   double strain(int i) const override { return trial_[static_cast<std::size_t>(i)].strain; }
@@ -133,10 +135,8 @@ class StateFiberGroup final : public FiberGroup {
     trial_.push_back(law_.virginState());
   }
   bool accepts(const UniaxialMaterial& material) const override {
-    return &material == source_ || (source_ == nullptr && typeid(material) == typeid(M));
+    return &material == source_;
   }
-  /// The material object whose fibers this group holds (identity decides membership).
-  void setSource(const UniaxialMaterial* source) { source_ = source; }
 
   Status setTrial(double e0, double kz, double ky, FiberSums& sums) override {
     // One pass: the update is inlined (no call to save the accumulators around), and each fiber's
@@ -178,7 +178,7 @@ class StateFiberGroup final : public FiberGroup {
 
  private:
   M law_;  ///< parameters (its own state is not used)
-  const UniaxialMaterial* source_ = nullptr;
+  const UniaxialMaterial* source_;  ///< only compared with, while the section is built
   std::vector<State> committed_, trial_;
 };
 
@@ -191,9 +191,7 @@ bool isA(const UniaxialMaterial& m) {
 
 template <class M>
 std::unique_ptr<FiberGroup> stateGroup(const UniaxialMaterial& prototype) {
-  auto g = std::make_unique<StateFiberGroup<M>>(static_cast<const M&>(prototype));
-  g->setSource(&prototype);
-  return g;
+  return std::make_unique<StateFiberGroup<M>>(static_cast<const M&>(prototype));
 }
 
 std::unique_ptr<FiberGroup> FiberGroup::forMaterial(const UniaxialMaterial& prototype) {

@@ -481,10 +481,9 @@ Status AnalysisModel::updateElements() {
   return Status::Ok;
 }
 
-void AnalysisModel::addElementMatrix(std::vector<double>& values, const ElementLink& l,
-                                     const Eigen::MatrixXd& m) const {
+void AnalysisModel::addElementMatrix(double* values, const ElementLink& l, const Eigen::MatrixXd& m) const {
   const double* local = m.data();
-  for (const MatEntry& e : l.mat) values[static_cast<std::size_t>(e.value)] += e.coef * local[e.local];
+  for (const MatEntry& e : l.mat) values[e.value] += e.coef * local[e.local];
 }
 
 void AnalysisModel::buildConstantDynamics() {
@@ -495,7 +494,7 @@ void AnalysisModel::buildConstantDynamics() {
     const ElementLink& l = elements_[k];
     const elements::Element& e = *l.element;
     const Eigen::MatrixXd m = e.mass();
-    addElementMatrix(mass, l, m);
+    addElementMatrix(mass.data(), l, m);
     if (!l.rayleighOn) continue;
     const auto& r = l.rayleigh;
     Eigen::MatrixXd c = r.alphaM * m + r.betaK0 * e.initialStiff();
@@ -504,7 +503,7 @@ void AnalysisModel::buildConstantDynamics() {
     } else if (r.betaK != 0.0 || r.betaKc != 0.0) {
       rayleighLeft_[k] = 1;
     }
-    addElementMatrix(damping, l, c);
+    addElementMatrix(damping.data(), l, c);
   }
   for (const NodeLink& nl : nodes_) {
     const double* m = nl.node->mass().data();
@@ -613,8 +612,7 @@ void AnalysisModel::addElementTangent(double* values, ElementLink& l,
     }
   }
   if (c.cM != 0.0) local.noalias() += c.cM * e.mass();
-  const double* m = local.data();
-  for (const MatEntry& me : l.mat) values[me.value] += me.coef * m[me.local];
+  addElementMatrix(values, l, local);
 }
 
 const Eigen::SparseMatrix<double>& AnalysisModel::formTangent(const AssemblyCoefficients& c) {
@@ -622,9 +620,7 @@ const Eigen::SparseMatrix<double>& AnalysisModel::formTangent(const AssemblyCoef
   const auto nnz = static_cast<std::size_t>(A_.nonZeros());
   // What cannot change between assemblies with the same coefficients (linear elements, nodal
   // masses, penalty rows) is summed once and copied; only the other elements are formed again.
-  const bool sameCoefficients = constantFor_ && constantFor_->cK == c.cK && constantFor_->cC == c.cC &&
-                                constantFor_->cM == c.cM && constantFor_->stiffness == c.stiffness;
-  if (!sameCoefficients) {
+  if (!constantFor_ || !constantFor_->sameMatrix(c)) {
     std::fill(values, values + nnz, 0.0);
     for (ElementLink& l : elements_)
       if (l.element->isLinear() && l.element->isActive()) addElementTangent(values, l, c);

@@ -30,6 +30,10 @@ struct AssemblyCoefficients {
   double cM = 0.0;
   StiffnessKind stiffness = StiffnessKind::Current;
   bool dynamic = false;
+  /// True when `o` forms the same matrix (the residual flag aside).
+  bool sameMatrix(const AssemblyCoefficients& o) const noexcept {
+    return cK == o.cK && cC == o.cC && cM == o.cM && stiffness == o.stiffness;
+  }
 };
 
 /// The equations of a domain: numbers the free dofs, keeps each element's scatter indices into the
@@ -152,7 +156,8 @@ class AnalysisModel {
   void buildScatter();
   void buildConstantDynamics();
   [[nodiscard]] Status updateElement(ElementLink& l, double dt) const;
-  void addElementMatrix(std::vector<double>& values, const ElementLink& l, const Eigen::MatrixXd& m) const;
+  /// Adds an element matrix (numDof x numDof) to the matrix values through the scatter indices.
+  void addElementMatrix(double* values, const ElementLink& l, const Eigen::MatrixXd& m) const;
   /// Adds cK K + cC C + cM M of one element to the matrix values.
   void addElementTangent(double* values, ElementLink& l, const AssemblyCoefficients& c) const;
   int valueIndex(int row, int col) const;

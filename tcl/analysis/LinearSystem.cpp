@@ -5,12 +5,6 @@
 
 namespace dabs::analysis {
 
-namespace {
-bool sameCoefficients(const AssemblyCoefficients& a, const AssemblyCoefficients& b) {
-  return a.cK == b.cK && a.cC == b.cC && a.cM == b.cM && a.stiffness == b.stiffness;
-}
-}  // namespace
-
 LinearSystem::LinearSystem(AnalysisModel& model, SolverKind kind) : model_(model), kind_(kind) {}
 
 void LinearSystem::patternChanged() {
@@ -29,7 +23,7 @@ long LinearSystem::factorizations() const noexcept {
 }
 
 Status LinearSystem::formTangent(const AssemblyCoefficients& c, bool reuse) {
-  if (reuse && factored_ && sameCoefficients(c, lastCoefficients_)) return Status::Ok;
+  if (reuse && factored_ && c.sameMatrix(lastCoefficients_)) return Status::Ok;
   if (model_.numEquations() == 0) {  // everything is prescribed: nothing to factorise
     factored_ = true;
     lastCoefficients_ = c;

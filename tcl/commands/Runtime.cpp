@@ -19,12 +19,16 @@ Runtime::Runtime(Tcl_Interp* interpreter)
     }
   };
   // DABS_THREADS=n runs element state determination on n threads for scripts that do not say
-  // `threads` themselves (an OpenSees script runs unchanged); a value that is not 1 to 256 is
-  // ignored.
+  // `threads` themselves (an OpenSees script runs unchanged); another value is reported and the
+  // analysis keeps one thread.
   if (const char* env = std::getenv("DABS_THREADS")) {
     char* end = nullptr;
     const long n = std::strtol(env, &end, 10);
-    if (end != env && *end == '\0' && n >= 1 && n <= 256) analysis->setThreads(static_cast<int>(n));
+    if (end != env && *end == '\0' && n >= 1 && n <= 256)
+      analysis->setThreads(static_cast<int>(n));
+    else
+      analysis->log(std::string("DABS_THREADS=\"") + env +
+                    "\" ignored: expected a whole number from 1 to 256; using 1 thread");
   }
 }
 

@@ -70,7 +70,7 @@ run() {
   t1=$(date +%s.%N)
   local a
   a=$(grep -o 'analyze_s=[0-9.e+-]*' "$dir/log" | tail -1 | cut -d= -f2)
-  echo "${a:-nan} $(echo "$t1 - $t0" | bc -l)"
+  echo "${a:-nan} $(awk -v a="$t0" -v b="$t1" 'BEGIN { print b - a }')"
 }
 
 printf '| case | dabs analyze s | OpenSees analyze s | OpenSees/dabs | process ratio | largest rel. diff | dabs iterations | factorisations | element updates | material updates |\n'
