@@ -35,8 +35,4 @@ Concrete01::State Concrete01::initialState() const {
   return s;
 }
 
-std::unique_ptr<UniaxialMaterial> Concrete01::clone() const {
-  return std::make_unique<Concrete01>(*this);
-}
-
 }  // namespace dabs::materials

@@ -24,7 +24,7 @@ struct Concrete01State {
 /// (1969). OpenSees: `uniaxialMaterial Concrete01 tag fpc epsc0 fpcu epsU`; as in OpenSees
 /// (OpenSees/OpenSees:SRC/material/uniaxial/Concrete01.cpp) positive inputs are taken as
 /// magnitudes of compressive values.
-class Concrete01 final : public StatefulUniaxial<Concrete01State> {
+class Concrete01 final : public StatefulUniaxial<Concrete01, Concrete01State> {
  public:
   using State = Concrete01State;
 
@@ -47,11 +47,7 @@ class Concrete01 final : public StatefulUniaxial<Concrete01State> {
   [[nodiscard]] Status computeTrial(const State& committed, State& trial, double strain) const;
   /// The virgin state.
   State virginState() const { return initialState(); }
-  double getStrain() const override { return trial_.strain; }
-  double getStress() const override { return trial_.stress; }
-  double getTangent() const override { return trial_.tangent; }
   double getInitialTangent() const override { return 2.0 * params_.fpc / params_.epsc0; }
-  [[nodiscard]] std::unique_ptr<UniaxialMaterial> clone() const override;
   /// Parameters with negative (compressive) signs.
   const Params& params() const noexcept { return params_; }
 

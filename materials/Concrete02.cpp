@@ -9,7 +9,6 @@
 
 namespace dabs::materials {
 
-
 Concrete02::Params Concrete02::Params::withDefaults(double fpc, double epsc0, double fpcu,
                                                     double epsU) {
   return Params{fpc, epsc0, fpcu, epsU, 0.1, 0.1 * std::fabs(fpc), 0.1 * fpc / epsc0};
@@ -44,10 +43,6 @@ Concrete02::State Concrete02::initialState() const {
   s.tangent = getInitialTangent();
   setMinimumStrain(s, 0.0, 0.0);
   return s;
-}
-
-std::unique_ptr<UniaxialMaterial> Concrete02::clone() const {
-  return std::make_unique<Concrete02>(*this);
 }
 
 }  // namespace dabs::materials

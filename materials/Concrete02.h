@@ -33,7 +33,7 @@ inline constexpr double kResidualTangent = 1.0e-10;
 /// OpenSees: `uniaxialMaterial Concrete02 tag fpc epsc0 fpcu epsU ?lambda ft Ets?`
 /// (OpenSees/OpenSees:SRC/material/uniaxial/Concrete02.cpp); defaults lambda = 0.1,
 /// ft = 0.1*|fpc|, Ets = 0.1*fpc/epsc0. Compression values must be negative.
-class Concrete02 final : public StatefulUniaxial<Concrete02State> {
+class Concrete02 final : public StatefulUniaxial<Concrete02, Concrete02State> {
  public:
   using State = Concrete02State;
 
@@ -59,11 +59,7 @@ class Concrete02 final : public StatefulUniaxial<Concrete02State> {
   [[nodiscard]] Status computeTrial(const State& committed, State& trial, double strain) const;
   /// The virgin state.
   State virginState() const { return initialState(); }
-  double getStrain() const override { return trial_.strain; }
-  double getStress() const override { return trial_.stress; }
-  double getTangent() const override { return trial_.tangent; }
   double getInitialTangent() const override { return Ec0_; }
-  [[nodiscard]] std::unique_ptr<UniaxialMaterial> clone() const override;
   const Params& params() const noexcept { return params_; }
 
   /// Compression envelope at `eps`: stress and tangent.

@@ -24,6 +24,4 @@ Status ENT::setTrialStrain(double strain, double /*strainRate*/) {
   return std::isfinite(trial_.stress) ? Status::Ok : Status::NonFinite;
 }
 
-std::unique_ptr<UniaxialMaterial> ENT::clone() const { return std::make_unique<ENT>(*this); }
-
 }  // namespace dabs::materials

@@ -14,7 +14,7 @@ struct ENTState {
 
 /// Elastic-no-tension law: stress = E*min(eps, 0).
 /// OpenSees: `uniaxialMaterial ENT tag E` (OpenSees/OpenSees:SRC/material/uniaxial/ENTMaterial.cpp).
-class ENT final : public StatefulUniaxial<ENTState> {
+class ENT final : public StatefulUniaxial<ENT, ENTState> {
  public:
   using State = ENTState;
 
@@ -27,11 +27,7 @@ class ENT final : public StatefulUniaxial<ENTState> {
   ENT(int tag, const Params& params);
 
   [[nodiscard]] Status setTrialStrain(double strain, double strainRate = 0.0) override;
-  double getStrain() const override { return trial_.strain; }
-  double getStress() const override { return trial_.stress; }
-  double getTangent() const override { return trial_.tangent; }
   double getInitialTangent() const override { return params_.E; }
-  [[nodiscard]] std::unique_ptr<UniaxialMaterial> clone() const override;
   const Params& params() const noexcept { return params_; }
 
  private:

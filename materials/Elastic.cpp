@@ -38,6 +38,4 @@ Status Elastic::setTrialStrain(double strain, double strainRate) {
   return std::isfinite(trial_.stress) ? Status::Ok : Status::NonFinite;
 }
 
-std::unique_ptr<UniaxialMaterial> Elastic::clone() const { return std::make_unique<Elastic>(*this); }
-
 }  // namespace dabs::materials

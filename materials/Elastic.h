@@ -19,7 +19,7 @@ struct ElasticState {
 /// stress = E*eps + eta*rate (eps >= 0), Eneg*eps + eta*rate (eps < 0).
 /// OpenSees: `uniaxialMaterial Elastic tag E ?eta? ?Eneg?`
 /// (OpenSees/OpenSees:SRC/material/uniaxial/ElasticMaterial.cpp).
-class Elastic final : public StatefulUniaxial<ElasticState> {
+class Elastic final : public StatefulUniaxial<Elastic, ElasticState> {
  public:
   using State = ElasticState;
 
@@ -36,13 +36,9 @@ class Elastic final : public StatefulUniaxial<ElasticState> {
   Elastic(int tag, const Params& params);
 
   [[nodiscard]] Status setTrialStrain(double strain, double strainRate = 0.0) override;
-  double getStrain() const override { return trial_.strain; }
   double getStrainRate() const override { return trial_.strainRate; }
-  double getStress() const override { return trial_.stress; }
-  double getTangent() const override { return trial_.tangent; }
   double getDampTangent() const override { return params_.eta; }
   double getInitialTangent() const override;
-  [[nodiscard]] std::unique_ptr<UniaxialMaterial> clone() const override;
   const Params& params() const noexcept { return params_; }
 
  private:

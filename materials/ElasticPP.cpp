@@ -45,8 +45,4 @@ Status ElasticPP::setTrialStrain(double strain, double /*strainRate*/) {
   return std::isfinite(trial_.stress) ? Status::Ok : Status::NonFinite;
 }
 
-std::unique_ptr<UniaxialMaterial> ElasticPP::clone() const {
-  return std::make_unique<ElasticPP>(*this);
-}
-
 }  // namespace dabs::materials

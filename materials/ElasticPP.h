@@ -19,7 +19,7 @@ struct ElasticPPState {
 /// initial strain: stress = E*(eps - eps0 - epsP) clipped to [E*epsyN, E*epsyP].
 /// OpenSees: `uniaxialMaterial ElasticPP tag E epsyP ?epsyN? ?eps0?`
 /// (OpenSees/OpenSees:SRC/material/uniaxial/ElasticPPMaterial.cpp).
-class ElasticPP final : public StatefulUniaxial<ElasticPPState> {
+class ElasticPP final : public StatefulUniaxial<ElasticPP, ElasticPPState> {
  public:
   using State = ElasticPPState;
 
@@ -36,11 +36,7 @@ class ElasticPP final : public StatefulUniaxial<ElasticPPState> {
   ElasticPP(int tag, const Params& params);
 
   [[nodiscard]] Status setTrialStrain(double strain, double strainRate = 0.0) override;
-  double getStrain() const override { return trial_.strain; }
-  double getStress() const override { return trial_.stress; }
-  double getTangent() const override { return trial_.tangent; }
   double getInitialTangent() const override { return params_.E; }
-  [[nodiscard]] std::unique_ptr<UniaxialMaterial> clone() const override;
   const Params& params() const noexcept { return params_; }
 
  private:

@@ -72,8 +72,4 @@ Status ElasticPPGap::setTrialStrain(double strain, double /*strainRate*/) {
   return std::isfinite(trial_.stress) ? Status::Ok : Status::NonFinite;
 }
 
-std::unique_ptr<UniaxialMaterial> ElasticPPGap::clone() const {
-  return std::make_unique<ElasticPPGap>(*this);
-}
-
 }  // namespace dabs::materials

@@ -21,7 +21,7 @@ struct ElasticPPGapState {
 /// point (OpenSees/OpenSees:SRC/material/uniaxial/EPPGapMaterial.cpp).
 /// Fy and gap both negative make a compression gap.
 /// OpenSees: `uniaxialMaterial ElasticPPGap tag E Fy gap ?eta? ?damage?`
-class ElasticPPGap final : public StatefulUniaxial<ElasticPPGapState> {
+class ElasticPPGap final : public StatefulUniaxial<ElasticPPGap, ElasticPPGapState> {
  public:
   using State = ElasticPPGapState;
 
@@ -38,13 +38,9 @@ class ElasticPPGap final : public StatefulUniaxial<ElasticPPGapState> {
   ElasticPPGap(int tag, const Params& params);
 
   [[nodiscard]] Status setTrialStrain(double strain, double strainRate = 0.0) override;
-  double getStrain() const override { return trial_.strain; }
-  double getStress() const override { return trial_.stress; }
-  double getTangent() const override { return trial_.tangent; }
   /// 0 when the gap is initially open, E when the material starts in contact (gap of the
   /// other sign), as OpenSees.
   double getInitialTangent() const override;
-  [[nodiscard]] std::unique_ptr<UniaxialMaterial> clone() const override;
   const Params& params() const noexcept { return params_; }
 
  private:

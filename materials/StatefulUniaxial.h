@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include <memory>
+
 #include "materials/UniaxialMaterial.h"
 
 namespace dabs::materials {
@@ -9,16 +11,35 @@ namespace dabs::materials {
 /// one assignment each and adding a history variable means editing one struct (style.md section 2;
 /// compare peer-open-source/xara BoucWenMG `cState = tState`).
 ///
-/// `State` must be a copyable aggregate holding strain, stress, tangent and every history
+/// `State` must be a copyable aggregate holding `strain`, `stress`, `tangent` (unless the stress
+/// does not depend on the strain) and every history
 /// variable. The derived class fills `trial_` in setTrialStrain, starting from `committed_`.
-template <class State>
+/// `Derived` is the material itself (it names the type `clone` copies), so the trial getters and
+/// `clone` are written here once for every material with a value state.
+template <class Derived, class State>
 class StatefulUniaxial : public UniaxialMaterial {
  public:
   using UniaxialMaterial::UniaxialMaterial;
 
+  double getStrain() const override { return trial_.strain; }
+  double getStress() const override { return trial_.stress; }
+  /// A state without a `tangent` member (a pure dashpot) has no stiffness.
+  double getTangent() const override {
+    if constexpr (requires(const State& s) { s.tangent; }) {
+      return trial_.tangent;
+    } else {
+      return 0.0;
+    }
+  }
+
   void commitState() final { committed_ = trial_; }
   void revertToLastCommit() final { trial_ = committed_; }
   void revertToStart() final { trial_ = committed_ = initialState(); }
+
+  /// A copy of the material with its parameters and its trial and committed states.
+  [[nodiscard]] std::unique_ptr<UniaxialMaterial> clone() const override {
+    return std::make_unique<Derived>(static_cast<const Derived&>(*this));
+  }
 
   /// Read-only access to the committed state, for tests and responses.
   const State& committedState() const noexcept { return committed_; }

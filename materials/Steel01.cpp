@@ -66,6 +66,4 @@ Status Steel01::setTrialStrain(double strain, double /*strainRate*/) {
   return std::isfinite(trial_.stress) ? Status::Ok : Status::NonFinite;
 }
 
-std::unique_ptr<UniaxialMaterial> Steel01::clone() const { return std::make_unique<Steel01>(*this); }
-
 }  // namespace dabs::materials

@@ -21,7 +21,7 @@ struct Steel01State {
 /// 1983, EERC 83/19: asymptote shift 1 + a1*((epsmax-epsmin)/(2*a2*epsy))^0.8).
 /// OpenSees: `uniaxialMaterial Steel01 tag Fy E0 b ?a1 a2 a3 a4?`, defaults a1=0 a2=55 a3=0 a4=55
 /// (OpenSees/OpenSees:SRC/material/uniaxial/Steel01.cpp).
-class Steel01 final : public StatefulUniaxial<Steel01State> {
+class Steel01 final : public StatefulUniaxial<Steel01, Steel01State> {
  public:
   using State = Steel01State;
 
@@ -40,11 +40,7 @@ class Steel01 final : public StatefulUniaxial<Steel01State> {
   Steel01(int tag, const Params& params);
 
   [[nodiscard]] Status setTrialStrain(double strain, double strainRate = 0.0) override;
-  double getStrain() const override { return trial_.strain; }
-  double getStress() const override { return trial_.stress; }
-  double getTangent() const override { return trial_.tangent; }
   double getInitialTangent() const override { return params_.E0; }
-  [[nodiscard]] std::unique_ptr<UniaxialMaterial> clone() const override;
   const Params& params() const noexcept { return params_; }
 
  private:

@@ -9,7 +9,6 @@
 
 namespace dabs::materials {
 
-
 void Steel02::Params::validate() const {
   auto positive = [](double v, const char* name) {
     if (!std::isfinite(v) || v <= 0.0) throw InputError(name, "must be positive");
@@ -47,7 +46,5 @@ Steel02::State Steel02::initialState() const {
   s.epsMin = -s.epsMax;
   return s;
 }
-
-std::unique_ptr<UniaxialMaterial> Steel02::clone() const { return std::make_unique<Steel02>(*this); }
 
 }  // namespace dabs::materials

@@ -38,7 +38,7 @@ struct Steel02State {
 /// OpenSees: `uniaxialMaterial Steel02 tag Fy E b ?R0 cR1 cR2? ?a1 a2 a3 a4? ?sigInit?`, defaults
 /// R0=15 cR1=0.925 cR2=0.15 a1=0 a2=1 a3=0 a4=1 sigInit=0
 /// (OpenSees/OpenSees:SRC/material/uniaxial/Steel02.cpp).
-class Steel02 final : public StatefulUniaxial<Steel02State> {
+class Steel02 final : public StatefulUniaxial<Steel02, Steel02State> {
  public:
   using State = Steel02State;
 
@@ -66,11 +66,7 @@ class Steel02 final : public StatefulUniaxial<Steel02State> {
   [[nodiscard]] Status computeTrial(const State& committed, State& trial, double strain) const;
   /// The virgin state.
   State virginState() const { return initialState(); }
-  double getStrain() const override { return trial_.strain; }
-  double getStress() const override { return trial_.stress; }
-  double getTangent() const override { return trial_.tangent; }
   double getInitialTangent() const override { return params_.E; }
-  [[nodiscard]] std::unique_ptr<UniaxialMaterial> clone() const override;
   const Params& params() const noexcept { return params_; }
 
  private:

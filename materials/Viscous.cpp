@@ -36,6 +36,4 @@ Status Viscous::setTrialStrain(double strain, double strainRate) {
   return std::isfinite(trial_.stress) ? Status::Ok : Status::NonFinite;
 }
 
-std::unique_ptr<UniaxialMaterial> Viscous::clone() const { return std::make_unique<Viscous>(*this); }
-
 }  // namespace dabs::materials

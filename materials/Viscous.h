@@ -17,7 +17,7 @@ struct ViscousState {
 /// alpha*C*|rate|^(alpha-1) uses max(|rate|, minVel) so that it stays finite for alpha < 1.
 /// OpenSees: `uniaxialMaterial Viscous tag C alpha ?minVel?`, minVel default 1e-11
 /// (OpenSees/OpenSees:SRC/material/uniaxial/ViscousMaterial.cpp).
-class Viscous final : public StatefulUniaxial<ViscousState> {
+class Viscous final : public StatefulUniaxial<Viscous, ViscousState> {
  public:
   using State = ViscousState;
 
@@ -32,13 +32,9 @@ class Viscous final : public StatefulUniaxial<ViscousState> {
   Viscous(int tag, const Params& params);
 
   [[nodiscard]] Status setTrialStrain(double strain, double strainRate = 0.0) override;
-  double getStrain() const override { return trial_.strain; }
   double getStrainRate() const override { return trial_.strainRate; }
-  double getStress() const override { return trial_.stress; }
-  double getTangent() const override { return 0.0; }
   double getDampTangent() const override { return trial_.dampTangent; }
   double getInitialTangent() const override { return 0.0; }
-  [[nodiscard]] std::unique_ptr<UniaxialMaterial> clone() const override;
   const Params& params() const noexcept { return params_; }
 
  private:

@@ -12,9 +12,8 @@
 #include <vector>
 
 #include "contact/NodeToSurfaceContact3d.h"
-#include "materials/BumperGap.h"
+#include "materials/GapSpring.h"
 #include "materials/InputError.h"
-#include "materials/RestrainerGap.h"
 #include "tcl/commands/Registry.h"
 
 namespace dabs::tcl {
@@ -49,11 +48,13 @@ materials::GapSpringParams readGapSpring(ArgReader& args) {
 
 std::unique_ptr<materials::UniaxialMaterial> parseRestrainer(Runtime& /*rt*/, ArgReader& args,
                                                              int tag) {
-  return std::make_unique<materials::RestrainerGap>(tag, readGapSpring(args));
+  return std::make_unique<materials::GapSpring>(
+      materials::GapSpring::restrainer(tag, readGapSpring(args)));
 }
 
 std::unique_ptr<materials::UniaxialMaterial> parseBumper(Runtime& /*rt*/, ArgReader& args, int tag) {
-  return std::make_unique<materials::BumperGap>(tag, readGapSpring(args));
+  return std::make_unique<materials::GapSpring>(
+      materials::GapSpring::bumper(tag, readGapSpring(args)));
 }
 
 // --- contact options shared by nodeToSurface and pounding -----------------------------------

@@ -7,7 +7,7 @@
 #include <type_traits>
 
 #include "tcl/commands/TclResult.h"
-#include "tcl/domain/ViewerRecorder.h"
+#include "tcl/viewer/ViewerRecorder.h"
 
 namespace dabs::tcl {
 

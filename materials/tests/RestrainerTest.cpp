@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 // Restrainer (tension-only gap spring with yielding): closed-form force-displacement through the
 // clearance in both directions, yielding, slack after yielding, FD tangent, trial/commit/revert.
-#include "materials/RestrainerGap.h"
+#include "materials/GapSpring.h"
 
 #include <gtest/gtest.h>
 
@@ -25,8 +25,8 @@ double stressAt(UniaxialMaterial& m, double eps) {
   return m.getStress();
 }
 
-TEST(RestrainerGapTest, NoForceUntilOpeningExceedsGapThenLinear) {
-  RestrainerGap r(1, {kK, kGap});
+TEST(RestrainerTest, NoForceUntilOpeningExceedsGapThenLinear) {
+  auto r = GapSpring::restrainer(1, {kK, kGap});
   EXPECT_EQ(stressAt(r, 0.03), 0.0);                          // inside the clearance
   EXPECT_EQ(r.getTangent(), 0.0);
   EXPECT_EQ(stressAt(r, -0.5), 0.0);                          // closing: never compression
@@ -35,8 +35,8 @@ TEST(RestrainerGapTest, NoForceUntilOpeningExceedsGapThenLinear) {
   EXPECT_EQ(r.getInitialTangent(), 0.0);
 }
 
-TEST(RestrainerGapTest, YieldsOnBilinearEnvelopeAndKeepsPermanentSlack) {
-  RestrainerGap r(1, yielding());
+TEST(RestrainerTest, YieldsOnBilinearEnvelopeAndKeepsPermanentSlack) {
+  auto r = GapSpring::restrainer(1, yielding());
   const double ey = kFy / kK;
   // Elastic up to Fy at opening gap + Fy/k.
   EXPECT_NEAR(stressAt(r, kGap + ey), kFy, kTol);
@@ -59,8 +59,8 @@ TEST(RestrainerGapTest, YieldsOnBilinearEnvelopeAndKeepsPermanentSlack) {
   EXPECT_NEAR(stressAt(r, kGap + e2), kFy + kB * kK * (e2 - ey), kTol);
 }
 
-TEST(RestrainerGapTest, TrialIsIdempotentAndRevertRestoresCommitted) {
-  RestrainerGap r(1, yielding());
+TEST(RestrainerTest, TrialIsIdempotentAndRevertRestoresCommitted) {
+  auto r = GapSpring::restrainer(1, yielding());
   const double f = stressAt(r, kGap + 0.04);
   (void)stressAt(r, kGap + 0.2);  // a yielding trial that is not committed
   EXPECT_NEAR(stressAt(r, kGap + 0.04), f, kTol);
@@ -74,8 +74,8 @@ TEST(RestrainerGapTest, TrialIsIdempotentAndRevertRestoresCommitted) {
   EXPECT_EQ(r.committedState().plastic, 0.0);
 }
 
-TEST(RestrainerGapTest, CloneIsIndependent) {
-  RestrainerGap r(1, yielding());
+TEST(RestrainerTest, CloneIsIndependent) {
+  auto r = GapSpring::restrainer(1, yielding());
   (void)stressAt(r, kGap + 0.1);
   r.commitState();
   auto c = r.clone();
@@ -84,8 +84,8 @@ TEST(RestrainerGapTest, CloneIsIndependent) {
   EXPECT_NE(c->getStress(), r.getStress());
 }
 
-TEST(RestrainerGapTest, TangentMatchesCentralDifferenceOnCyclicPath) {
-  RestrainerGap r(1, yielding());
+TEST(RestrainerTest, TangentMatchesCentralDifferenceOnCyclicPath) {
+  auto r = GapSpring::restrainer(1, yielding());
   const std::vector<double> path{0.02, 0.06, 0.08, 0.1, 0.09, 0.07, 0.0, -0.05, 0.06, 0.12, 0.13};
   const double ey = kFy / kK;
   int checked = 0;
@@ -105,7 +105,7 @@ TEST(RestrainerGapTest, TangentMatchesCentralDifferenceOnCyclicPath) {
   EXPECT_GE(checked, 8);
 }
 
-TEST(RestrainerGapTest, BadInputThrowsNamingTheField) {
+TEST(RestrainerTest, BadInputThrowsNamingTheField) {
   auto field = [](GapSpringParams p) {
     try {
       p.validate();
@@ -123,8 +123,8 @@ TEST(RestrainerGapTest, BadInputThrowsNamingTheField) {
   EXPECT_EQ(field({10.0, 0.0, 1.0, 0.5}), "none");
 }
 
-TEST(RestrainerGapTest, ZeroGapEngagesAtFirstOpening) {
-  RestrainerGap r(1, {kK, 0.0});
+TEST(RestrainerTest, ZeroGapEngagesAtFirstOpening) {
+  auto r = GapSpring::restrainer(1, {kK, 0.0});
   EXPECT_EQ(r.getInitialTangent(), kK);
   EXPECT_NEAR(stressAt(r, 1e-3), kK * 1e-3, kTol);
   EXPECT_EQ(stressAt(r, -1e-3), 0.0);
@@ -138,7 +138,7 @@ namespace testing {
 // both directions and well past yield.
 struct RestrainerContractCase {
   static std::unique_ptr<UniaxialMaterial> make() {
-    return std::make_unique<RestrainerGap>(1, GapSpringParams{100.0, 0.05, 2.0, 0.1});
+    return std::make_unique<GapSpring>(GapSpring::restrainer(1, GapSpringParams{100.0, 0.05, 2.0, 0.1}));
   }
   static std::vector<double> path() { return testing::cyclicPath(strainScale()); }
   static double strainScale() { return 0.05 + 2.0 / 100.0; }

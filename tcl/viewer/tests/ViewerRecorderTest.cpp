@@ -2,7 +2,7 @@
 // The Viewer recorder's page holds the recorded values: the data block is parsed back here with a
 // JSON reader and a base64/varint decoder written for this test (independent of the writer) and
 // compared with the Node recorder's file and with closed forms.
-#include "tcl/domain/ViewerRecorder.h"
+#include "tcl/viewer/ViewerRecorder.h"
 
 #include <gtest/gtest.h>
 

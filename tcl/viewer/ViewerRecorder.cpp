@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-#include "tcl/domain/ViewerRecorder.h"
+#include "tcl/viewer/ViewerRecorder.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,7 +1,6 @@
 // SPDX-License-Identifier: MIT
-#include "materials/RestrainerGap.h"
+#include "materials/GapSpring.h"
 
-#include <cassert>
 #include <cmath>
 
 #include "materials/InputError.h"
@@ -27,27 +26,28 @@ GapSpringResult gapSpringResponse(double e, double plastic, const GapSpringParam
 }
 }  // namespace detail
 
-RestrainerGap::RestrainerGap(int tag, const GapSpringParams& params)
-    : StatefulUniaxial(tag), params_(params) {
+GapSpring::GapSpring(int tag, const GapSpringParams& params, Engages engages)
+    : StatefulUniaxial(tag), params_(params), engages_(engages) {
   revertToStart();
 }
 
-Status RestrainerGap::setTrialStrain(double strain, double /*strainRate*/) {
+Status GapSpring::setTrialStrain(double strain, double /*strainRate*/) {
   if (!std::isfinite(strain)) return Status::NonFinite;
-  // Engagement = opening beyond the clearance.
-  const auto r = detail::gapSpringResponse(strain - params_.gap, committed_.plastic, params_);
-  trial_ = {strain, r.force, r.tangent, r.plastic};
+  // Engagement = deformation in the engaging direction beyond the clearance. The force acts in
+  // that direction too: stress = s F with s = +1 (opening) or -1 (closing), so
+  // d(stress)/d(strain) = s^2 dF/de = dF/de and the tangent keeps its sign.
+  const double s = engages_ == Engages::Opening ? 1.0 : -1.0;
+  const auto r = detail::gapSpringResponse(s * strain - params_.gap, committed_.plastic, params_);
+  trial_ = {strain, s * r.force, r.tangent, r.plastic};
   return Status::Ok;
 }
 
-double RestrainerGap::getInitialTangent() const { return params_.gap == 0.0 ? params_.k : 0.0; }
+double GapSpring::getInitialTangent() const { return params_.gap == 0.0 ? params_.k : 0.0; }
 
-std::unique_ptr<UniaxialMaterial> RestrainerGap::clone() const {
-  return std::make_unique<RestrainerGap>(*this);
-}
-
-std::optional<double> RestrainerGap::response(std::string_view name) const {
-  if (name == "plasticElongation") return trial_.plastic;
+std::optional<double> GapSpring::response(std::string_view name) const {
+  const std::string_view own =
+      engages_ == Engages::Opening ? "plasticElongation" : "plasticCrush";
+  if (name == own) return trial_.plastic;
   return std::nullopt;
 }
 
