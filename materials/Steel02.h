@@ -27,7 +27,9 @@ struct Steel02State {
   double sigR = 0.0;     ///< stress at the last reversal
   int kon = 0;           ///< 0 virgin, 1 loading (towards tension), 2 towards compression, 3 virgin at sigInit
   double R = 0.0;        ///< curvature of the current branch (a function of epsPl and eps0)
-  double invR = 0.0;     ///< 1 / R
+  /// Below this |eps*| the branch is its initial line to round-off: |eps*|^R < e^-38 (below half
+  /// an ulp of 1), so 1 + |eps*|^R and its power 1/R are exactly 1 (0 when R < 1).
+  double linearLimit = 0.0;
   double invSpan = 0.0;  ///< 1 / (eps0 - epsR), the strain normaliser of the branch
 };
 
@@ -86,7 +88,9 @@ inline void Steel02::setCurvature(State& s) const {
   const auto& p = params_;
   const double xi = std::fabs((s.epsPl - s.eps0) / epsy_);
   s.R = p.R0 * (1.0 - (p.cR1 * xi) / (p.cR2 + xi));
-  s.invR = 1.0 / s.R;
+  // exp(-38/R): the limit costs one exp per reversal and saves an exp and a log per update on
+  // every fiber still near the start of its branch (most bars of a structure that stays elastic).
+  s.linearLimit = s.R >= 1.0 ? std::exp(-38.0 / s.R) : 0.0;
   s.invSpan = 1.0 / (s.eps0 - s.epsR);
 }
 
@@ -162,12 +166,19 @@ inline Status Steel02::computeTrial(const State& committed, State& trial, double
   // |eps*|^R as exp(R log|eps*|): half the cost of pow, with a relative error of about
   // R |log eps*| times round-off (1e-14 here), far below anything a step resolves.
   const double absRat = std::fabs(epsRat);
+  if (absRat < trial.linearLimit) {
+    // 1 + t and (1 + t)^(1/R) below are exactly 1 here: the same numbers without exp and log.
+    trial.stress = (p.b * epsRat + (1.0 - p.b) * epsRat) * (trial.sig0 - trial.sigR) + trial.sigR;
+    trial.tangent = (p.b + (1.0 - p.b)) * (trial.sig0 - trial.sigR) * trial.invSpan;
+    return std::isfinite(trial.stress) && std::isfinite(trial.tangent) ? Status::Ok
+                                                                         : Status::NonFinite;
+  }
   const double t = absRat > 0.0 ? std::exp(trial.R * std::log(absRat)) : 0.0;
   const double dum1 = 1.0 + t;
   // (1 + t)^(1/R): near the elastic branch t is small and the binomial series to t^3 equals the
   // power to round-off (the next term is below 1e-17 for t < 1e-4 and R >= 1), at a fraction of
   // the cost of a second pow.
-  const double a = trial.invR;
+  const double a = 1.0 / trial.R;
   const double dum2 = t < steel02::kSeriesLimit && trial.R >= 1.0
                           ? 1.0 + a * t * (1.0 + (a - 1.0) * t * (0.5 + (a - 2.0) * t / 6.0))
                           : std::pow(dum1, a);

@@ -123,8 +123,8 @@ class StateFiberGroup final : public FiberGroup {
   /// membership) and whose parameters it uses.
   explicit StateFiberGroup(const M& prototype) : law_(prototype), source_(&prototype) {}
 
-  double stress(int i) const override { return trial_[static_cast<std::size_t>(i)].stress; }
-  double strain(int i) const override { return trial_[static_cast<std::size_t>(i)].strain; }
+  double stress(int i) const override { return current()[static_cast<std::size_t>(i)].stress; }
+  double strain(int i) const override { return current()[static_cast<std::size_t>(i)].strain; }
   int materialTag() const override { return law_.tag(); }
 
   void add(double y, double z, double area, const UniaxialMaterial& /*prototype*/) override {
@@ -152,6 +152,7 @@ class StateFiberGroup final : public FiberGroup {
       local.add(y, z, t.stress * a, t.tangent * a);
     }
     sums = local;
+    trialIsNew_ = true;
     return status;
   }
   void addTo(FiberSums& sums, bool initial) const override {
@@ -161,25 +162,37 @@ class StateFiberGroup final : public FiberGroup {
       const double e0 = law_.getInitialTangent();
       for (std::size_t i = 0; i < n; ++i) local.add(y_[i], z_[i], 0.0, e0 * area_[i]);
     } else {
+      const std::vector<State>& states = current();
       for (std::size_t i = 0; i < n; ++i)
-        local.add(y_[i], z_[i], trial_[i].stress * area_[i], trial_[i].tangent * area_[i]);
+        local.add(y_[i], z_[i], states[i].stress * area_[i], states[i].tangent * area_[i]);
     }
     sums = local;
   }
-  void commitState() override { committed_ = trial_; }
-  void revertToLastCommit() override { trial_ = committed_; }
+  // Every setTrial writes all trial states from the committed ones, so a commit can swap the two
+  // arrays instead of copying (on large models the copy streamed the whole state array through
+  // memory once more per step), and a revert only has to forget the trial.
+  void commitState() override {
+    if (trialIsNew_) std::swap(committed_, trial_);
+    trialIsNew_ = false;
+  }
+  void revertToLastCommit() override { trialIsNew_ = false; }
   void revertToStart() override {
     std::fill(committed_.begin(), committed_.end(), law_.virginState());
-    trial_ = committed_;
+    trialIsNew_ = false;
   }
   std::unique_ptr<FiberGroup> clone() const override {
     return std::make_unique<StateFiberGroup>(*this);
   }
 
  private:
+  /// The states the fibers are in: the trial ones after a setTrial, the committed ones after a
+  /// commit or revert (then trial_ holds stale values, overwritten by the next setTrial).
+  const std::vector<State>& current() const { return trialIsNew_ ? trial_ : committed_; }
+
   M law_;  ///< parameters (its own state is not used)
   const UniaxialMaterial* source_;  ///< only compared with, while the section is built
   std::vector<State> committed_, trial_;
+  bool trialIsNew_ = false;  ///< trial_ was computed after the last commit or revert
 };
 
 template <class M>

@@ -29,6 +29,21 @@ TEST(Steel02Test, FirstLoadingFollowsMenegottoPintoWithR0) {
   }
 }
 
+TEST(Steel02Test, StressAndTangentAroundTheLinearLimitOfTheBranch) {
+  // Near the start of a branch the update skips exp and log where |eps*|^R < e^-38 (R = 15 here:
+  // |eps*| < e^(-38/15) = 0.0794). On both sides of that limit the stress and tangent must be the
+  // published curve's: sig* from menegottoPinto, E* = b + (1-b)/(1+|eps*|^R)^(1+1/R).
+  const double limit = std::exp(-38.0 / 15.0);
+  for (double ratio : {0.5 * limit, 0.999 * limit, 1.001 * limit, 2.0 * limit, -0.999 * limit}) {
+    Steel02 m(1, Steel02::Params{kFy, kE, kB});
+    ASSERT_TRUE(ok(m.setTrialStrain(ratio * kEpsY)));
+    EXPECT_NEAR(m.getStress(), kFy * menegottoPinto(ratio, kB, 15.0), 1e-15 * kFy) << ratio;
+    const double t = std::pow(std::fabs(ratio), 15.0);
+    const double eStar = kB + (1.0 - kB) / std::pow(1.0 + t, 1.0 + 1.0 / 15.0);
+    EXPECT_NEAR(m.getTangent(), kE * eStar, 1e-15 * kE) << ratio;
+  }
+}
+
 TEST(Steel02Test, ElasticStartAndHardeningAsymptote) {
   Steel02 m(1, Steel02::Params{kFy, kE, kB});
   ASSERT_TRUE(ok(m.setTrialStrain(0.01 * kEpsY)));
