@@ -3,8 +3,9 @@
 
 #include <Eigen/LU>
 #include <Eigen/SparseCholesky>
-#include <Eigen/SparseLU>
 #include <map>
+
+#include <klu.h>
 
 #include "materials/InputError.h"
 #include "tcl/analysis/SparseLdlt.h"
@@ -44,27 +45,85 @@ class SparseLdltSolver final : public LinearSolver {
   bool definiteOnly_;
 };
 
-class SparseLuSolver final : public LinearSolver {
+/// Sparse LU by KLU (SuiteSparse; Davis & Palamadai Natarajan 2010, ACM TOMS 37(3) 36): the
+/// ordering once per pattern, a factorisation with partial pivoting, and then refactorisations
+/// that reuse its pivot sequence (no search, no symbolic work) as long as they stay well
+/// conditioned. Newton's tangents change their numbers, not their pattern, from one iteration to
+/// the next, so most factorisations are refactorisations.
+class KluSolver final : public LinearSolver {
  public:
+  KluSolver() {
+    klu_defaults(&common_);
+    common_.halt_if_singular = 1;
+  }
+  ~KluSolver() override { release(); }
+  KluSolver(const KluSolver&) = delete;
+  KluSolver& operator=(const KluSolver&) = delete;
+
   void analyzePattern(const Eigen::SparseMatrix<double>& A) override {
-    lu_.analyzePattern(A);
-    analyzed_ = true;
+    release();
+    n_ = static_cast<int>(A.rows());
+    if (n_ == 0) return;
+    const Eigen::SparseMatrix<double>& c = compressed(A);
+    symbolic_ = klu_analyze(n_, const_cast<int*>(c.outerIndexPtr()),
+                            const_cast<int*>(c.innerIndexPtr()), &common_);
   }
   Status factorize(const Eigen::SparseMatrix<double>& A) override {
     ++factorizations_;
-    if (!analyzed_) analyzePattern(A);
-    lu_.factorize(A);
-    // SparseLU reports exactly zero pivots; a negligible pivot shows up as a non-finite solve.
-    return lu_.info() == Eigen::Success ? Status::Ok : Status::Singular;
+    if (symbolic_ == nullptr || A.rows() != n_) analyzePattern(A);
+    if (n_ == 0) return Status::Ok;
+    if (symbolic_ == nullptr) return Status::Singular;
+    const Eigen::SparseMatrix<double>& c = compressed(A);
+    int* ap = const_cast<int*>(c.outerIndexPtr());
+    int* ai = const_cast<int*>(c.innerIndexPtr());
+    double* ax = const_cast<double*>(c.valuePtr());
+    if (numeric_ != nullptr && klu_refactor(ap, ai, ax, symbolic_, numeric_, &common_) &&
+        common_.status == KLU_OK && klu_rcond(symbolic_, numeric_, &common_) &&
+        common_.rcond >= kRefactorConditionLoss * rcondAtPivoting_ &&
+        common_.rcond > kRelativePivotTolerance) {
+      return Status::Ok;
+    }
+    // First factorisation, or the old pivot sequence has become a poor one: choose pivots anew.
+    if (numeric_ != nullptr) klu_free_numeric(&numeric_, &common_);
+    numeric_ = klu_factor(ap, ai, ax, symbolic_, &common_);
+    if (numeric_ == nullptr || common_.status != KLU_OK) return Status::Singular;
+    // rcond here is min |U_ii| / max |U_ii|: the same relative pivot test as the LDL^T's.
+    if (!klu_rcond(symbolic_, numeric_, &common_) || !(common_.rcond > kRelativePivotTolerance))
+      return Status::Singular;
+    rcondAtPivoting_ = common_.rcond;
+    return Status::Ok;
   }
   Status solve(const Eigen::VectorXd& b, Eigen::VectorXd& x) override {
-    x = lu_.solve(b);
+    x = b;
+    if (n_ == 0) return Status::Ok;
+    if (numeric_ == nullptr || !klu_solve(symbolic_, numeric_, n_, 1, x.data(), &common_))
+      return Status::NonFinite;
     return x.allFinite() ? Status::Ok : Status::NonFinite;
   }
 
  private:
-  Eigen::SparseLU<Eigen::SparseMatrix<double>, Eigen::COLAMDOrdering<int>> lu_;
-  bool analyzed_ = false;
+  /// A refactorisation whose pivot ratio min|U_ii|/max|U_ii| has fallen below this fraction of the
+  /// ratio at the last pivot search is redone with a new search (the tangent has changed enough
+  /// that the old pivot order may lose accuracy).
+  static constexpr double kRefactorConditionLoss = 1e-3;
+
+  const Eigen::SparseMatrix<double>& compressed(const Eigen::SparseMatrix<double>& A) {
+    if (A.isCompressed()) return A;
+    copy_ = A;
+    copy_.makeCompressed();
+    return copy_;
+  }
+  void release() {
+    if (numeric_ != nullptr) klu_free_numeric(&numeric_, &common_);
+    if (symbolic_ != nullptr) klu_free_symbolic(&symbolic_, &common_);
+  }
+
+  klu_common common_{};
+  klu_symbolic* symbolic_ = nullptr;
+  klu_numeric* numeric_ = nullptr;
+  int n_ = 0;
+  double rcondAtPivoting_ = 0.0;
+  Eigen::SparseMatrix<double> copy_;
 };
 
 class DenseLuSolver final : public LinearSolver {
@@ -108,7 +167,7 @@ SolverKind solverKindFromName(const std::string& name) {
 
 std::unique_ptr<LinearSolver> LinearSolver::create(SolverKind kind, bool nonSymmetric) {
   if (kind == SolverKind::DenseLU) return std::make_unique<DenseLuSolver>();
-  if (kind == SolverKind::SparseLU || nonSymmetric) return std::make_unique<SparseLuSolver>();
+  if (kind == SolverKind::SparseLU || nonSymmetric) return std::make_unique<KluSolver>();
   return std::make_unique<SparseLdltSolver>(false);
 }
 
