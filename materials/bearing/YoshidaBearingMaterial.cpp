@@ -48,8 +48,10 @@ SubStep subStep(const YoshidaBearingMaterial::Params& p, const Vec2& u, const Ve
 
   // Back-force factor a = max(0, alpha0 - beta (Umax/U0)^q), clipped as the issue requires.
   const double ratio = r.umax / p.U0;
-  double a = p.alpha0 - p.beta * std::pow(ratio, p.q);
-  double da_dM = (ratio > 0.0) ? -p.beta * p.q * std::pow(ratio, p.q - 1.0) / p.U0 : 0.0;
+  // One pow for both: d(ratio^q)/d Umax = q ratio^q / ratio / U0.
+  const double ratioQ = ratio > 0.0 ? std::pow(ratio, p.q) : 0.0;
+  double a = p.alpha0 - p.beta * ratioQ;
+  double da_dM = (ratio > 0.0) ? -p.beta * p.q * ratioQ / ratio / p.U0 : 0.0;
   if (a <= 0.0) {
     a = 0.0;
     da_dM = 0.0;
@@ -73,9 +75,14 @@ SubStep subStep(const YoshidaBearingMaterial::Params& p, const Vec2& u, const Ve
     // at most |b|/2) increases monotonically to it.
     const double share = p.n >= 1.0 ? 1.0 : 0.5;
     zeta = share * bn * opa;
-    if (d > 0.0) zeta = std::min(zeta, std::pow(share * bn / d, 1.0 / p.n));
-    r.converged = false;
-    for (int it = 0; it < kMaxLocalIterations; ++it) {
+    if (p.n == 1.0) {
+      // phi is linear: zeta (1/(1+a) + d) = |b|, solved without iteration or pow.
+      zeta = bn / (1.0 / opa + d);
+    } else if (d > 0.0) {
+      zeta = std::min(zeta, std::pow(share * bn / d, 1.0 / p.n));
+    }
+    r.converged = p.n == 1.0;
+    for (int it = 0; it < kMaxLocalIterations && !r.converged; ++it) {
       const double zn1 = std::pow(zeta, p.n - 1.0);
       const double phi = zeta / opa + d * zn1 * zeta - bn;
       const double dphi = 1.0 / opa + p.n * d * zn1;
@@ -101,7 +108,7 @@ SubStep subStep(const YoshidaBearingMaterial::Params& p, const Vec2& u, const Ve
   // For n < 1, dg/dz is unbounded at z = 0: there (b = 0, a point of no interest but reachable)
   // z does not move to first order, J^-1 = 0.
   const bool singular = p.n < 1.0 && zeta == 0.0;
-  const double zn1 = singular ? 0.0 : std::pow(zeta, p.n - 1.0);
+  const double zn1 = singular ? 0.0 : p.n == 1.0 ? 1.0 : std::pow(zeta, p.n - 1.0);
   const Vec2 g = zn1 * r.z;  // |z|^(n-1) z
   const Mat2 G = zn1 * (Mat2::Identity() + (p.n - 1.0) * e * e.transpose());  // dg/dz
   const Mat2 J = Mat2::Identity() / opa + d * G;

@@ -322,6 +322,11 @@ TEST(YoshidaBearingMaterialTest, TangentMatchesFiniteDifference) {
        Vec2(2.7 * kU0, 1.1 * kU0), 0.01},
       {"n < 1, unloading", [&] { Params q = full; q.n = 0.4; return q; }(), {a, b},
        Vec2(0.4 * kU0, -0.3 * kU0), 0.02},
+      // n = 1 is solved in closed form rather than by the local Newton iteration.
+      {"n = 1, loading", [&] { Params q = full; q.n = 1.0; return q; }(), {a},
+       Vec2(2.7 * kU0, 1.1 * kU0), 0.01},
+      {"n = 1, unloading", [&] { Params q = full; q.n = 1.0; return q; }(), {a, b},
+       Vec2(0.4 * kU0, -0.3 * kU0), 0.02},
   };
   for (const auto& c : cases) {
     YoshidaBearingMaterial m(1, c.p);
