@@ -89,6 +89,30 @@ void ArgReader::fail(std::string_view what) const {
   throw ArgError(msg);
 }
 
+void ArgReader::record(std::string_view name, std::size_t i) { named_.emplace_back(name, i); }
+
+const std::pair<std::string, std::size_t>* ArgReader::readUnder(std::string_view name) const {
+  for (auto it = named_.rbegin(); it != named_.rend(); ++it) {
+    std::string_view recorded = it->first;
+    if (recorded == name || (isOptionWord(recorded) && recorded.substr(1) == name)) return &*it;
+  }
+  return nullptr;
+}
+
+std::size_t ArgReader::positionOf(std::string_view name) const noexcept {
+  const auto* read = readUnder(name);
+  return read != nullptr ? read->second : 0;
+}
+
+void ArgReader::failArgument(std::string_view name, std::string_view what) const {
+  const auto* read = readUnder(name);
+  if (read == nullptr || read->second >= tokens_.size())
+    fail(std::string(name) + " " + std::string(what));
+  // Named as the user wrote it (an option with its '-').
+  fail(read->second, read->first,
+       std::string(what) + ", got \"" + std::string(text(read->second)) + "\"");
+}
+
 void ArgReader::expected(std::size_t i, std::string_view name, std::string_view what) const {
   if (i >= tokens_.size()) fail(i, name, std::string(what) + ", got nothing (too few arguments)");
   fail(i, name, std::string(what) + ", got \"" + std::string(text(i)) + "\"");
@@ -101,6 +125,7 @@ int ArgReader::integer(std::string_view name) {
     expected(i, name, integerExpected(i < tokens_.size() ? tokens_[i] : nullptr));
   used_[i] = true;
   last_ = i;
+  record(name, i);
   return value;
 }
 
@@ -110,6 +135,7 @@ double ArgReader::real(std::string_view name) {
   if (i >= tokens_.size() || !parseReal(tokens_[i], value)) expected(i, name, "expected a number");
   used_[i] = true;
   last_ = i;
+  record(name, i);
   return value;
 }
 
@@ -118,6 +144,7 @@ std::string ArgReader::word(std::string_view name) {
   if (i >= tokens_.size()) expected(i, name, "expected a word");
   used_[i] = true;
   last_ = i;
+  record(name, i);
   return std::string(text(i));
 }
 
@@ -126,6 +153,7 @@ Tcl_Obj* ArgReader::object(std::string_view name) {
   if (i >= tokens_.size()) expected(i, name, "expected a value");
   used_[i] = true;
   last_ = i;
+  record(name, i);
   return tokens_[i];
 }
 
@@ -150,6 +178,7 @@ std::vector<int> ArgReader::integers(std::string_view name, std::size_t atLeast)
     }
     used_[i] = true;
     last_ = i;
+    if (out.empty()) record(name, i);
     out.push_back(value);
   }
   if (out.size() < atLeast) {
@@ -170,6 +199,7 @@ std::vector<double> ArgReader::reals(std::string_view name, std::size_t atLeast)
     }
     used_[i] = true;
     last_ = i;
+    if (out.empty()) record(name, i);
     out.push_back(value);
   }
   if (out.size() < atLeast) {
@@ -207,6 +237,7 @@ std::optional<double> ArgReader::optionalOption(std::string_view key) {
   if (i + 1 >= tokens_.size() || used_[i + 1] || !parseReal(tokens_[i + 1], value))
     expected(i + 1, key, "expected a number after " + std::string(key));
   used_[i + 1] = true;
+  record(key, i + 1);
   return value;
 }
 
@@ -222,6 +253,7 @@ int ArgReader::option(std::string_view key, int fallback) {
   if (i + 1 >= tokens_.size() || used_[i + 1] || !parseInteger(tokens_[i + 1], value))
     expected(i + 1, key, "expected an integer after " + std::string(key));
   used_[i + 1] = true;
+  record(key, i + 1);
   return value;
 }
 
@@ -232,6 +264,7 @@ std::optional<std::string> ArgReader::optionalWordOption(std::string_view key) {
   if (i + 1 >= tokens_.size() || used_[i + 1])
     expected(i + 1, key, "expected a value after " + std::string(key));
   used_[i + 1] = true;
+  record(key, i + 1);
   return std::string(text(i + 1));
 }
 
@@ -243,6 +276,7 @@ std::optional<std::vector<double>> ArgReader::optionReals(std::string_view key, 
   const std::size_t i = findKey(key);
   if (i == kNone) return std::nullopt;
   used_[i] = true;
+  record(key, i + 1);
   std::vector<double> out(n);
   for (std::size_t k = 0; k < n; ++k) {
     const std::size_t j = i + 1 + k;
@@ -257,6 +291,7 @@ std::optional<std::vector<double>> ArgReader::optionRealList(std::string_view ke
   const std::size_t i = findKey(key);
   if (i == kNone) return std::nullopt;
   used_[i] = true;
+  record(key, i + 1);
   std::vector<double> out;
   double value = 0.0;
   for (std::size_t j = i + 1; j < tokens_.size() && !used_[j] && parseReal(tokens_[j], value); ++j) {
@@ -271,6 +306,7 @@ std::optional<std::vector<int>> ArgReader::optionIntegerList(std::string_view ke
   const std::size_t i = findKey(key);
   if (i == kNone) return std::nullopt;
   used_[i] = true;
+  record(key, i + 1);
   std::vector<int> out;
   int value = 0;
   for (std::size_t j = i + 1; j < tokens_.size() && !used_[j] && parseInteger(tokens_[j], value);
@@ -286,6 +322,7 @@ std::optional<std::pair<int, int>> ArgReader::optionTagRange(std::string_view ke
   const std::size_t i = findKey(key);
   if (i == kNone) return std::nullopt;
   used_[i] = true;
+  record(key, i + 1);
   int ends[2] = {0, 0};
   for (std::size_t k = 0; k < 2; ++k) {
     const std::size_t j = i + 1 + k;

@@ -94,18 +94,32 @@ class ArgReader {
   [[noreturn]] void fail(std::string_view what) const;
   /// Position (1-based) of the most recently read positional argument.
   std::size_t lastPosition() const noexcept { return last_; }
+  /// Position (1-based) of the argument last read under `name`: a positional argument's name, or
+  /// an option's key with or without its '-' (the position of the option's first value); 0 when
+  /// nothing was read under that name. Every reader records it, so a validation error raised
+  /// after reading (an InputError naming a field) can point at the argument it is about.
+  std::size_t positionOf(std::string_view name) const noexcept;
+  /// Throws an ArgError about the argument read under `name` ("argument N (name) what, got
+  /// "token""), or about the command as a whole ("name what") when none was read under it.
+  [[noreturn]] void failArgument(std::string_view name, std::string_view what) const;
+  /// The token at position `pos` (1-based, as positionOf returns), "" past the end.
+  std::string_view token(std::size_t pos) const { return pos < tokens_.size() ? text(pos) : ""; }
 
  private:
   std::size_t findKey(std::string_view key) const;  // index in tokens_ or npos
   std::size_t nextUnread() const;                   // index of next unused token or size
   std::string_view text(std::size_t i) const;
   [[noreturn]] void expected(std::size_t i, std::string_view name, std::string_view what) const;
+  void record(std::string_view name, std::size_t i);  // argument i was read under `name`
+  // The last (name, position) read under `name` (or under "-name"), or null.
+  const std::pair<std::string, std::size_t>* readUnder(std::string_view name) const;
 
   std::vector<Tcl_Obj*> tokens_;  // tokens_[0] is the command word
   std::vector<bool> used_;
   std::string usage_;
   std::string context_;
   std::size_t last_ = 0;
+  std::vector<std::pair<std::string, std::size_t>> named_;  // (name, position) of every read
 };
 
 /// True for a token that is an option word: starts with '-' followed by a letter.

@@ -30,6 +30,17 @@ TEST_F(CommandTableTest, NonNumberNamesCommandArgumentAndToken) {
   EXPECT_EQ(ok("getNodeTags"), "");
 }
 
+TEST_F(CommandTableTest, ValidationErrorPointsAtTheArgumentItIsAbout) {
+  // The material's own validation names the field (n, subIncrement); the command layer finds
+  // where that field was read and names its position and token.
+  ok("model basic -ndm 3 -ndf 6");
+  std::string msg = error("biaxialMaterial Yoshida 1 0.26 0.15 -1.0 4.3 3.5 0.06 0.002");
+  EXPECT_NE(msg.find("argument 5: n must be positive, got \"-1.0\""), std::string::npos) << msg;
+  msg = error("biaxialMaterial Yoshida 1 0.26 0.15 1.0 4.3 3.5 0.06 0.002 -subIncrement 0");
+  EXPECT_NE(msg.find("argument 11: subIncrement must be positive, got \"0\""), std::string::npos)
+      << msg;
+}
+
 TEST_F(CommandTableTest, WrongCountOfCoordinates) {
   ok("model basic -ndm 3 -ndf 6");
   EXPECT_NE(error("node 1 0.0 1.0").find("too few arguments"), std::string::npos);
