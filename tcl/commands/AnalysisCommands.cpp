@@ -275,6 +275,10 @@ void wipeCmd(Runtime& rt, ArgReader& a) {
   rt.currentPattern = -1;
 }
 
+// `initialize`: OpenSees sets up its analysis and domain here; dabs initialises elements when they
+// are added and builds the equations at the first `analyze` or `eigen`, so nothing is left to do.
+void initializeCmd(Runtime& /*rt*/, ArgReader& a) { a.finish(); }
+
 void wipeAnalysisCmd(Runtime& rt, ArgReader& a) {
   a.finish();
   rt.analysis->wipe();
@@ -327,6 +331,7 @@ constexpr CommandEntry kCommands[] = {
     {"eigen", "eigen ?-fullGenLapack? numModes", eigenCmd},
     {"wipe", "wipe", wipeCmd},
     {"wipeAnalysis", "wipeAnalysis", wipeAnalysisCmd},
+    {"initialize", "initialize", initializeCmd},
     {"reset", "reset", resetCmd},
 };
 

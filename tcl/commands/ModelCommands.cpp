@@ -273,6 +273,19 @@ void getNdfCmd(Runtime& rt, ArgReader& a) {
   setResult(rt, rt.builder.ndf);
 }
 
+// `pset name ?value?`: OpenSees' parameter-recording variant of Tcl's `set` (it also lists the
+// pair in its simulation information, which dabs does not keep); reads or sets the variable.
+void psetCmd(Runtime& rt, ArgReader& a) {
+  Tcl_Obj* name = a.object("name");
+  Tcl_Obj* value = a.hasMore() ? a.object("value") : nullptr;
+  a.finish();
+  Tcl_Obj* result = value != nullptr ? Tcl_ObjSetVar2(rt.interp, name, nullptr, value, TCL_LEAVE_ERR_MSG)
+                                     : Tcl_ObjGetVar2(rt.interp, name, nullptr, TCL_LEAVE_ERR_MSG);
+  if (result == nullptr)
+    throw InputError("name", std::string(Tcl_GetStringResult(rt.interp)));
+  Tcl_SetObjResult(rt.interp, result);
+}
+
 constexpr CommandEntry kCommands[] = {
     {"model", "model basic -ndm ndm ?-ndf ndf?", modelCmd},
     {"node", "node tag x ?y? ?z? ?-mass m1 .. mndf? ?-ndf ndf?", nodeCmd},
@@ -288,6 +301,7 @@ constexpr CommandEntry kCommands[] = {
     {"element", "element type tag nodes... args...", elementCmd},
     {"getNDM", "getNDM", getNdmCmd},
     {"getNDF", "getNDF", getNdfCmd},
+    {"pset", "pset name ?value?", psetCmd},
 };
 
 }  // namespace

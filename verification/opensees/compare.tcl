@@ -1,0 +1,59 @@
+# SPDX-License-Identifier: MIT
+# Runs one of the compatibility inputs (compat-*.tcl) in dabs and compares the table it writes,
+# <name>.out in the working directory, with <name>.csv beside the input, which OpenSees 3.8.0 wrote
+# from the same input. Usage: dabs compare.tcl input.tcl ?relTol?
+# Each number is compared with OpenSees' to relTol (default 1e-6) of the largest magnitude in its
+# column, so near-zero entries of a column are held to the column's scale.
+source [file join [file dirname [info script]] .. lib check.tcl]
+
+proc ::verify::readTable {path} {
+  set f [open $path]
+  set rows {}
+  while {[gets $f line] >= 0} {
+    set line [string trim [string map {, " "} $line]]
+    if {$line eq "" || ![string is double -strict [lindex $line 0]]} continue
+    lappend rows $line
+  }
+  close $f
+  return $rows
+}
+
+proc ::verify::compareTables {name ours theirs tol} {
+  checkTrue "$name: same number of rows ([llength $ours] in dabs, [llength $theirs] in OpenSees)" \
+    [expr {[llength $ours] == [llength $theirs]}]
+  set scale {}
+  foreach row $theirs {
+    set i 0
+    foreach v $row {
+      if {[llength $scale] <= $i} { lappend scale 0.0 }
+      lset scale $i [expr {max([lindex $scale $i], abs($v))}]
+      incr i
+    }
+  }
+  set worst 0.0; set where ""
+  set n 0
+  foreach a $ours b $theirs {
+    incr n
+    if {[llength $a] != [llength $b]} {
+      checkTrue "$name: row $n has [llength $b] columns as in OpenSees (dabs [llength $a])" 0
+      return
+    }
+    set i 0
+    foreach x $a y $b {
+      set s [expr {max([lindex $scale $i], 1e-300)}]
+      set err [expr {abs($x - $y) / $s}]
+      if {$err > $worst} { set worst $err; set where "row $n column [expr {$i + 1}]: dabs $x, OpenSees $y" }
+      incr i
+    }
+  }
+  checkAbs "$name: largest difference / column scale ($where)" $worst 0.0 $tol
+}
+
+set input [file normalize [lindex $argv 0]]
+set tol [expr {[llength $argv] > 1 ? [lindex $argv 1] : 1e-6}]
+set name [file rootname [file tail $input]]
+file delete $name.out
+source $input
+::verify::compareTables $name [::verify::readTable $name.out] \
+  [::verify::readTable [file join [file dirname $input] $name.csv]] $tol
+finish
