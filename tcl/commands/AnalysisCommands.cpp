@@ -248,16 +248,37 @@ void analyzeCmd(Runtime& rt, ArgReader& a) {
   setResult(rt, result);
 }
 
+// `eigen ?options? numModes` (OpenSees SRC/tcl/commands.cpp eigenAnalysis): solver options are
+// accepted, as Eigen's solvers replace them; unknown options are reported on stderr and ignored,
+// as OpenSees does. With no analysis yet, OpenSees creates a transient one (Newmark 1/2 1/4, the
+// Transformation handler unless `constraints` was given) and keeps it for later `analyze` calls.
 void eigenCmd(Runtime& rt, ArgReader& a) {
-  bool dense = a.flag("-fullGenLapack");
-  (void)a.flag("-genBandArpack");
-  (void)a.flag("-symmBandLapack");
-  (void)a.flag("-generalized");
-  if (a.flag("-standard")) a.fail("-standard eigen problems are not supported");
-  const int n = a.integer("numModes");
-  a.finish();
-  if (n < 1) a.fail(1, "numModes", "must be at least 1");
-  const auto result = rt.analysis->eigen(n, dense);
+  std::vector<std::string> options;
+  while (a.hasMore()) options.push_back(a.word("option"));
+  if (options.empty()) a.fail(1, "numModes", "is missing");
+  bool dense = false, largest = false;
+  for (std::size_t i = 0; i + 1 < options.size(); ++i) {
+    std::string o = options[i];
+    if (o.size() > 1 && o[0] == '-') o.erase(0, 1);
+    if (o.size() > 5 && o.ends_with("Eigen")) o.resize(o.size() - 5);
+    if (o == "fullGenLapack") dense = true;
+    else if (o == "findLargest") largest = true;
+    else if (o == "standard") a.fail(1 + i, "option", "-standard eigen problems are not supported");
+    else if (o == "frequency" || o == "generalized" || o == "genBandArpack" || o == "symmBandLapack") continue;
+    else if (Tcl_Channel err = Tcl_GetStdChannel(TCL_STDERR); err != nullptr) {
+      const std::string text = "eigen - unknown option specified " + options[i] + "\n";
+      Tcl_WriteChars(err, text.c_str(), static_cast<int>(text.size()));
+    }
+  }
+  int n = 0;
+  if (Tcl_GetInt(nullptr, options.back().c_str(), &n) != TCL_OK)
+    a.fail(options.size(), "numModes", "expected an integer, got \"" + options.back() + "\"");
+  if (n < 1) a.fail(options.size(), "numModes", "must be at least 1");
+  if (rt.analysis->kind() == AnalysisBuilder::Kind::None) {
+    if (!rt.analysis->constraintsGiven()) rt.analysis->setConstraints(analysis::ConstraintKind::Transformation);
+    rt.analysis->setAnalysis(AnalysisBuilder::Kind::Transient);
+  }
+  const auto result = rt.analysis->eigen(n, dense, largest);
   if (!ok(result.status)) {
     setResult(rt, code(result.status));
     return;
@@ -328,7 +349,7 @@ constexpr CommandEntry kCommands[] = {
     {"integrator", "integrator LoadControl|DisplacementControl|Newmark|HHT|GeneralizedAlpha|CentralDifference args...", integratorCmd},
     {"analysis", "analysis Static|Transient ?-numSubLevels n? ?-numSubSteps m?", analysisCmd},
     {"analyze", "analyze numIncr ?dt?", analyzeCmd},
-    {"eigen", "eigen ?-fullGenLapack? numModes", eigenCmd},
+    {"eigen", "eigen ?-fullGenLapack? ?-findLargest? numModes", eigenCmd},
     {"wipe", "wipe", wipeCmd},
     {"wipeAnalysis", "wipeAnalysis", wipeAnalysisCmd},
     {"initialize", "initialize", initializeCmd},
