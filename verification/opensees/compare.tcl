@@ -54,11 +54,12 @@ proc ::verify::compareTables {name ours theirs tol} {
   checkAbs "$name: largest difference / column scale ($where)" $worst 0.0 $tol
 }
 
-set input [file normalize [lindex $argv 0]]
-set tol [expr {[llength $argv] > 1 ? [lindex $argv 1] : 1e-6}]
-set name [file rootname [file tail $input]]
-file delete $name.out
-source $input
-::verify::compareTables $name [::verify::readTable $name.out] \
-  [::verify::readTable [file join [file dirname $input] $name.csv]] $tol
+# The input runs at global level, so the driver keeps its own names in its namespace.
+set ::verify::input [file normalize [lindex $argv 0]]
+set ::verify::tol [expr {[llength $argv] > 1 ? [lindex $argv 1] : 1e-6}]
+set ::verify::name [file rootname [file tail $::verify::input]]
+file delete $::verify::name.out
+source $::verify::input
+::verify::compareTables $::verify::name [::verify::readTable $::verify::name.out] \
+  [::verify::readTable [file join [file dirname $::verify::input] $::verify::name.csv]] $::verify::tol
 finish
