@@ -5,6 +5,7 @@
 
 #include "materials/InputError.h"
 #include "tcl/analysis/AnalysisBuilder.h"
+#include "tcl/analysis/ArcLength.h"
 #include "tcl/analysis/CentralDifference.h"
 #include "tcl/analysis/DisplacementControl.h"
 #include "tcl/analysis/GeneralizedAlpha.h"
@@ -13,6 +14,7 @@
 #include "tcl/analysis/LoadControl.h"
 #include "tcl/analysis/NewtonLineSearch.h"
 #include "tcl/analysis/StopRequest.h"
+#include "tcl/analysis/TRBDF2.h"
 #include "tcl/commands/SignalExit.h"
 #include "tcl/analysis/NewtonRaphson.h"
 #include "tcl/commands/Registry.h"
@@ -217,8 +219,27 @@ void integratorCmd(Runtime& rt, ArgReader& a) {
   } else if (type == "CentralDifference") {
     a.finish();
     integrator = std::make_unique<analysis::CentralDifference>();
+  } else if (type == "TRBDF2" || type == "Bathe") {
+    a.finish();
+    integrator = std::make_unique<analysis::TRBDF2>();
+  } else if (type == "ArcLength") {
+    const double s = a.real("arcLength");
+    const double alpha = a.real("alpha");
+    a.finish();
+    if (!(s > 0.0)) a.fail(2, "arcLength", "must be positive");
+    integrator = std::make_unique<analysis::ArcLength>(s, 1.0, alpha * alpha, false);
+  } else if (type == "HSConstraint") {
+    const double s = a.real("arcLength");
+    const double psiU = a.optionalReal("psiU").value_or(1.0);
+    const double psiF = a.optionalReal("psiF").value_or(1.0);
+    const double uRef = a.optionalReal("uRef").value_or(1.0);
+    a.finish();
+    if (!(s > 0.0)) a.fail(2, "arcLength", "must be positive");
+    if (uRef == 0.0) a.fail(5, "uRef", "must not be zero");
+    if (psiU == 0.0 && psiF == 0.0) a.fail("psiU and psiF must not both be zero");
+    integrator = std::make_unique<analysis::ArcLength>(s, psiU * psiU / (uRef * uRef), psiF * psiF, true);
   } else {
-    a.fail(1, "type", "expected LoadControl, DisplacementControl, Newmark, HHT, GeneralizedAlpha or CentralDifference, got \"" + type + "\"");
+    a.fail(1, "type", "expected LoadControl, DisplacementControl, ArcLength, HSConstraint, Newmark, HHT, GeneralizedAlpha, TRBDF2 or CentralDifference, got \"" + type + "\"");
   }
   rt.analysis->setIntegrator(std::move(integrator));
 }
@@ -346,7 +367,7 @@ constexpr CommandEntry kCommands[] = {
     {"system", "system BandGeneral|BandSPD|ProfileSPD|SparseGeneral|UmfPack|FullGeneral|SparseSYM|Mumps", systemCmd},
     {"test", "test NormDispIncr|NormUnbalance|EnergyIncr tol maxIter ?pFlag? ?nType?", testCmd},
     {"algorithm", "algorithm Linear|Newton|ModifiedNewton|NewtonLineSearch|KrylovNewton ?options?", algorithmCmd},
-    {"integrator", "integrator LoadControl|DisplacementControl|Newmark|HHT|GeneralizedAlpha|CentralDifference args...", integratorCmd},
+    {"integrator", "integrator LoadControl|DisplacementControl|ArcLength|HSConstraint|Newmark|HHT|GeneralizedAlpha|TRBDF2|CentralDifference args...", integratorCmd},
     {"analysis", "analysis Static|Transient ?-numSubLevels n? ?-numSubSteps m?", analysisCmd},
     {"analyze", "analyze numIncr ?dt?", analyzeCmd},
     {"eigen", "eigen ?-fullGenLapack? ?-findLargest? numModes", eigenCmd},
