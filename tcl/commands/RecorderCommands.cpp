@@ -133,6 +133,15 @@ void recorderCmd(Runtime& rt, ArgReader& a) {
   else if (type == "EnvelopeElement") elementRecorder(rt, a, true);
   else if (type == "Drift") driftRecorder(rt, a);
   else if (type == "Viewer") viewerRecorderCommand(rt, a);
+  else if (type == "plot" || type == "display") {
+    // OpenSees' window recorders draw on screen; dabs opens no windows (its page is `recorder
+    // Viewer`), so scripts that also plot run unchanged and this one is noted and skipped.
+    while (a.hasMore()) (void)a.word("option");
+    if (Tcl_Channel err = Tcl_GetStdChannel(TCL_STDERR); err != nullptr) {
+      const std::string text = "recorder " + type + ": dabs opens no windows; ignored (see recorder Viewer)\n";
+      Tcl_WriteChars(err, text.c_str(), static_cast<int>(text.size()));
+    }
+  }
   else a.fail(1, "type", "expected Node, EnvelopeNode, Element, EnvelopeElement, Drift or Viewer, got \"" + type + "\"");
 }
 
@@ -148,7 +157,7 @@ constexpr CommandEntry kCommands[] = {
      "recorder Node|EnvelopeNode -file f ?-time|-load? ?-closeOnWrite? ?-dT dt? ?-precision p? ?-timeSeries tags? -node tags|-nodeRange a b -dof dofs "
      "disp|vel|accel|incrDisp|reaction|eigen i; recorder Element|EnvelopeElement -file f ?-time? -ele tags|-eleRange a b "
      "response; recorder Drift -file f -iNode .. -jNode .. -dof .. -perpDirn ..; "
-     "recorder Viewer -file page.html ?-dT dt? ?-nodes tags? ?-plots {..}? ?-title text?",
+     "recorder Viewer -file page.html ?-dT dt? ?-nodes tags? ?-plots {..}? ?-title text?; recorder plot|display ... (ignored)",
      recorderCmd},
     {"record", "record", recordCmd},
 };
