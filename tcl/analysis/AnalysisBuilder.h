@@ -62,6 +62,8 @@ class AnalysisBuilder {
   /// Lowest eigenpairs (with `largest`, the highest finite ones, by the dense solver); stores
   /// eigenvalues in the domain and eigenvectors in the nodes.
   EigenResult eigen(int numModes, bool dense, bool largest = false);
+  /// The convergence test in use (null before any analysis), for `testIter`.
+  const ConvergenceTest* test() const noexcept { return test_.get(); }
   /// True once `constraints` was given (OpenSees' eigen picks Transformation when it was not).
   bool constraintsGiven() const noexcept { return constraintsGiven_; }
 

@@ -277,14 +277,14 @@ void eigenCmd(Runtime& rt, ArgReader& a) {
   std::vector<std::string> options;
   while (a.hasMore()) options.push_back(a.word("option"));
   if (options.empty()) a.fail(1, "numModes", "is missing");
-  bool dense = false, largest = false;
+  bool dense = false, largest = false, standard = false;
   for (std::size_t i = 0; i + 1 < options.size(); ++i) {
     std::string o = options[i];
     if (o.size() > 1 && o[0] == '-') o.erase(0, 1);
     if (o.size() > 5 && o.ends_with("Eigen")) o.resize(o.size() - 5);
     if (o == "fullGenLapack") dense = true;
     else if (o == "findLargest") largest = true;
-    else if (o == "standard") a.fail(1 + i, "option", "-standard eigen problems are not supported");
+    else if (o == "standard") standard = true;
     else if (o == "frequency" || o == "generalized" || o == "genBandArpack" || o == "symmBandLapack") continue;
     else if (Tcl_Channel err = Tcl_GetStdChannel(TCL_STDERR); err != nullptr) {
       const std::string text = "eigen - unknown option specified " + options[i] + "\n";
@@ -295,6 +295,15 @@ void eigenCmd(Runtime& rt, ArgReader& a) {
   if (Tcl_GetInt(nullptr, options.back().c_str(), &n) != TCL_OK)
     a.fail(options.size(), "numModes", "expected an integer, got \"" + options.back() + "\"");
   if (n < 1) a.fail(options.size(), "numModes", "must be at least 1");
+  if (standard) {
+    // OpenSees' eigen solvers other than the banded one (which dabs does not have) solve only the
+    // generalized problem: the step fails with a warning and the result is empty.
+    if (Tcl_Channel err = Tcl_GetStdChannel(TCL_STDERR); err != nullptr) {
+      const std::string text = "eigen - the standard problem is not solved; no eigenvalues\n";
+      Tcl_WriteChars(err, text.c_str(), static_cast<int>(text.size()));
+    }
+    return;
+  }
   if (rt.analysis->kind() == AnalysisBuilder::Kind::None) {
     if (!rt.analysis->constraintsGiven()) rt.analysis->setConstraints(analysis::ConstraintKind::Transformation);
     rt.analysis->setAnalysis(AnalysisBuilder::Kind::Transient);
@@ -330,6 +339,13 @@ void resetCmd(Runtime& rt, ArgReader& a) {
   a.finish();
   rt.domain.revertToStart();
   rt.analysis->invalidate();
+}
+
+// `testIter`: iterations the convergence test counted in the last step (0 before any analysis).
+void testIterCmd(Runtime& rt, ArgReader& a) {
+  a.finish();
+  const analysis::ConvergenceTest* test = rt.analysis->test();
+  setResult(rt, test != nullptr ? test->iterations() : 0);
 }
 
 // DABS extension: `threads ?n?` sets how many threads update the elements (1 to 256; results are
@@ -374,6 +390,7 @@ constexpr CommandEntry kCommands[] = {
     {"wipe", "wipe", wipeCmd},
     {"wipeAnalysis", "wipeAnalysis", wipeAnalysisCmd},
     {"initialize", "initialize", initializeCmd},
+    {"testIter", "testIter", testIterCmd},
     {"reset", "reset", resetCmd},
 };
 
