@@ -24,7 +24,6 @@ class ArcLength final : public StaticIntegrator {
   void domainChanged(LinearSystem& system) override;
   Status newStep(LinearSystem& system, double dt) override;
   Status update(LinearSystem& system, const Eigen::VectorXd& dx) override;
-  void setStepSize(double arcLength) override { arcLength_ = arcLength; }
 
  private:
   double arcLength_;

@@ -192,7 +192,7 @@ void printCmd(Runtime& rt, ArgReader& a) {
       for (const auto& [tag, e] : rt.domain.elements()) out << e->describe() << "\n";
     for (int t : *eles) {
       const elements::Element* e = rt.domain.findElement(t);
-      if (e == nullptr) throw InputError("eleTag", "element " + std::to_string(t) + " does not exist");
+      if (e == nullptr) a.fail("element " + std::to_string(t) + " does not exist");
       out << e->describe() << "\n";
     }
   }
