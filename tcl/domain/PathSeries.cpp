@@ -87,9 +87,10 @@ bool readLine(std::istream& in, std::string& line) {
   return any;
 }
 
-// Length of the number at the start of `token` as `std::istream >> double` reads it: optional
-// sign, digits with an optional point, an optional exponent (kept only when digits follow it);
-// 0 when the token does not start with a number. "inf", "nan" and hexadecimal are not numbers.
+// Length of the number at the start of `token` as `std::istream >> double` reads it (libstdc++):
+// optional sign, digits with an optional point, an optional exponent; 0 when the token does not
+// start with a number, or when an exponent marker has no digits ("2e", which the stream takes in
+// and then rejects). "inf", "nan" and hexadecimal are not numbers.
 std::size_t numberPrefix(std::string_view token) {
   std::size_t i = 0;
   auto digits = [&](std::size_t from) {
@@ -110,7 +111,8 @@ std::size_t numberPrefix(std::string_view token) {
     std::size_t k = j + 1;
     if (k < token.size() && (token[k] == '+' || token[k] == '-')) ++k;
     const std::size_t m = digits(k);
-    if (m > k) j = m;
+    if (m == k) return 0;
+    j = m;
   }
   return j;
 }
