@@ -3,7 +3,10 @@
 # node sits at the centre of mass, off the column centroid (the retained node's out-of-plane dofs
 # fixed, as OpenSees' 3D frame examples do). A lateral load with an eccentricity twists the floor.
 # A second diaphragm in the xz plane (perpDirn 2) ties a wall-like pair of nodes. Each row: one
-# node's six displacements under the load.
+# node's six displacements under the load. A second block: a 2D two-bay portal whose floor nodes
+# share the horizontal displacement (`rigidDiaphragm 1`), and a node tied in-plane to the retained
+# node (`rigidDiaphragm 3`). (OpenSees 3.8 mishandles a retained node that is itself constrained,
+# so the input avoids such chains.)
 wipe
 model basic -ndm 3 -ndf 6
 set h 3.0
@@ -38,6 +41,34 @@ analyze 1
 set out [open compat-rigid-diaphragm.out w]
 puts $out "node ux uy uz rx ry rz"
 foreach n {5 6 7 8 9 11 12} {
+  set row $n
+  foreach v [nodeDisp $n] { lappend row [format %.10g $v] }
+  puts $out [join $row " "]
+}
+puts $out "2D: node ux uy rz"
+wipe
+model basic -ndm 2 -ndf 3
+node 1 0.0 0.0; node 2 5.0 0.0; node 3 11.0 0.0
+node 4 0.0 3.5; node 5 5.0 3.5; node 6 11.0 3.5; node 7 7.0 5.0
+fix 1 1 1 1; fix 2 1 1 1; fix 3 1 1 0
+rigidDiaphragm 1 5 4 6
+rigidDiaphragm 3 5 7
+geomTransf Linear 1
+element elasticBeamColumn 1 1 4 0.09 25000.0 0.000675 1
+element elasticBeamColumn 2 2 5 0.16 25000.0 0.00213 1
+element elasticBeamColumn 3 3 6 0.09 25000.0 0.000675 1
+element elasticBeamColumn 4 4 5 0.12 25000.0 0.0016 1
+element elasticBeamColumn 5 5 6 0.12 25000.0 0.0016 1
+timeSeries Linear 1
+pattern Plain 1 1 {
+  load 4 20.0 -30.0 0.0
+  load 6 0.0 -30.0 5.0
+  load 7 0.0 -10.0 0.0
+}
+system BandGeneral; numberer Plain; constraints Transformation; test NormDispIncr 1e-12 10
+algorithm Newton; integrator LoadControl 1.0; analysis Static
+analyze 1
+foreach n {4 5 6 7} {
   set row $n
   foreach v [nodeDisp $n] { lappend row [format %.10g $v] }
   puts $out [join $row " "]
