@@ -13,7 +13,8 @@ namespace dabs::materials {
 void Steel01::Params::validate() const {
   if (!std::isfinite(Fy) || Fy <= 0.0) throw InputError("Fy", "must be positive");
   if (!std::isfinite(E0) || E0 <= 0.0) throw InputError("E0", "must be positive");
-  if (!std::isfinite(b) || b < 0.0 || b >= 1.0) throw InputError("b", "must be in [0, 1)");
+  // A negative b (softening after yield) is accepted, as OpenSees does; b >= 1 leaves no yield.
+  if (!std::isfinite(b) || b >= 1.0) throw InputError("b", "must be below 1");
   if (!std::isfinite(a1) || a1 < 0.0) throw InputError("a1", "must be >= 0");
   if (!std::isfinite(a2) || a2 <= 0.0) throw InputError("a2", "must be positive");
   if (!std::isfinite(a3) || a3 < 0.0) throw InputError("a3", "must be >= 0");

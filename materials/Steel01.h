@@ -28,12 +28,12 @@ class Steel01 final : public StatefulUniaxial<Steel01, Steel01State> {
   struct Params {
     double Fy = 0.0;   ///< yield stress, > 0
     double E0 = 0.0;   ///< initial modulus, > 0
-    double b = 0.0;    ///< strain-hardening ratio, in [0, 1)
+    double b = 0.0;    ///< strain-hardening ratio, below 1 (negative: softening after yield)
     double a1 = 0.0;   ///< compressive asymptote shift after tensile excursions
     double a2 = 55.0;  ///< strain (in units of epsy) normalising a1's shift, > 0
     double a3 = 0.0;   ///< tensile asymptote shift after compressive excursions
     double a4 = 55.0;  ///< strain (in units of epsy) normalising a3's shift, > 0
-    /// Throws InputError for non-positive Fy, E0, a2, a4, b outside [0, 1) or negative a1, a3.
+    /// Throws InputError for non-positive Fy, E0, a2, a4, b of 1 or more or negative a1, a3.
     void validate() const;
   };
 

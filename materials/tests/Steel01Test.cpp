@@ -49,5 +49,20 @@ TEST(Steel01Test, IsotropicShiftAfterReversal) {
   EXPECT_NEAR(m.getStress(), kB * kE * (-10.0 * kEpsY) - shiftN * kFy * (1.0 - kB), kTol * kFy);
 }
 
+// A negative b softens after yield: the stress falls along Fy + b*E0*(eps - epsy) and unloading
+// is elastic from the softened stress.
+TEST(Steel01Test, NegativeHardeningRatioSoftens) {
+  constexpr double kSoft = -0.02;
+  Steel01 m(1, Steel01::Params{kFy, kE, kSoft});
+  ASSERT_TRUE(ok(m.setTrialStrain(5.0 * kEpsY)));
+  EXPECT_NEAR(m.getStress(), kFy + kSoft * kE * 4.0 * kEpsY, kTol * kFy);
+  EXPECT_DOUBLE_EQ(m.getTangent(), kSoft * kE);
+  m.commitState();
+  const double sigma = m.getStress();
+  ASSERT_TRUE(ok(m.setTrialStrain(4.0 * kEpsY)));
+  EXPECT_NEAR(m.getStress(), sigma - kFy, kTol * kFy);
+  EXPECT_DOUBLE_EQ(m.getTangent(), kE);
+}
+
 }  // namespace
 }  // namespace dabs::materials

@@ -63,6 +63,7 @@ TEST(UniaxialParamsTest, Steel01) {
   EXPECT_EQ(rejectedField(Steel01::Params{-400.0, 2e5, 0.01}), "Fy");
   EXPECT_EQ(rejectedField(Steel01::Params{400.0, 0.0, 0.01}), "E0");
   EXPECT_EQ(rejectedField(Steel01::Params{400.0, 2e5, 1.0}), "b");
+  EXPECT_EQ(rejectedField(Steel01::Params{400.0, 2e5, -0.05}), "<accepted>");
   EXPECT_EQ(rejectedField(Steel01::Params{400.0, 2e5, 0.01, -1.0, 55.0, 0.0, 55.0}), "a1");
   EXPECT_EQ(rejectedField(Steel01::Params{400.0, 2e5, 0.01, 0.0, 0.0, 0.0, 55.0}), "a2");
   EXPECT_EQ(rejectedField(Steel01::Params{400.0, 2e5, 0.01, 0.0, 55.0, -1.0, 55.0}), "a3");

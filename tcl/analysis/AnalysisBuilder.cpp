@@ -27,6 +27,7 @@ AnalysisBuilder::~AnalysisBuilder() = default;
 
 void AnalysisBuilder::setConstraints(ConstraintKind kind, double alphaSP, double alphaMP) {
   constraints_ = kind;
+  constraintsGiven_ = true;
   alphaSP_ = alphaSP;
   alphaMP_ = alphaMP;
   model_.reset();
@@ -78,6 +79,7 @@ void AnalysisBuilder::wipe() {
   model_.reset();
   kind_ = Kind::None;
   constraints_ = ConstraintKind::Plain;
+  constraintsGiven_ = false;
   numberer_ = NumbererKind::RCM;
   solver_ = SolverKind::SparseLU;
   numSubLevels_ = 0;
@@ -241,7 +243,7 @@ bool AnalysisBuilder::noteBearingFailures() {
   return stop;
 }
 
-EigenResult AnalysisBuilder::eigen(int numModes, bool dense) {
+EigenResult AnalysisBuilder::eigen(int numModes, bool dense, bool largest) {
   ensureModel();
   // Bring elements to the committed state so their tangents are current.
   Eigen::VectorXd U, V, A;
@@ -260,8 +262,9 @@ EigenResult AnalysisBuilder::eigen(int numModes, bool dense) {
     result.status = Status::Failed;
     return result;
   }
-  result = (dense || model_->numEquations() <= kDenseEigenLimit) ? solveEigenDense(K, M, numModes)
-                                                                   : solveEigenSubspace(K, M, numModes);
+  result = (dense || largest || model_->numEquations() <= kDenseEigenLimit)
+               ? solveEigenDense(K, M, numModes, largest)
+               : solveEigenSubspace(K, M, numModes);
   if (ok(result.status)) {
     domain_.eigenvalues.assign(result.values.data(), result.values.data() + result.values.size());
     model_->setEigenvectors(result.vectors);

@@ -59,8 +59,13 @@ class AnalysisBuilder {
   /// of the first step that failed (even after sub-stepping); the model stays at the last
   /// converged step. Throws InputError when the analysis cannot start (no analysis, no model).
   int analyze(int numSteps, double dt);
-  /// Lowest eigenpairs; stores eigenvalues in the domain and eigenvectors in the nodes.
-  EigenResult eigen(int numModes, bool dense);
+  /// Lowest eigenpairs (with `largest`, the highest finite ones, by the dense solver); stores
+  /// eigenvalues in the domain and eigenvectors in the nodes.
+  EigenResult eigen(int numModes, bool dense, bool largest = false);
+  /// The convergence test in use (null before any analysis), for `testIter`.
+  const ConvergenceTest* test() const noexcept { return test_.get(); }
+  /// True once `constraints` was given (OpenSees' eigen picks Transformation when it was not).
+  bool constraintsGiven() const noexcept { return constraintsGiven_; }
 
   /// Forgets every component (wipeAnalysis); the domain is untouched.
   void wipe();
@@ -89,6 +94,7 @@ class AnalysisBuilder {
 
   domain::Domain& domain_;
   ConstraintKind constraints_ = ConstraintKind::Plain;
+  bool constraintsGiven_ = false;
   double alphaSP_ = 0.0, alphaMP_ = 0.0;
   NumbererKind numberer_ = NumbererKind::RCM;
   SolverKind solver_ = SolverKind::SparseLU;

@@ -41,10 +41,11 @@ int massRank(const Eigen::SparseMatrix<double>& M) {
 }  // namespace
 
 EigenResult solveEigenDense(const Eigen::SparseMatrix<double>& K, const Eigen::SparseMatrix<double>& M,
-                            int numModes) {
+                            int numModes, bool largest) {
   EigenResult out;
   const Eigen::Index n = K.rows();
-  if (numModes > massRank(M)) {
+  const int rank = massRank(M);
+  if (numModes > rank) {
     out.status = Status::Failed;
     return out;
   }
@@ -66,7 +67,9 @@ EigenResult solveEigenDense(const Eigen::SparseMatrix<double>& K, const Eigen::S
   out.values.resize(numModes);
   out.vectors.resize(n, numModes);
   for (int i = 0; i < numModes; ++i) {
-    const Eigen::Index col = n - 1 - i;  // largest mu first
+    // Smallest lambda: largest mu first. Largest finite lambda: the smallest of the `rank` positive
+    // mu, listed in ascending lambda as OpenSees lists them.
+    const Eigen::Index col = largest ? n - rank + numModes - 1 - i : n - 1 - i;
     const double mu = es.eigenvalues()(col);
     if (!(mu > 0.0)) {
       out.status = Status::Failed;

@@ -5,6 +5,7 @@
 
 #include "materials/InputError.h"
 #include "tcl/analysis/AnalysisBuilder.h"
+#include "tcl/analysis/ArcLength.h"
 #include "tcl/analysis/CentralDifference.h"
 #include "tcl/analysis/DisplacementControl.h"
 #include "tcl/analysis/GeneralizedAlpha.h"
@@ -13,6 +14,7 @@
 #include "tcl/analysis/LoadControl.h"
 #include "tcl/analysis/NewtonLineSearch.h"
 #include "tcl/analysis/StopRequest.h"
+#include "tcl/analysis/TRBDF2.h"
 #include "tcl/commands/SignalExit.h"
 #include "tcl/analysis/NewtonRaphson.h"
 #include "tcl/commands/Registry.h"
@@ -217,8 +219,27 @@ void integratorCmd(Runtime& rt, ArgReader& a) {
   } else if (type == "CentralDifference") {
     a.finish();
     integrator = std::make_unique<analysis::CentralDifference>();
+  } else if (type == "TRBDF2" || type == "Bathe") {
+    a.finish();
+    integrator = std::make_unique<analysis::TRBDF2>();
+  } else if (type == "ArcLength") {
+    const double s = a.real("arcLength");
+    const double alpha = a.real("alpha");
+    a.finish();
+    if (!(s > 0.0)) a.fail(2, "arcLength", "must be positive");
+    integrator = std::make_unique<analysis::ArcLength>(s, 1.0, alpha * alpha, false);
+  } else if (type == "HSConstraint") {
+    const double s = a.real("arcLength");
+    const double psiU = a.optionalReal("psiU").value_or(1.0);
+    const double psiF = a.optionalReal("psiF").value_or(1.0);
+    const double uRef = a.optionalReal("uRef").value_or(1.0);
+    a.finish();
+    if (!(s > 0.0)) a.fail(2, "arcLength", "must be positive");
+    if (uRef == 0.0) a.fail(5, "uRef", "must not be zero");
+    if (psiU == 0.0 && psiF == 0.0) a.fail("psiU and psiF must not both be zero");
+    integrator = std::make_unique<analysis::ArcLength>(s, psiU * psiU / (uRef * uRef), psiF * psiF, true);
   } else {
-    a.fail(1, "type", "expected LoadControl, DisplacementControl, Newmark, HHT, GeneralizedAlpha or CentralDifference, got \"" + type + "\"");
+    a.fail(1, "type", "expected LoadControl, DisplacementControl, ArcLength, HSConstraint, Newmark, HHT, GeneralizedAlpha, TRBDF2 or CentralDifference, got \"" + type + "\"");
   }
   rt.analysis->setIntegrator(std::move(integrator));
 }
@@ -248,16 +269,46 @@ void analyzeCmd(Runtime& rt, ArgReader& a) {
   setResult(rt, result);
 }
 
+// `eigen ?options? numModes` (OpenSees SRC/tcl/commands.cpp eigenAnalysis): solver options are
+// accepted, as Eigen's solvers replace them; unknown options are reported on stderr and ignored,
+// as OpenSees does. With no analysis yet, OpenSees creates a transient one (Newmark 1/2 1/4, the
+// Transformation handler unless `constraints` was given) and keeps it for later `analyze` calls.
 void eigenCmd(Runtime& rt, ArgReader& a) {
-  bool dense = a.flag("-fullGenLapack");
-  (void)a.flag("-genBandArpack");
-  (void)a.flag("-symmBandLapack");
-  (void)a.flag("-generalized");
-  if (a.flag("-standard")) a.fail("-standard eigen problems are not supported");
-  const int n = a.integer("numModes");
-  a.finish();
-  if (n < 1) a.fail(1, "numModes", "must be at least 1");
-  const auto result = rt.analysis->eigen(n, dense);
+  std::vector<std::string> options;
+  while (a.hasMore()) options.push_back(a.word("option"));
+  if (options.empty()) a.fail(1, "numModes", "is missing");
+  bool dense = false, largest = false, standard = false;
+  for (std::size_t i = 0; i + 1 < options.size(); ++i) {
+    std::string o = options[i];
+    if (o.size() > 1 && o[0] == '-') o.erase(0, 1);
+    if (o.size() > 5 && o.ends_with("Eigen")) o.resize(o.size() - 5);
+    if (o == "fullGenLapack") dense = true;
+    else if (o == "findLargest") largest = true;
+    else if (o == "standard") standard = true;
+    else if (o == "frequency" || o == "generalized" || o == "genBandArpack" || o == "symmBandLapack") continue;
+    else if (Tcl_Channel err = Tcl_GetStdChannel(TCL_STDERR); err != nullptr) {
+      const std::string text = "eigen - unknown option specified " + options[i] + "\n";
+      Tcl_WriteChars(err, text.c_str(), static_cast<int>(text.size()));
+    }
+  }
+  int n = 0;
+  if (Tcl_GetInt(nullptr, options.back().c_str(), &n) != TCL_OK)
+    a.fail(options.size(), "numModes", "expected an integer, got \"" + options.back() + "\"");
+  if (n < 1) a.fail(options.size(), "numModes", "must be at least 1");
+  if (standard) {
+    // OpenSees' eigen solvers other than the banded one (which dabs does not have) solve only the
+    // generalized problem: the step fails with a warning and the result is empty.
+    if (Tcl_Channel err = Tcl_GetStdChannel(TCL_STDERR); err != nullptr) {
+      const std::string text = "eigen - the standard problem is not solved; no eigenvalues\n";
+      Tcl_WriteChars(err, text.c_str(), static_cast<int>(text.size()));
+    }
+    return;
+  }
+  if (rt.analysis->kind() == AnalysisBuilder::Kind::None) {
+    if (!rt.analysis->constraintsGiven()) rt.analysis->setConstraints(analysis::ConstraintKind::Transformation);
+    rt.analysis->setAnalysis(AnalysisBuilder::Kind::Transient);
+  }
+  const auto result = rt.analysis->eigen(n, dense, largest);
   if (!ok(result.status)) {
     setResult(rt, code(result.status));
     return;
@@ -275,6 +326,10 @@ void wipeCmd(Runtime& rt, ArgReader& a) {
   rt.currentPattern = -1;
 }
 
+// `initialize`: OpenSees sets up its analysis and domain here; dabs initialises elements when they
+// are added and builds the equations at the first `analyze` or `eigen`, so nothing is left to do.
+void initializeCmd(Runtime& /*rt*/, ArgReader& a) { a.finish(); }
+
 void wipeAnalysisCmd(Runtime& rt, ArgReader& a) {
   a.finish();
   rt.analysis->wipe();
@@ -284,6 +339,13 @@ void resetCmd(Runtime& rt, ArgReader& a) {
   a.finish();
   rt.domain.revertToStart();
   rt.analysis->invalidate();
+}
+
+// `testIter`: iterations the convergence test counted in the last step (0 before any analysis).
+void testIterCmd(Runtime& rt, ArgReader& a) {
+  a.finish();
+  const analysis::ConvergenceTest* test = rt.analysis->test();
+  setResult(rt, test != nullptr ? test->iterations() : 0);
 }
 
 // DABS extension: `threads ?n?` sets how many threads update the elements (1 to 256; results are
@@ -321,12 +383,14 @@ constexpr CommandEntry kCommands[] = {
     {"system", "system BandGeneral|BandSPD|ProfileSPD|SparseGeneral|UmfPack|FullGeneral|SparseSYM|Mumps", systemCmd},
     {"test", "test NormDispIncr|NormUnbalance|EnergyIncr tol maxIter ?pFlag? ?nType?", testCmd},
     {"algorithm", "algorithm Linear|Newton|ModifiedNewton|NewtonLineSearch|KrylovNewton ?options?", algorithmCmd},
-    {"integrator", "integrator LoadControl|DisplacementControl|Newmark|HHT|GeneralizedAlpha|CentralDifference args...", integratorCmd},
+    {"integrator", "integrator LoadControl|DisplacementControl|ArcLength|HSConstraint|Newmark|HHT|GeneralizedAlpha|TRBDF2|CentralDifference args...", integratorCmd},
     {"analysis", "analysis Static|Transient ?-numSubLevels n? ?-numSubSteps m?", analysisCmd},
     {"analyze", "analyze numIncr ?dt?", analyzeCmd},
-    {"eigen", "eigen ?-fullGenLapack? numModes", eigenCmd},
+    {"eigen", "eigen ?-fullGenLapack? ?-findLargest? numModes", eigenCmd},
     {"wipe", "wipe", wipeCmd},
     {"wipeAnalysis", "wipeAnalysis", wipeAnalysisCmd},
+    {"initialize", "initialize", initializeCmd},
+    {"testIter", "testIter", testIterCmd},
     {"reset", "reset", resetCmd},
 };
 

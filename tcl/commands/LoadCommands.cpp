@@ -177,9 +177,17 @@ void setTimeCmd(Runtime& rt, ArgReader& a) {
   rt.analysis->invalidate();
 }
 
+// getTime ?format?: OpenSees returns the time formatted with "%f" (6 decimals), so loops such as
+// `while {[getTime] < $tEnd}` stop where their author expects despite round-off in the sum of steps.
 void getTimeCmd(Runtime& rt, ArgReader& a) {
+  const std::string format = a.hasMore() ? a.word("format") : "%f";
   a.finish();
-  setResult(rt, rt.domain.committedTime());
+  Tcl_Obj* args[] = {Tcl_NewStringObj("format", -1), Tcl_NewStringObj(format.c_str(), -1),
+                     Tcl_NewDoubleObj(rt.domain.committedTime())};
+  for (Tcl_Obj* o : args) Tcl_IncrRefCount(o);
+  const int code = Tcl_EvalObjv(rt.interp, 3, args, TCL_EVAL_GLOBAL);
+  for (Tcl_Obj* o : args) Tcl_DecrRefCount(o);
+  if (code != TCL_OK) a.fail(1, "format", std::string(Tcl_GetStringResult(rt.interp)));
 }
 
 // getLoadFactor patternTag: the pattern's factor at the current time. For a UniformExcitation
@@ -274,7 +282,7 @@ constexpr CommandEntry kCommands[] = {
     {"imposedSupportMotion", "imposedSupportMotion node dof gmTag", imposedMotionCmd},
     {"loadConst", "loadConst ?-time t?", loadConstCmd},
     {"setTime", "setTime t", setTimeCmd},
-    {"getTime", "getTime", getTimeCmd},
+    {"getTime", "getTime ?format?", getTimeCmd},
     {"getLoadFactor", "getLoadFactor patternTag", getLoadFactorCmd},
     {"remove", "remove element|node|loadPattern|timeSeries|sp|recorder|recorders ?tag? ?dof?", removeCmd},
     {"rayleigh", "rayleigh alphaM betaK betaKinit betaKcomm", rayleighCmd},

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 // Model-building commands: model, node, mass, fix, fixX/Y/Z, equalDOF, rigidLink, region, and the
 // type dispatchers uniaxialMaterial and element.
+#include <algorithm>
 #include <cmath>
 #include <string>
 
@@ -273,6 +274,83 @@ void getNdfCmd(Runtime& rt, ArgReader& a) {
   setResult(rt, rt.builder.ndf);
 }
 
+// `rigidDiaphragm perpDirn rNode cNode..`: each constrained node moves with the retained node as a
+// rigid body in the plane normal to axis perpDirn (1, 2, 3), linearised about the initial geometry
+// (OpenSees/OpenSees:SRC/domain/constraints/RigidDiaphragm.cpp): in-plane translations follow
+// u_c = u_r + theta_r x d, the in-plane rotation is shared. In 2D with 3 dofs, perpDirn 3 is the
+// model plane; perpDirn 1 or 2 ties the translation along that axis only, as OpenSees does.
+void rigidDiaphragmCmd(Runtime& rt, ArgReader& a) {
+  rt.requireModel("rigidDiaphragm");
+  const int perp = a.integer("perpDirn");
+  const int rNode = a.integer("rNode");
+  const std::vector<int> cNodes = a.integers("cNode");
+  a.finish();
+  if (perp < 1 || perp > 3) a.fail(1, "perpDirn", "must be 1, 2 or 3, got " + std::to_string(perp));
+  const domain::Node& r = rt.domain.node(rNode);
+  const bool space = r.ndm() == 3 && r.ndf() == 6;
+  const bool plane = r.ndm() == 2 && r.ndf() == 3;
+  if (!space && !plane) a.fail(2, "rNode", "must be a 3D node with 6 dofs or a 2D node with 3 dofs");
+  std::vector<domain::MPConstraint> constraints;
+  for (std::size_t i = 0; i < cNodes.size(); ++i) {
+    const int tag = cNodes[i];
+    if (tag == rNode) a.fail(3 + i, "cNode", "the retained node cannot also be constrained");
+    const domain::Node& c = rt.domain.node(tag);
+    if (c.ndm() != r.ndm() || c.ndf() != r.ndf())
+      a.fail(3 + i, "cNode", "node " + std::to_string(tag) + " must have the dimension and dofs of rNode");
+    const Eigen::Vector3d d = c.coords() - r.coords();
+    domain::MPConstraint mp;
+    mp.retainedNode = rNode;
+    mp.constrainedNode = tag;
+    if (plane && perp != 3) {
+      mp.constrainedDofs = {perp - 1};
+      mp.Ccr = Eigen::MatrixXd::Identity(1, 1);
+    } else {
+      mp.Ccr = Eigen::MatrixXd::Identity(3, 3);
+      if (plane || perp == 3) {  // xy plane: ux, uy, rz
+        mp.constrainedDofs = {0, 1, plane ? 2 : 5};
+        mp.Ccr(0, 2) = -d.y();
+        mp.Ccr(1, 2) = d.x();
+      } else if (perp == 2) {  // xz plane: ux, uz, ry
+        mp.constrainedDofs = {0, 2, 4};
+        mp.Ccr(0, 2) = d.z();
+        mp.Ccr(1, 2) = -d.x();
+      } else {  // yz plane: uy, uz, rx
+        mp.constrainedDofs = {1, 2, 3};
+        mp.Ccr(0, 2) = -d.z();
+        mp.Ccr(1, 2) = d.y();
+      }
+    }
+    mp.retainedDofs = mp.constrainedDofs;
+    // The checks Domain::addMP makes, made for all nodes first so that a bad one adds none.
+    for (int dof : mp.constrainedDofs) {
+      const std::string which = "dof " + std::to_string(dof + 1) + " of node " + std::to_string(tag);
+      for (const auto& sp : rt.domain.fixes())
+        if (sp.node == tag && sp.dof == dof) a.fail(3 + i, "cNode", which + " is fixed");
+      for (const auto& other : rt.domain.mps())
+        if (other.constrainedNode == tag &&
+            std::find(other.constrainedDofs.begin(), other.constrainedDofs.end(), dof) != other.constrainedDofs.end())
+          a.fail(3 + i, "cNode", which + " is already constrained");
+      for (const auto& other : constraints)
+        if (other.constrainedNode == tag) a.fail(3 + i, "cNode", "node " + std::to_string(tag) + " is listed twice");
+    }
+    constraints.push_back(std::move(mp));
+  }
+  for (auto& mp : constraints) rt.domain.addMP(std::move(mp));
+}
+
+// `pset name ?value?`: OpenSees' parameter-recording variant of Tcl's `set` (it also lists the
+// pair in its simulation information, which dabs does not keep); reads or sets the variable.
+void psetCmd(Runtime& rt, ArgReader& a) {
+  Tcl_Obj* name = a.object("name");
+  Tcl_Obj* value = a.hasMore() ? a.object("value") : nullptr;
+  a.finish();
+  Tcl_Obj* result = value != nullptr ? Tcl_ObjSetVar2(rt.interp, name, nullptr, value, TCL_LEAVE_ERR_MSG)
+                                     : Tcl_ObjGetVar2(rt.interp, name, nullptr, TCL_LEAVE_ERR_MSG);
+  if (result == nullptr)
+    throw InputError("name", std::string(Tcl_GetStringResult(rt.interp)));
+  Tcl_SetObjResult(rt.interp, result);
+}
+
 constexpr CommandEntry kCommands[] = {
     {"model", "model basic -ndm ndm ?-ndf ndf?", modelCmd},
     {"node", "node tag x ?y? ?z? ?-mass m1 .. mndf? ?-ndf ndf?", nodeCmd},
@@ -283,11 +361,13 @@ constexpr CommandEntry kCommands[] = {
     {"fixZ", "fixZ z c1 .. cndf ?-tol tol?", fixZCmd},
     {"equalDOF", "equalDOF rNode cNode dof1 ?dof2 ...?", equalDofCmd},
     {"rigidLink", "rigidLink beam|bar rNode cNode", rigidLinkCmd},
+    {"rigidDiaphragm", "rigidDiaphragm perpDirn rNode cNode1 ?cNode2 ...?", rigidDiaphragmCmd},
     {"region", "region tag ?-ele tags? ?-eleOnly tags? ?-eleRange a b? ?-node tags? ?-nodeRange a b? ?-rayleigh aM bK bKinit bKcomm?", regionCmd},
     {"uniaxialMaterial", "uniaxialMaterial type tag args...", uniaxialMaterialCmd},
     {"element", "element type tag nodes... args...", elementCmd},
     {"getNDM", "getNDM", getNdmCmd},
     {"getNDF", "getNDF", getNdfCmd},
+    {"pset", "pset name ?value?", psetCmd},
 };
 
 }  // namespace

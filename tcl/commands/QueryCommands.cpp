@@ -19,11 +19,12 @@ void nodeVectorQuery(Runtime& rt, ArgReader& a, Getter get) {
   const auto dof = a.optionalInteger("dof");
   a.finish();
   const Eigen::VectorXd v = get(n);
-  if (!dof) {
+  // OpenSees returns the whole vector for a dof below 1 (SRC/tcl/commands.cpp nodeDisp: dof -1).
+  if (!dof || *dof < 1) {
     setResult(rt, v);
     return;
   }
-  if (*dof < 1 || *dof > v.size()) a.fail(2, "dof", "must be 1.." + std::to_string(v.size()));
+  if (*dof > v.size()) a.fail(2, "dof", "must be 1.." + std::to_string(v.size()) + " (or 0 for all)");
   setResult(rt, v(*dof - 1));
 }
 
@@ -118,42 +119,82 @@ void getEleTagsCmd(Runtime& rt, ArgReader& a) {
   setResult(rt, tags);
 }
 
-std::string describeNode(const domain::Node& n) {
-  std::ostringstream out;
-  out << "Node " << n.tag() << " ndf " << n.ndf() << " coords";
-  for (int i = 0; i < n.ndm(); ++i) out << " " << n.coords()(i);
-  out << " disp";
-  for (Eigen::Index i = 0; i < n.disp.size(); ++i) out << " " << n.disp(i);
-  if (!n.mass().isZero(0.0)) {
-    out << " mass";
-    for (Eigen::Index i = 0; i < n.mass().rows(); ++i) out << " " << n.mass()(i, i);
-  }
-  return out.str();
+// A vector as OpenSees' streams write it: each value followed by a space, then a newline.
+void writeVector(std::ostream& out, const Eigen::Ref<const Eigen::VectorXd>& v) {
+  for (Eigen::Index i = 0; i < v.size(); ++i) out << v(i) << " ";
+  out << "\n";
 }
 
+// One node in the layout of OpenSees' Node::Print (6 significant digits), so scripts and people
+// that read `print node` output find the same lines: coordinates, displacements, velocities and
+// accelerations once a transient analysis ran, and the mass matrix when the node has mass.
+void describeNode(std::ostream& out, const domain::Node& n) {
+  out << "\n Node: " << n.tag() << "\n\tCoordinates  : ";
+  writeVector(out, n.coords().head(n.ndm()));
+  out << "\tDisps: ";
+  writeVector(out, n.disp);
+  if (!n.vel.isZero(0.0) || !n.accel.isZero(0.0)) {
+    out << "\tVelocities   : ";
+    writeVector(out, n.vel);
+    out << "\tcommitAccels: ";
+    writeVector(out, n.accel);
+  }
+  if (!n.mass().isZero(0.0)) {
+    out << "\tMass : \n";
+    for (Eigen::Index i = 0; i < n.mass().rows(); ++i) writeVector(out, n.mass().row(i).transpose());
+    out << "\n";
+  }
+  out << "\n";
+}
+
+// Tags after `node`/`ele` in `print`: an optional `flag n` (accepted; one layout only), then tags;
+// none means all.
+std::vector<int> printTags(ArgReader& a, std::string_view what) {
+  if (a.hasMore() && (a.peek() == "flag" || a.peek() == "-flag")) {
+    (void)a.word("flag");
+    (void)a.integer("flag");
+  }
+  std::vector<int> tags;
+  while (a.hasMore()) tags.push_back(a.integer(what));
+  return tags;
+}
+
+// OpenSees' grammar (SRC/tcl/commands.cpp printModel): `print` prints the whole domain;
+// `?-file? fileName` redirects (appending) and alone prints the whole domain to the file;
+// `node|-node ?tags?` and `ele|-ele ?tags?` take every following word as a tag.
 void printCmd(Runtime& rt, ArgReader& a) {
-  const auto nodes = a.optionIntegerList("-node");
-  const auto eles = a.optionIntegerList("-ele");
-  const auto file = a.optionalWordOption("-file");
-  std::optional<std::string> target = file;
-  if (!target && a.hasPositional()) target = a.word("fileName");
+  std::optional<std::string> target;
+  std::optional<std::vector<int>> nodes, eles;
+  while (a.hasMore() && !nodes && !eles) {
+    const std::string word = a.word("what");
+    if (word == "node" || word == "-node") nodes = printTags(a, "nodeTag");
+    else if (word == "ele" || word == "-ele") eles = printTags(a, "eleTag");
+    else if (word == "integrator" || word == "-integrator" || word == "algorithm" || word == "-algorithm") {
+      while (a.hasMore()) (void)a.word("flag");
+      return;  // nothing to say about strategies beyond the script's own commands
+    } else if (word == "-JSON") a.fail("-JSON output is not supported");
+    else if (word == "file" || word == "-file") target = a.word("fileName");
+    else target = word;
+  }
   a.finish();
   std::ostringstream out;
-  const bool all = !nodes && !eles;
-  if (all) {
+  if (!nodes && !eles) {
     out << "Domain: " << rt.domain.nodes().size() << " nodes, " << rt.domain.elements().size()
         << " elements, time " << rt.domain.committedTime() << "\n";
-    for (const auto& [tag, n] : rt.domain.nodes()) out << describeNode(n) << "\n";
+    for (const auto& [tag, n] : rt.domain.nodes()) describeNode(out, n);
     for (const auto& [tag, e] : rt.domain.elements()) out << e->describe() << "\n";
+  } else if (nodes) {
+    if (nodes->empty())
+      for (const auto& [tag, n] : rt.domain.nodes()) describeNode(out, n);
+    for (int t : *nodes) describeNode(out, rt.domain.node(t));
   } else {
-    if (nodes)
-      for (int t : *nodes) out << describeNode(rt.domain.node(t)) << "\n";
-    if (eles)
-      for (int t : *eles) {
-        const elements::Element* e = rt.domain.findElement(t);
-        if (e == nullptr) throw InputError("-ele", "element " + std::to_string(t) + " does not exist");
-        out << e->describe() << "\n";
-      }
+    if (eles->empty())
+      for (const auto& [tag, e] : rt.domain.elements()) out << e->describe() << "\n";
+    for (int t : *eles) {
+      const elements::Element* e = rt.domain.findElement(t);
+      if (e == nullptr) a.fail("element " + std::to_string(t) + " does not exist");
+      out << e->describe() << "\n";
+    }
   }
   const std::string text = out.str();
   if (target) {
@@ -185,8 +226,8 @@ constexpr CommandEntry kCommands[] = {
     {"eleNodes", "eleNodes eleTag", eleNodesCmd},
     {"getNodeTags", "getNodeTags", getNodeTagsCmd},
     {"getEleTags", "getEleTags", getEleTagsCmd},
-    {"print", "print ?-node tags? ?-ele tags? ?fileName?", printCmd},
-    {"printModel", "printModel ?-node tags? ?-ele tags? ?fileName?", printCmd},
+    {"print", "print ?-file fileName? ?node|-node ?tags..?? ?ele|-ele ?tags..??", printCmd},
+    {"printModel", "printModel ?-file fileName? ?node|-node ?tags..?? ?ele|-ele ?tags..??", printCmd},
     {"version", "version", versionCmd},
 };
 

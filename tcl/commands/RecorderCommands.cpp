@@ -21,7 +21,13 @@ domain::RecorderOutput readOutput(ArgReader& a, bool envelope) {
   const auto file = a.optionalWordOption("-file");
   if (!file) a.fail("-file fileName is required");
   out.file = *file;
-  out.time = a.flag("-time");
+  // -load is OpenSees' synonym of -time (the pseudo time of a static analysis is its load factor).
+  const bool time = a.flag("-time");
+  const bool load = a.flag("-load");
+  out.time = time || load;
+  // -closeOnWrite: OpenSees closes the file after each row so other programs see it; every row
+  // already reaches the operating system when its step is committed, so nothing else is needed.
+  (void)a.flag("-closeOnWrite");
   out.deltaT = a.option("-dT", 0.0);
   out.precision = a.option("-precision", 6);
   out.envelope = envelope;
@@ -55,8 +61,18 @@ void nodeRecorder(Runtime& rt, ArgReader& a, bool envelope) {
   const auto dofs = a.optionIntegerList("-dof");
   if (!dofs) a.fail("-dof dofs is required");
   std::vector<std::shared_ptr<const domain::TimeSeries>> series;
-  if (auto ts = a.optionIntegerList("-timeSeries"))
-    for (int t : *ts) series.push_back(t == 0 ? nullptr : rt.builder.series(t));
+  if (auto ts = a.optionIntegerList("-timeSeries")) {
+    for (int t : *ts) series.push_back(t == 0 || t == -1 ? nullptr : rt.builder.series(t));
+    // OpenSees ignores the option, with a warning, unless there is one series per dof.
+    if (series.size() != dofs->size()) {
+      series.clear();
+      if (Tcl_Channel err = Tcl_GetStdChannel(TCL_STDERR); err != nullptr) {
+        const std::string text = "recorder Node: " + std::to_string(ts->size()) + " time series for " +
+                                 std::to_string(dofs->size()) + " dofs; -timeSeries is ignored\n";
+        Tcl_WriteChars(err, text.c_str(), static_cast<int>(text.size()));
+      }
+    }
+  }
   const std::string response = a.word("response");
   using R = domain::NodeRecorder::Response;
   R kind{};
@@ -117,6 +133,15 @@ void recorderCmd(Runtime& rt, ArgReader& a) {
   else if (type == "EnvelopeElement") elementRecorder(rt, a, true);
   else if (type == "Drift") driftRecorder(rt, a);
   else if (type == "Viewer") viewerRecorderCommand(rt, a);
+  else if (type == "plot" || type == "display") {
+    // OpenSees' window recorders draw on screen; dabs opens no windows (its page is `recorder
+    // Viewer`), so scripts that also plot run unchanged and this one is noted and skipped.
+    while (a.hasMore()) (void)a.word("option");
+    if (Tcl_Channel err = Tcl_GetStdChannel(TCL_STDERR); err != nullptr) {
+      const std::string text = "recorder " + type + ": dabs opens no windows; ignored (see recorder Viewer)\n";
+      Tcl_WriteChars(err, text.c_str(), static_cast<int>(text.size()));
+    }
+  }
   else a.fail(1, "type", "expected Node, EnvelopeNode, Element, EnvelopeElement, Drift or Viewer, got \"" + type + "\"");
 }
 
@@ -129,10 +154,10 @@ void recordCmd(Runtime& rt, ArgReader& a) {
 
 constexpr CommandEntry kCommands[] = {
     {"recorder",
-     "recorder Node|EnvelopeNode -file f ?-time? ?-dT dt? ?-precision p? -node tags|-nodeRange a b -dof dofs "
+     "recorder Node|EnvelopeNode -file f ?-time|-load? ?-closeOnWrite? ?-dT dt? ?-precision p? ?-timeSeries tags? -node tags|-nodeRange a b -dof dofs "
      "disp|vel|accel|incrDisp|reaction|eigen i; recorder Element|EnvelopeElement -file f ?-time? -ele tags|-eleRange a b "
      "response; recorder Drift -file f -iNode .. -jNode .. -dof .. -perpDirn ..; "
-     "recorder Viewer -file page.html ?-dT dt? ?-nodes tags? ?-plots {..}? ?-title text?",
+     "recorder Viewer -file page.html ?-dT dt? ?-nodes tags? ?-plots {..}? ?-title text?; recorder plot|display ... (ignored)",
      recorderCmd},
     {"record", "record", recordCmd},
 };

@@ -87,8 +87,39 @@ bool readLine(std::istream& in, std::string& line) {
   return any;
 }
 
-// Appends the numbers of `text` to `values` until the first token that is not a number, which
-// ends the record (OpenSees' PathSeries reads `file >> value` until it fails); false then.
+// Length of the number at the start of `token` as `std::istream >> double` reads it (libstdc++):
+// optional sign, digits with an optional point, an optional exponent; 0 when the token does not
+// start with a number, or when an exponent marker has no digits ("2e", which the stream takes in
+// and then rejects). "inf", "nan" and hexadecimal are not numbers.
+std::size_t numberPrefix(std::string_view token) {
+  std::size_t i = 0;
+  auto digits = [&](std::size_t from) {
+    std::size_t j = from;
+    while (j < token.size() && std::isdigit(static_cast<unsigned char>(token[j])) != 0) ++j;
+    return j;
+  };
+  if (i < token.size() && (token[i] == '+' || token[i] == '-')) ++i;
+  std::size_t j = digits(i);
+  bool any = j > i;
+  if (j < token.size() && token[j] == '.') {
+    const std::size_t k = digits(j + 1);
+    any = any || k > j + 1;
+    j = k;
+  }
+  if (!any) return 0;
+  if (j < token.size() && (token[j] == 'e' || token[j] == 'E')) {
+    std::size_t k = j + 1;
+    if (k < token.size() && (token[k] == '+' || token[k] == '-')) ++k;
+    const std::size_t m = digits(k);
+    if (m == k) return 0;
+    j = m;
+  }
+  return j;
+}
+
+// Appends the numbers of `text` to `values` until the first that is not a number, which ends the
+// record; false then. As OpenSees' PathSeries reads `file >> value` until it fails, a number needs
+// no space after it: "0.2***" gives 0.2 and the record ends at "***"; "1.5-3" gives 1.5 and -3.
 bool takeNumbers(std::string_view text, std::vector<double>& values, long limit) {
   std::size_t i = 0;
   while (i < text.size()) {
@@ -97,13 +128,13 @@ bool takeNumbers(std::string_view text, std::vector<double>& values, long limit)
     while (j < text.size() && std::isspace(static_cast<unsigned char>(text[j])) == 0) ++j;
     if (j == i) break;
     if (limit >= 0 && static_cast<long>(values.size()) >= limit) return false;
-    if (j - i > kMaxToken) return false;
-    const std::string token(text.substr(i, j - i));
-    char* end = nullptr;
-    const double v = std::strtod(token.c_str(), &end);
-    if (end != token.c_str() + token.size() || !std::isfinite(v)) return false;
+    const std::size_t n = numberPrefix(text.substr(i, std::min(j - i, kMaxToken + 1)));
+    if (n == 0 || n > kMaxToken) return false;
+    const std::string token(text.substr(i, n));
+    const double v = std::strtod(token.c_str(), nullptr);
+    if (!std::isfinite(v)) return false;
     values.push_back(v);
-    i = j;
+    i += n;
   }
   return true;
 }

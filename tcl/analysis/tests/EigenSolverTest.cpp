@@ -53,6 +53,22 @@ TEST(EigenSolverTest, DenseAndSubspaceMatchTheChainClosedForm) {
   EXPECT_LT((orth - Eigen::MatrixXd::Identity(6, 6)).norm(), 1e-8);
 }
 
+// `eigen -findLargest`: the highest finite eigenvalues, ascending, with massless dofs (infinite
+// eigenvalues) left out.
+TEST(EigenSolverTest, LargestFiniteEigenvaluesInAscendingOrder) {
+  Eigen::SparseMatrix<double> K, M;
+  const int n = 12;
+  chain(n, 3.0, 2.0, K, M, 3);
+  const EigenResult r = solveEigenDense(K, M, 3, true);
+  ASSERT_TRUE(ok(r.status));
+  for (int i = 0; i < 3; ++i) {
+    const double expected = exact(n - 2 + i, n, 3.0, 2.0);
+    EXPECT_NEAR(r.values(i), expected, 1e-10 * expected);
+  }
+  const Eigen::VectorXd residual = K * r.vectors.col(2) - r.values(2) * (M * r.vectors.col(2));
+  EXPECT_LT(residual.norm(), 1e-8 * r.values(2));
+}
+
 TEST(EigenSolverTest, AskingForMoreModesThanMassesFails) {
   Eigen::SparseMatrix<double> K, M;
   chain(3, 1.0, 1.0, K, M, 4);
