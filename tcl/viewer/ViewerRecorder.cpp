@@ -7,7 +7,6 @@
 #include <filesystem>
 #include <fstream>
 #include <map>
-#include <numbers>
 #include <set>
 
 #include "elements/beam/SectionBeamColumn.h"
@@ -15,6 +14,8 @@
 #include "materials/section/FiberSection.h"
 #include "tcl/domain/Domain.h"
 #include "tcl/domain/RecorderFile.h"
+#include "tcl/viewer/SectionOutline.h"
+#include "tcl/viewer/ViewerEncoding.h"
 #include "tcl/viewer/ViewerPageTemplate.h"
 
 namespace dabs::domain {
@@ -24,92 +25,6 @@ namespace {
 // Relative tolerance on -dT, as in ResponseRecorder: round-off in accumulated time skips no frame.
 constexpr double kDeltaTTolerance = 1e-10;
 
-void appendNumber(std::string& out, double v, int digits) {
-  if (!std::isfinite(v)) v = 0.0;  // JSON has no NaN or infinity
-  char text[40];
-  std::snprintf(text, sizeof text, "%.*g", digits, v);
-  out += text;
-}
-
-/// JSON string literal; '<' is escaped so no "</script>" can end the data block early.
-void appendString(std::string& out, std::string_view s) {
-  out += '"';
-  for (const char ch : s) {
-    const auto c = static_cast<unsigned char>(ch);
-    if (c == '"' || c == '\\') {
-      out += '\\';
-      out += ch;
-    } else if (c < 0x20 || c == '<') {
-      char text[8];
-      std::snprintf(text, sizeof text, "\\u%04x", c);
-      out += text;
-    } else {
-      out += ch;
-    }
-  }
-  out += '"';
-}
-
-/// Standard base64 (RFC 4648 section 4) with padding.
-std::string base64(const std::string& bytes) {
-  static constexpr char kAlphabet[] =
-      "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
-  std::string out;
-  out.reserve((bytes.size() + 2) / 3 * 4);
-  std::size_t i = 0;
-  for (; i + 2 < bytes.size(); i += 3) {
-    const unsigned v = static_cast<unsigned char>(bytes[i]) << 16 |
-                       static_cast<unsigned char>(bytes[i + 1]) << 8 |
-                       static_cast<unsigned char>(bytes[i + 2]);
-    out += kAlphabet[v >> 18 & 63];
-    out += kAlphabet[v >> 12 & 63];
-    out += kAlphabet[v >> 6 & 63];
-    out += kAlphabet[v & 63];
-  }
-  const std::size_t rest = bytes.size() - i;
-  if (rest > 0) {
-    unsigned v = static_cast<unsigned char>(bytes[i]) << 16;
-    if (rest == 2) v |= static_cast<unsigned char>(bytes[i + 1]) << 8;
-    out += kAlphabet[v >> 18 & 63];
-    out += kAlphabet[v >> 12 & 63];
-    out += rest == 2 ? kAlphabet[v >> 6 & 63] : '=';
-    out += '=';
-  }
-  return out;
-}
-
-/// Appends one series (values at data[first + k * stride], k < count) to `bytes` as zigzag LEB128
-/// varints of successive differences of round(v / q), and its descriptor [q, offset] to `json`.
-void appendSeries(std::string& json, std::string& bytes, const std::vector<double>& data,
-                  std::size_t first, std::size_t stride, std::size_t count, bool integers) {
-  double peak = 0.0;
-  for (std::size_t k = 0; k < count; ++k) {
-    const double v = data[first + k * stride];
-    if (std::isfinite(v)) peak = std::max(peak, std::abs(v));
-  }
-  const double q =
-      integers || peak == 0.0 ? 1.0 : peak / ViewerRecorder::kQuantizationLevels;
-  json += '[';
-  appendNumber(json, q, 17);
-  json += ',';
-  json += std::to_string(bytes.size());
-  json += ']';
-  long long previous = 0;
-  for (std::size_t k = 0; k < count; ++k) {
-    const double v = data[first + k * stride];
-    const long long level = std::isfinite(v) ? std::llround(v / q) : 0;
-    const long long delta = level - previous;
-    previous = level;
-    auto zigzag = delta >= 0 ? static_cast<unsigned long long>(delta) * 2
-                             : static_cast<unsigned long long>(-delta) * 2 - 1;
-    do {
-      unsigned char b = zigzag & 0x7f;
-      zigzag >>= 7;
-      if (zigzag != 0) b |= 0x80;
-      bytes += static_cast<char>(b);
-    } while (zigzag != 0);
-  }
-}
 
 double nodeValue(const Node& n, int dof, ViewerPlot::NodeQuantity quantity) {
   if (dof >= n.ndf()) return 0.0;
@@ -121,63 +36,6 @@ double nodeValue(const Node& n, int dof, ViewerPlot::NodeQuantity quantity) {
   return 0.0;
 }
 
-/// Vertices of a circle of diameter d as a polygon (local y, z pairs).
-std::vector<double> circleOutline(double d) {
-  constexpr int kSides = 32;
-  std::vector<double> out;
-  for (int k = 0; k < kSides; ++k) {
-    const double a = 2.0 * std::numbers::pi * k / kSides;
-    out.push_back(0.5 * d * std::cos(a));
-    out.push_back(0.5 * d * std::sin(a));
-  }
-  return out;
-}
-
-/// Outline of a fiber section: the convex hull of the fiber positions (Andrew's monotone chain),
-/// scaled about the area centroid so that it encloses the section's area. The outermost fibers
-/// sit at their patch cells' centroids, inside the true edge; scaling to the area puts the
-/// drawn edge where the area says it is (exact for a rectangle of equal cells, within 1 % of the
-/// radius for a circle of 12 sectors).
-std::vector<double> fiberOutline(const materials::section::FiberSection3d& s) {
-  struct P { double y, z; };
-  std::vector<P> p;
-  double area = 0.0, cy = 0.0, cz = 0.0;
-  for (int i = 0; i < s.numFibers(); ++i) {
-    p.push_back({s.fiberY(i), s.fiberZ(i)});
-    area += s.fiberArea(i);
-    cy += s.fiberArea(i) * s.fiberY(i);
-    cz += s.fiberArea(i) * s.fiberZ(i);
-  }
-  if (p.size() < 3 || area <= 0.0) return {};
-  cy /= area;
-  cz /= area;
-  std::sort(p.begin(), p.end(), [](P a, P b) { return a.y < b.y || (a.y == b.y && a.z < b.z); });
-  auto cross = [](P o, P a, P b) { return (a.y - o.y) * (b.z - o.z) - (a.z - o.z) * (b.y - o.y); };
-  std::vector<P> hull(2 * p.size());
-  std::size_t k = 0;
-  for (std::size_t i = 0; i < p.size(); ++i) {
-    while (k >= 2 && cross(hull[k - 2], hull[k - 1], p[i]) <= 0.0) --k;
-    hull[k++] = p[i];
-  }
-  for (std::size_t i = p.size() - 1, lower = k + 1; i-- > 0;) {
-    while (k >= lower && cross(hull[k - 2], hull[k - 1], p[i]) <= 0.0) --k;
-    hull[k++] = p[i];
-  }
-  hull.resize(k - 1);
-  if (hull.size() < 3) return {};
-  double hullArea = 0.0;
-  for (std::size_t i = 0; i < hull.size(); ++i) {
-    const P a = hull[i], b = hull[(i + 1) % hull.size()];
-    hullArea += 0.5 * (a.y * b.z - b.y * a.z);
-  }
-  const double scale = hullArea > 0.0 ? std::sqrt(area / hullArea) : 1.0;
-  std::vector<double> out;
-  for (const P& h : hull) {
-    out.push_back(cy + scale * (h.y - cy));
-    out.push_back(cz + scale * (h.z - cz));
-  }
-  return out;
-}
 
 }  // namespace
 
@@ -431,18 +289,18 @@ std::string ViewerRecorder::dataJson() const {
   const std::size_t perFrame = 3 * nodes_.size();
   for (std::size_t s = 0; s < perFrame; ++s) {
     if (s) json += ',';
-    appendSeries(json, bytes, disp_, s, perFrame, n, false);
+    appendSeries(json, bytes, disp_, s, perFrame, n, false, kQuantizationLevels);
   }
   json += "],\"contacts\":[";
   for (std::size_t i = 0; i < contacts_.size(); ++i) {
     json += i ? ",[" : "[";
     json += std::to_string(contacts_[i]);
     json += ',';
-    appendSeries(json, bytes, status_, i, contacts_.size(), n, true);
+    appendSeries(json, bytes, status_, i, contacts_.size(), n, true, kQuantizationLevels);
     json += ',';
-    appendSeries(json, bytes, gap_, i, contacts_.size(), n, false);
+    appendSeries(json, bytes, gap_, i, contacts_.size(), n, false, kQuantizationLevels);
     json += ',';
-    appendSeries(json, bytes, force_, i, contacts_.size(), n, false);
+    appendSeries(json, bytes, force_, i, contacts_.size(), n, false, kQuantizationLevels);
     json += ']';
   }
   json += "],\"bearings\":[";
@@ -450,9 +308,9 @@ std::string ViewerRecorder::dataJson() const {
     json += i ? ",[" : "[";
     json += std::to_string(bearings_[i]);
     json += ',';
-    appendSeries(json, bytes, damage_, i, bearings_.size(), n, true);
+    appendSeries(json, bytes, damage_, i, bearings_.size(), n, true, kQuantizationLevels);
     json += ',';
-    appendSeries(json, bytes, strain_, i, bearings_.size(), n, false);
+    appendSeries(json, bytes, strain_, i, bearings_.size(), n, false, kQuantizationLevels);
     json += ']';
   }
   json += "],\"ground\":[";
@@ -460,7 +318,7 @@ std::string ViewerRecorder::dataJson() const {
     json += i ? ",[" : "[";
     json += std::to_string(ground_[i].second);
     json += ',';
-    appendSeries(json, bytes, groundAccel_, i, ground_.size(), n, false);
+    appendSeries(json, bytes, groundAccel_, i, ground_.size(), n, false, kQuantizationLevels);
     json += ']';
   }
   json += "],\"plots\":[";
@@ -482,7 +340,7 @@ std::string ViewerRecorder::dataJson() const {
     json += ",\"source\":";
     appendString(json, source);
     json += ",\"values\":";
-    appendSeries(json, bytes, plotValues_, i, nPlots, n, false);
+    appendSeries(json, bytes, plotValues_, i, nPlots, n, false, kQuantizationLevels);
     json += '}';
   }
   json += "],\"bytes\":\"" + base64(bytes) + "\"}";
