@@ -42,7 +42,7 @@ int readPid(ArgReader& a, const Communicator& comm, const std::string& token, bo
   if (any && (token == "ANY" || token == "ANY_SOURCE" || token == "MPI_ANY_SOURCE"))
     return Communicator::kAnySource;
   const std::string range = comm.size() == 1
-                                ? "; this is the only process (getNP is 1)"
+                                ? " other than this process, the only one (getNP is 1)"
                                 : " from 0 to " + std::to_string(comm.size() - 1) +
                                       " other than this process (" + std::to_string(comm.rank()) + ")";
   std::size_t used = 0;
