@@ -74,7 +74,8 @@ proc fragility::fit {pairs {weights {}}} {
     if {$yi == 0.0 && $ui > $maxNo} { set maxNo $ui }
     if {$yi == 1.0 && $ui < $minYes} { set minYes $ui }
   }
-  if {$separated && $maxNo < $minYes} {
+  # (also quasi-complete: the largest 0 and the smallest 1 at the same x)
+  if {$separated && $maxNo <= $minYes} {
     return [dict merge $result [dict create status separated theta [expr {exp(0.5 * ($maxNo + $minYes))}] beta 0.0]]
   }
   # Start: median at the weighted mean of ln x, dispersion their spread.
@@ -85,6 +86,22 @@ proc fragility::fit {pairs {weights {}}} {
   set s [expr {max(sqrt($var), 0.1)}]
   set b [expr {1.0 / $s}]
   set a [expr {-$mean * $b}]
+  set converged 0
+  # Nearly separated data drive b up without bound until the arithmetic overflows: reported as
+  # separated, like the exact case.
+  if {[catch {scoring $u $y $w a b} converged]} { set converged 0 }
+  if {!$converged || $b <= 0.0 || 1.0 / $b < 1e-6} {
+    return [dict merge $result [dict create status separated theta [expr {exp(-$a / $b)}] beta 0.0]]
+  }
+  return [dict merge $result [dict create status fit theta [expr {exp(-$a / $b)}] beta [expr {1.0 / $b}]]]
+}
+
+# Fisher scoring of the probit model from (a, b); sets them to the estimate and returns 1 when it
+# converged.
+proc fragility::scoring {u y w aName bName} {
+  variable maxIterations
+  variable tolerance
+  upvar 1 $aName a $bName b
   set converged 0
   for {set it 0} {$it < $maxIterations && !$converged} {incr it} {
     # Fisher scoring = iteratively reweighted least squares on the working response z.
@@ -108,8 +125,5 @@ proc fragility::fit {pairs {weights {}}} {
     set a $aNew; set b $bNew
     if {$change < $tolerance * (1.0 + abs($a) + abs($b))} { set converged 1 }
   }
-  if {!$converged || $b <= 0.0} {
-    return [dict merge $result [dict create status separated theta [expr {exp(-$a / $b)}] beta 0.0]]
-  }
-  return [dict merge $result [dict create status fit theta [expr {exp(-$a / $b)}] beta [expr {1.0 / $b}]]]
+  return $converged
 }
