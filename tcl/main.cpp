@@ -2,7 +2,8 @@
 // The dabs program: `dabs script.tcl ?args...?` runs a script; `dabs` alone in a terminal is an
 // interactive Tcl shell with the dabs commands (line editing and history from Debian's
 // tcl-tclreadline when it is installed); `dabs` with standard input from a pipe or a file runs the
-// commands read there and exits with status 1 when any of them failed.
+// commands read there and exits with status 1 when any of them failed. Built with DABS_MPI it is
+// dabs-mp: MPI starts first, and getPID, send, ensemble ... act for the processes mpirun started.
 #include <tcl.h>
 #include <unistd.h>
 

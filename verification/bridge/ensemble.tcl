@@ -250,6 +250,18 @@ if {"pound" in $cases && "countermeasure" in $cases} {
     set p2 [prob [dict get $fits countermeasure service-lost pgv] $x]
     puts $md [format "| %.1f | %.2f | %.2f | %+.2f |" $x $p1 $p2 [expr {$p2 - $p1}]]
   }
+  set largest {}
+  foreach c $cases {
+    set top 0.0
+    foreach row $rows { if {[dict get $row case] eq $c && [dict get $row status] eq "ok"} { set top [expr {max($top, [dict get $row opening])}] } }
+    lappend largest [format "%s %.3f m" $c $top]
+  }
+  puts $md "\nLargest peak opening of a joint over all runs: [join $largest {, }]."
+  # What the devices can do for the opening limit follows from their free travel.
+  if {$restrainerSlack >= [dict get $limits opening]} {
+    puts $md [format "\nThe restrainers' free travel (slack %.3g m) is not below the opening limit (%.3g m): the cables pull only once a joint has opened past its allowance, so they cannot keep the opening within it; the bumpers (clearance %.3g m) act on closing, not opening." \
+        $restrainerSlack [dict get $limits opening] $bumperClearance]
+  }
 }
 close $md
 

@@ -4,19 +4,21 @@
 # lengths that differ by 10x from job to job, one job whose analysis fails and one whose command
 # raises an error.
 #
-#   dabs jobs.tcl outDir ?count? ?logFile? ?lengthFactor?
+#   dabs jobs.tcl outDir ?count? ?logFile? ?lengthFactor? ?faults?
 #   mpirun -n 2 dabs-mp jobs.tcl outDir ...
 #
 #   count         number of jobs (default 16)
 #   logFile       each job appends "<id> <process number> <operating-system pid>" to it when it
 #                 starts (the tests read which jobs a run did); "" for none
 #   lengthFactor  scales every job's number of steps (default 1)
+#   faults        1 (default): job 5's analysis fails and job 9 raises an error; 0: all 16 run
 # Prints the ensemble's summary and the wall time.
 
 set outDir [lindex $argv 0]
 set count [expr {$argc > 1 ? [lindex $argv 1] : 16}]
 set logFile [expr {$argc > 2 ? [lindex $argv 2] : ""}]
 set lengthFactor [expr {$argc > 3 ? [lindex $argv 3] : 1.0}]
+set faults [expr {$argc > 4 ? [lindex $argv 4] : 1}]
 
 # One job: the oscillator with yield force fy under amplitude ag (m/s^2) for `steps` steps of
 # 0.005 s. kind: ok | diverge (a convergence test no step can pass: the analysis fails and its code
@@ -60,8 +62,8 @@ proc oscillator {job} {
 set jobs {}
 for {set i 1} {$i <= $count} {incr i} {
   set kind ok
-  if {$i == 5} { set kind diverge }
-  if {$i == 9} { set kind error }
+  if {$faults && $i == 5} { set kind diverge }
+  if {$faults && $i == 9} { set kind error }
   set steps [expr {int(round($lengthFactor * 100 * (1 + (7 * $i) % 10)))}]
   lappend jobs [list id [format "osc%02d" $i] kind $kind fy [expr {10.0 + $i}] ag [expr {3.0 + 0.5 * $i}] steps $steps]
 }
