@@ -3,6 +3,7 @@
 """Speed-up of the `ensemble run` job farm on 2 processes against 1.
 
 Usage: ensemble-bench.py path/to/build [repeat] [lengthFactor] [mpirun options...]
+       (mpirun options by default: --oversubscribe --bind-to none, for Open MPI)
 
 Runs the 16 jobs of verification/ensemble/jobs.tcl (yielding oscillators, run lengths 1 to 10 in
 an order that mixes long and short; all 16 complete) `repeat` times (default 3) with the serial
@@ -54,7 +55,7 @@ def main():
     build = os.path.abspath(sys.argv[1])
     repeat = int(sys.argv[2]) if len(sys.argv) > 2 else 3
     factor = sys.argv[3] if len(sys.argv) > 3 else "4500"
-    options = sys.argv[4:] or ["--oversubscribe"]
+    options = sys.argv[4:] or ["--oversubscribe", "--bind-to", "none"]
     env_note = os.uname()
     tmp = tempfile.mkdtemp(prefix="dabs-ensemble-bench-")
     serial, parallel, bounds, loads = [], [], [], []
