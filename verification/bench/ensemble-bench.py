@@ -19,6 +19,7 @@ starts late.
 """
 import csv
 import os
+import resource
 import shutil
 import statistics
 import subprocess
@@ -30,11 +31,18 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 JOBS = os.path.join(HERE, "..", "ensemble", "jobs.tcl")
 
 
+def cpu_of_children():
+    usage = resource.getrusage(resource.RUSAGE_CHILDREN)
+    return usage.ru_utime + usage.ru_stime
+
+
 def run(cmd, out):
     shutil.rmtree(out, ignore_errors=True)
     start = time.monotonic()
+    cpu = cpu_of_children()
     result = subprocess.run(cmd, capture_output=True, text=True, check=True)
     total = time.monotonic() - start
+    run.cpu = cpu_of_children() - cpu
     ensemble = next(float(line.split()[1]) for line in result.stdout.splitlines()
                     if line.startswith("wall "))
     with open(os.path.join(out, "results.csv"), newline="") as f:
@@ -64,8 +72,15 @@ def main():
             loads.append(os.getloadavg()[0])
             s = run([os.path.join(build, "dabs"), JOBS, os.path.join(tmp, "s"), "16", "", factor, "0"],
                     os.path.join(tmp, "s"))
+            s_cpu = run.cpu
             p = run(["mpirun", "-n", "2", *options, os.path.join(build, "dabs-mp"), JOBS,
                      os.path.join(tmp, "p"), "16", "", factor, "0"], os.path.join(tmp, "p"))
+            p_cpu = run.cpu
+            # Share of the ensemble's wall time each process spent in jobs: what the farm leaves
+            # idle, whatever share of a core the machine gives each process.
+            busy = {}
+            for r in p[2]:
+                busy[r["rank"]] = busy.get(r["rank"], 0.0) + float(r["seconds"]) / p[0]
             times = [float(r["seconds"]) for r in s[2]]
             bound = sum(times) / list_schedule(times, 2)
             serial.append(s)
@@ -75,7 +90,9 @@ def main():
             print(f"run {k + 1}: 1 process {s[0]:.2f} s (command {s[1]:.2f} s), 2 processes "
                   f"{p[0]:.2f} s (command {p[1]:.2f} s, ranks {','.join(ranks)}): speed-up "
                   f"{s[0] / p[0]:.2f} (command {s[1] / p[1]:.2f}); list-scheduling bound {bound:.2f}; "
-                  f"jobs {min(times):.2f} to {max(times):.2f} s; load average before {loads[-1]:.2f}",
+                  f"jobs {min(times):.2f} to {max(times):.2f} s; load average before {loads[-1]:.2f}; "
+                  f"CPU s {s_cpu:.1f} and {p_cpu:.1f}; busy "
+                  + ", ".join(f"rank {k} {v:.0%}" for k, v in sorted(busy.items())),
                   flush=True)
     finally:
         shutil.rmtree(tmp, ignore_errors=True)

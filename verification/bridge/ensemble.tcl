@@ -222,8 +222,8 @@ proc prob {f x} {
 
 set md [open [file join $outDir fragility.md] w]
 puts $md "# Fragility of the three-span bridge ($study study)\n"
-puts $md [format "%d runs (%s) on %d process(es) in %.1f s. Isolated period T_iso = %.2f s (deck on the bearings' initial stiffness). Motions:" \
-    [llength $jobs] $summary [getNP] $wall $Tiso]
+puts $md [format "%d runs; this call ran %d of them on %d process(es) in %.1f s (%s). Isolated period T_iso = %.2f s (deck on the bearings' initial stiffness). Motions:" \
+    [llength $jobs] [dict get $summary ran] [getNP] $wall $summary $Tiso]
 dict for {name m} $motions {
   puts $md [format "- %s: PGV %.3f m/s, Sa(T_iso, 5 %%) %.3f g at scale 1" $name [dict get $m pgv] [dict get $m sa]]
 }
@@ -243,7 +243,7 @@ dict for {c n} $failedRuns { lappend failedText "$c $n" }
 puts $md "\nRuns whose analysis failed (left out of the fits): [join $failedText {, }].\n"
 if {"pound" in $cases && "countermeasure" in $cases} {
   puts $md "## Does the countermeasure lower the probability of losing serviceability?\n"
-  puts $md "| PGV (m/s) | P(service lost), pound | P(service lost), countermeasure | reduction |"
+  puts $md "| PGV (m/s) | P(service lost), pound | P(service lost), countermeasure | countermeasure - pound |"
   puts $md "|---|---|---|---|"
   foreach x {0.5 1.0 1.5 2.0} {
     set p1 [prob [dict get $fits pound service-lost pgv] $x]
