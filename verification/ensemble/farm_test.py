@@ -30,8 +30,9 @@ from check import check, finish  # noqa: E402
 HERE = os.path.dirname(os.path.abspath(__file__))
 JOBS = os.path.join(HERE, "jobs.tcl")
 COUNT = 16
-# Steps scale: jobs of about 0.1 to 1 s, so that a kill lands in the middle of the ensemble.
-KILL_LENGTH = 1000
+# Steps scale: jobs of about 0.04 to 0.4 s on one core, so that a kill lands in the middle of the
+# ensemble.
+KILL_LENGTH = 400
 # Columns that say where and how long a job ran, not what it computed.
 PLACE_COLUMNS = ("rank", "seconds")
 
