@@ -285,7 +285,8 @@ foreach ds $damageStates {
 }
 close $fh
 set colors {nopound #1f77b4 pound #d62728 countermeasure #2ca02c}
-foreach im {pgv sa} label {"PGV (m/s)" "Sa(T_iso = [format %.2f $Tiso] s, 5 %) (g)"} xmax {2.2 3.0} {
+set labels [list "PGV (m/s)" [format "Sa(T_{iso} = %.2f s, 5 %%) (g)" $Tiso]]
+foreach im {pgv sa} label $labels xmax {2.2 3.0} {
   set gp "set terminal pngcairo size 1500,800 font ',10'\nset output '[file join $outDir fragility-$im.png]'\n"
   append gp "set multiplot layout 2,3 title 'Fragility of the bridge ($study study, lognormal maximum-likelihood fits)'\n"
   append gp "set yrange \[0:1\]\nset xrange \[0.01:$xmax\]\nset xlabel '$label'\nset ylabel 'P(exceed)'\nset key bottom right\nset samples 400\n"
