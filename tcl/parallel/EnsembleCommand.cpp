@@ -182,6 +182,8 @@ void ensembleCmd(Runtime& rt, ArgReader& a) {
   a.finish();
   ParallelState& state = ParallelState::of(rt.interp);
   if (state.inJob) a.fail("an ensemble job cannot run an ensemble");
+  // It writes files, which a safe interpreter may not (Tcl hides `open` and `file` there).
+  if (Tcl_IsSafe(rt.interp) != 0) a.fail("not available in a safe interpreter (it writes files)");
   Communicator& comm = *state.farm;
   const int rank = comm.rank();
 

@@ -95,7 +95,10 @@ void recvCmd(Runtime& rt, ArgReader& a) {
   a.finish();
   Communicator::Message message;
   if (pidWord) {
-    message = comm.receive(readPid(a, comm, *pidWord, true), kMessageTag);
+    const int source = readPid(a, comm, *pidWord, true);
+    if (comm.size() == 1)
+      a.fail("-pid " + *pidWord + ": there is no other process to receive from (getNP is 1)");
+    message = comm.receive(source, kMessageTag);
   } else {
     if (comm.rank() == 0)
       a.fail("without -pid a process takes what process 0 sent with `send value`; process 0 "

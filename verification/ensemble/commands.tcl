@@ -47,6 +47,7 @@ if {$pid == 0} {
 }
 if {$np == 1} {
   expectError "one process has nobody to send to" { send -pid 1 x } {send "the only one" "getNP is 1"}
+  expectError "one process has nobody to receive from" { recv -pid ANY x } {recv "no other process" "getNP is 1"}
 }
 expectError "ensemble needs run" { ensemble go {} x } {ensemble subcommand run go}
 expectError "ensemble: a job is a dict" { ensemble run {{a 1 b}} job } {"ensemble run" jobList "job 1" dict}
