@@ -2,7 +2,8 @@
 // The dabs program: `dabs script.tcl ?args...?` runs a script; `dabs` alone in a terminal is an
 // interactive Tcl shell with the dabs commands (line editing and history from Debian's
 // tcl-tclreadline when it is installed); `dabs` with standard input from a pipe or a file runs the
-// commands read there and exits with status 1 when any of them failed.
+// commands read there and exits with status 1 when any of them failed. Built with DABS_MPI it is
+// dabs-mp: MPI starts first, and getPID, send, ensemble ... act for the processes mpirun started.
 #include <tcl.h>
 #include <unistd.h>
 
@@ -10,12 +11,19 @@
 
 #include "tcl/commands/CommandTable.h"
 #include "tcl/commands/SignalExit.h"
+#ifdef DABS_MPI
+#include "tcl/parallel/mpi/MpiSession.h"
+#endif
 
 namespace {
 
 int appInit(Tcl_Interp* interp) {
   if (Tcl_Init(interp) != TCL_OK) return TCL_ERROR;
   if (dabs::tcl::registerCommands(interp) != TCL_OK) return TCL_ERROR;
+#ifdef DABS_MPI
+  // dabs-mp: getPID, send, ensemble ... act for the processes mpirun started.
+  if (dabs::parallel::attachMpi(interp) != TCL_OK) return TCL_ERROR;
+#endif
   Tcl_PkgProvide(interp, "dabs", "0.1.0");
   // A terminal session gets line editing and history from Debian's tcl-tclreadline when it is
   // installed; its loop exits the program at end of input. Otherwise Tcl's own loop runs.
@@ -92,6 +100,9 @@ int runPipedInput(const char* argv0) {
 }  // namespace
 
 int main(int argc, char** argv) {
+#ifdef DABS_MPI
+  dabs::parallel::startMpi(&argc, &argv);
+#endif
   dabs::tcl::installSignalExit();
   if (argc == 1 && isatty(STDIN_FILENO) == 0) return runPipedInput(argv[0]);
   Tcl_Main(argc, argv, appInit);

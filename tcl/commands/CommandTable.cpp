@@ -6,6 +6,7 @@
 
 #include "materials/InputError.h"
 #include "tcl/analysis/AnalysisBuilder.h"
+#include "tcl/parallel/ParallelCommands.h"
 
 namespace dabs::tcl {
 
@@ -93,6 +94,7 @@ int registerCommands(Tcl_Interp* interp) {
       modelCommands(),        loadCommands(),    analysisCommands(), queryCommands(),
       recorderCommands(),     materialTestCommands(), sectionCommands(), bearingCommands(),
       contactCommands(),
+      dabs::parallel::parallelCommands(),  // getPID, getNP, send, recv, barrier, Bcast, ensemble
   };
   // Keep Tcl's `load` reachable before ours takes its name.
   if (Tcl_FindCommand(interp, "::load", nullptr, TCL_GLOBAL_ONLY) != nullptr &&

@@ -1,0 +1,329 @@
+# SPDX-License-Identifier: MIT
+# Fragility of the three-span bridge (bridge.tcl) from an ensemble of runs: the three cases
+# (nopound, pound, countermeasure) under every ground-motion record and a family of near-fault
+# pulses, each scaled to a ladder of peak ground velocities (incremental dynamic analysis,
+# Vamvatsikos and Cornell 2002), then lognormal fragility curves of five damage states against PGV
+# and against Sa(T_iso), fitted by maximum likelihood (verification/ensemble/fragility.tcl).
+#
+#   dabs verification/bridge/ensemble.tcl ?study? ?outDir?
+#   mpirun -n 4 dabs-mp verification/bridge/ensemble.tcl full ensemble-out      (or srun ...)
+#
+#   study   smoke (default: 8 short runs, what the test suite runs) | full (the study)
+#   outDir  default ./ensemble-out: runs/jobs/<id>.csv (one per run), runs/results.csv (all runs),
+#           fragility.csv, fragility.md (tables and the answer), fragility-pgv.png, fragility-sa.png
+# A rerun skips the runs already done (killed studies resume).
+#
+# Motions
+#   records  every .AT2 file in verification/data (Takatori EW, El Centro NS) and, when present,
+#            in ../shared/data/ground-motions beside the checkout (a file name counted once)
+#   pulses   the Mavroeidis-Papageorgiou pulse (timeSeries NearFaultPulse) with periods Tp from
+#            0.5 to 4 s, inside the 0.4-12.9 s of the 91 pulse-like NGA records Baker (2007, BSSA
+#            97(5):1486-1501) found and around the isolated periods; gamma and nu as fitted to
+#            Takatori in bridge.tcl. A pulse's velocity amplitude and a scale factor are the same
+#            thing (the series is linear in Vp), so the velocities are the PGV ladder below.
+#   ladder   each motion scaled to PGV = 0.3 ... 2.0 m/s: from Baker's 0.3 m/s threshold of a
+#            pulse-like record to above the largest PGVs recorded near faults (Takatori EW 1.23
+#            m/s as distributed)
+# Damage states (the limits and their source)
+#   bearing-250  a bearing's peak shear strain >= 250 %: the allowable shear strain of rubber
+#                bearings under level-2 ground motion (Japan Road Association, Specifications for
+#                Highway Bridges, Part V, 2002), the design limit of bridge.tcl's report
+#   bearing-300  >= 300 %: bearing failure (the failure strain of bridge.tcl's report)
+#   opening      peak longitudinal opening of a joint > 0.05 m: the expansion joint, made for the
+#                0.05 m gap, accommodates +- the gap (bridge.tcl serviceMaxOpening: our limit, the
+#                paper's criterion has no numbers)
+#   unseating    peak longitudinal opening > 0.90 m: the minimum seat length S_EM = 0.7 + 0.005 L
+#                (m, L = 40 m span; JRA 2002 Part V)
+#   residual     residual longitudinal or transverse offset of a joint at the end of the analysis
+#                > 0.05 m (bridge.tcl serviceMaxResidual)
+#   service-lost the bridge is not serviceable: opening, residual or bearing-300
+# A run whose analysis fails (a step that no algorithm brings to convergence) is recorded as failed
+# and left out of the fits; the tables count them.
+
+set here [file dirname [file normalize [info script]]]
+set ::bridgeLibraryOnly 1
+source [file join $here bridge.tcl]
+source [file join $here .. ensemble fragility.tcl]
+source [file join $here .. ensemble intensity.tcl]
+
+set study [expr {$argc > 0 ? [lindex $argv 0] : "smoke"}]
+set outDir [file normalize [expr {$argc > 1 ? [lindex $argv 1] : "ensemble-out"}]]
+if {$study ni {smoke full}} { error "study must be smoke or full, got \"$study\"" }
+
+# ---------------------------------------------------------------------------------------------
+# The study
+# ---------------------------------------------------------------------------------------------
+set cases {nopound pound countermeasure}
+set pulsePeriods {0.5 0.75 1.0 1.5 2.0 3.0 4.0}  ;# s
+set pgvLadder {0.3 0.5 0.75 1.0 1.25 1.5 1.75 2.0} ;# m/s
+set studyDuration $duration                        ;# s of each analysis (bridge.tcl: 20 s)
+set recordFolders [list [file join $here .. data] [file join $here .. .. .. shared data ground-motions]]
+set recordPatterns {*.AT2 *.at2}
+if {$study eq "smoke"} {
+  set cases {pound countermeasure}
+  set pulsePeriods {1.0}
+  set pgvLadder {0.5 1.5}
+  set studyDuration 8.0
+  set recordFolders [list [file join $here .. data]]
+  set recordPatterns {elCentro.at2}
+}
+set seatLength [expr {0.7 + 0.005 * $spanLength}]
+set limits [dict create bearing-250 2.5 bearing-300 3.0 opening $serviceMaxOpening \
+    unseating $seatLength residual $serviceMaxResidual]
+set damageStates {bearing-250 bearing-300 opening unseating residual service-lost}
+
+# Isolated period: the deck on the bearings' initial stiffness (bridge.tcl's estimate).
+buildModel pound
+set Tiso [dict get $::derived Tiso]
+wipe
+
+# Motions and their intensity at scale 1, computed by every process (the job list must be the
+# same everywhere; `ensemble run` uses process 0's).
+set motions [dict create]
+set seen {}
+foreach folder $recordFolders {
+  foreach file [lsort [glob -nocomplain -directory $folder {*}$recordPatterns]] {
+    set key [string tolower [file tail $file]]
+    if {$key in $seen} { continue }
+    lappend seen $key
+    set h [intensity::recordHeader $file]
+    set im [intensity::measures [list timeSeries Path 1 -filePath $file -factor $g] $Tiso 0.05 \
+        [expr {[dict get $h npts] * [dict get $h dt]}] [dict get $h dt]]
+    dict set motions [file rootname [file tail $file]] [dict create kind record file $file \
+        pgv [dict get $im pgv] sa [expr {[dict get $im sa] / $g}]]
+  }
+}
+foreach Tp $pulsePeriods {
+  set t0 [expr {max(3.0, 0.5 * $pulseGamma * $Tp + 1.0)}]
+  set series [list timeSeries NearFaultPulse 1 -Tp $Tp -Vp 1.0 -gamma $pulseGamma -nu $pulseNu -t0 $t0]
+  set im [intensity::measures $series $Tiso 0.05 $studyDuration 0.002]
+  dict set motions [format "pulse-Tp%.2f" $Tp] [dict create kind pulse Tp $Tp t0 $t0 \
+      pgv [dict get $im pgv] sa [expr {[dict get $im sa] / $g}]]
+}
+
+# One job per case, motion and PGV level; the strongest first, so that the long runs start early
+# and the short ones fill the end (the farm hands jobs out in this order).
+set jobs {}
+foreach level [lsort -real -decreasing $pgvLadder] {
+  foreach c $cases {
+    dict for {name m} $motions {
+      set scale [expr {$level / [dict get $m pgv]}]
+      lappend jobs [list id [format "%s-%s-pgv%.2f" $c $name $level] case $c motion $name \
+          level $level scale [format %.6g $scale]]
+    }
+  }
+}
+
+# One run: the bridge under the motion scaled, its intensity and its peak responses.
+proc bridgeRun {job} {
+  dict with job {}
+  set m [dict get $::motions $motion]
+  set ::duration $::studyDuration
+  if {[dict get $m kind] eq "pulse"} {
+    set ::pulseTp [dict get $m Tp]; set ::pulseVp 1.0; set ::pulseT0 [dict get $m t0]
+    set input pulse
+  } else {
+    set input [dict get $m file]
+  }
+  set r [runCase $case $scale $::defaultDt $::defaultIntegrator $::defaultTol $input]
+  set peak [dict get $r peak]
+  set last [dict get $r last]
+  set strain 0.0; set opening 0.0; set residual 0.0
+  dict for {key value} $peak {
+    if {[string match strain* $key]} { set strain [expr {max($strain, $value)}] }
+    if {[regexp {^open[0-9]+$} $key]} { set opening [expr {max($opening, $value)}] }
+  }
+  dict for {key value} $last {
+    if {[regexp {^gap[0-9]+[xy]$} $key]} { set residual [expr {max($residual, abs($value))}] }
+  }
+  return [list code [expr {[dict get $r completed] ? 0 : -1}] \
+      pgv [expr {$scale * [dict get $m pgv]}] sa [expr {$scale * [dict get $m sa]}] \
+      strain $strain opening $opening residual $residual wall [format %.3f [dict get $r wall]]]
+}
+
+set t0 [clock milliseconds]
+set summary [ensemble run $jobs bridgeRun -out [file join $outDir runs]]
+set wall [expr {([clock milliseconds] - $t0) / 1000.0}]
+if {[getPID] != 0} { return }
+puts [format "%s study: %d runs on %d process(es), %.1f s: %s" $study [llength $jobs] [getNP] $wall $summary]
+
+# ---------------------------------------------------------------------------------------------
+# Fragility
+# ---------------------------------------------------------------------------------------------
+proc readCsv {file} {
+  set fh [open $file]; set lines [split [string trimright [read $fh] \n] \n]; close $fh
+  set header [split [lindex $lines 0] ,]
+  set rows {}
+  foreach line [lrange $lines 1 end] {
+    # results.csv quotes only error messages, which completed runs do not have
+    if {[string first \" $line] >= 0} { set line [regsub -all {"[^"]*"} $line {}] }
+    set row {}
+    foreach k $header v [split $line ,] { dict set row $k $v }
+    lappend rows $row
+  }
+  return $rows
+}
+proc exceeds {row ds} {
+  set lim $::limits
+  switch -- $ds {
+    bearing-250 { return [expr {[dict get $row strain] >= [dict get $lim bearing-250]}] }
+    bearing-300 { return [expr {[dict get $row strain] >= [dict get $lim bearing-300]}] }
+    opening { return [expr {[dict get $row opening] > [dict get $lim opening]}] }
+    unseating { return [expr {[dict get $row opening] > [dict get $lim unseating]}] }
+    residual { return [expr {[dict get $row residual] > [dict get $lim residual]}] }
+    service-lost {
+      return [expr {[exceeds $row opening] || [exceeds $row residual] || [exceeds $row bearing-300]}]
+    }
+  }
+}
+
+set rows [readCsv [dict get $summary file]]
+set fits [dict create]
+set failedRuns [dict create]
+set fh [open [file join $outDir fragility.csv] w]
+puts $fh "case,damage_state,im,status,theta,beta,runs,exceeding,failed_runs"
+foreach c $cases {
+  set mine {}
+  set nFailed 0
+  foreach row $rows {
+    if {[dict get $row case] ne $c} { continue }
+    if {[dict get $row status] ne "ok"} { incr nFailed; continue }
+    lappend mine $row
+  }
+  dict set failedRuns $c $nFailed
+  foreach ds $damageStates {
+    foreach im {pgv sa} {
+      set pairs {}
+      foreach row $mine { lappend pairs [dict get $row $im] [exceeds $row $ds] }
+      set f [expr {[llength $pairs] ? [fragility::fit $pairs] : [dict create status none theta Inf beta NaN n 0 exceed 0]}]
+      dict set fits $c $ds $im $f
+      puts $fh [join [list $c $ds $im [dict get $f status] [dict get $f theta] [dict get $f beta] \
+          [expr {int([dict get $f n])}] [expr {int([dict get $f exceed])}] $nFailed] ,]
+    }
+  }
+}
+close $fh
+
+proc median {f unit} {
+  switch -- [dict get $f status] {
+    fit { return [format "%.3g %s (beta %.2f)" [dict get $f theta] $unit [dict get $f beta]] }
+    separated { return [format "%.3g %s (step)" [dict get $f theta] $unit] }
+    none { return "not reached" }
+    all { return "always" }
+  }
+}
+proc prob {f x} {
+  switch -- [dict get $f status] {
+    none { return 0.0 }
+    all { return 1.0 }
+    default { return [fragility::probability [dict get $f theta] [dict get $f beta] $x] }
+  }
+}
+
+set md [open [file join $outDir fragility.md] w]
+puts $md "# Fragility of the three-span bridge ($study study)\n"
+puts $md [format "%d runs; this call ran %d of them on %d process(es) in %.1f s (%s). Isolated period T_iso = %.2f s (deck on the bearings' initial stiffness). Motions:" \
+    [llength $jobs] [dict get $summary ran] [getNP] $wall $summary $Tiso]
+dict for {name m} $motions {
+  puts $md [format "- %s: PGV %.3f m/s, Sa(T_iso, 5 %%) %.3f g at scale 1" $name [dict get $m pgv] [dict get $m sa]]
+}
+puts $md "\nPGV ladder (m/s): $pgvLadder. Lognormal fits by maximum likelihood (Baker 2015, binomial likelihood per run; Fisher scoring). Median (dispersion beta) of each damage state:\n"
+puts $md "| damage state (limit) | IM | [join $cases { | }] |"
+puts $md "|---|---|[string repeat ---| [llength $cases]]"
+foreach ds $damageStates {
+  set limit [expr {$ds eq "service-lost" ? "opening, residual or bearing-300" : [format %.3g [dict get $limits $ds]]}]
+  foreach im {pgv sa} unit {m/s g} {
+    set cells {}
+    foreach c $cases { lappend cells [median [dict get $fits $c $ds $im] $unit] }
+    puts $md "| $ds ($limit) | [string toupper $im] | [join $cells { | }] |"
+  }
+}
+set failedText {}
+dict for {c n} $failedRuns { lappend failedText "$c $n" }
+puts $md "\nRuns whose analysis failed (left out of the fits): [join $failedText {, }].\n"
+if {"pound" in $cases && "countermeasure" in $cases} {
+  puts $md "## Does the countermeasure lower the probability of losing serviceability?\n"
+  puts $md "| PGV (m/s) | P(service lost), pound | P(service lost), countermeasure | countermeasure - pound |"
+  puts $md "|---|---|---|---|"
+  foreach x {0.5 1.0 1.5 2.0} {
+    set p1 [prob [dict get $fits pound service-lost pgv] $x]
+    set p2 [prob [dict get $fits countermeasure service-lost pgv] $x]
+    puts $md [format "| %.1f | %.2f | %.2f | %+.2f |" $x $p1 $p2 [expr {$p2 - $p1}]]
+  }
+  set largest {}
+  foreach c $cases {
+    set top 0.0
+    foreach row $rows { if {[dict get $row case] eq $c && [dict get $row status] eq "ok"} { set top [expr {max($top, [dict get $row opening])}] } }
+    lappend largest [format "%s %.3f m" $c $top]
+  }
+  puts $md "\nLargest peak opening of a joint over all runs: [join $largest {, }]."
+  # What the devices can do for the opening limit follows from their free travel.
+  if {$restrainerSlack >= [dict get $limits opening]} {
+    puts $md [format "\nThe restrainers' free travel (slack %.3g m) is not below the opening limit (%.3g m): the cables pull only once a joint has opened past its allowance, so they cannot keep the opening within it; the bumpers (clearance %.3g m) act on closing, not opening." \
+        $restrainerSlack [dict get $limits opening] $bumperClearance]
+  }
+}
+close $md
+
+# Plots: one panel per damage state, the fitted curves of the cases and, for PGV, the fraction of
+# runs exceeding at each level of the ladder.
+set pointsFile [file join $outDir fragility-points.dat]
+set fh [open $pointsFile w]
+foreach ds $damageStates {
+  foreach c $cases {
+    puts $fh "# $ds $c"
+    foreach level $pgvLadder {
+      set n 0; set k 0
+      foreach row $rows {
+        if {[dict get $row case] ne $c || [dict get $row status] ne "ok" || [dict get $row level] != $level} { continue }
+        incr n; incr k [exceeds $row $ds]
+      }
+      if {$n > 0} { puts $fh "$level [expr {double($k) / $n}]" }
+    }
+    puts $fh "\n"
+  }
+}
+close $fh
+set colors {nopound #1f77b4 pound #d62728 countermeasure #2ca02c}
+set labels [list "PGV (m/s)" [format "Sa(T_{iso} = %.2f s, 5 %%) (g)" $Tiso]]
+foreach im {pgv sa} label $labels xmax {2.2 3.0} {
+  set gp "set terminal pngcairo size 1500,800 font ',10'\nset output '[file join $outDir fragility-$im.png]'\n"
+  append gp "set multiplot layout 2,3 title 'Fragility of the bridge ($study study, lognormal maximum-likelihood fits)'\n"
+  append gp "set yrange \[0:1\]\nset xrange \[0.01:$xmax\]\nset xlabel '$label'\nset ylabel 'P(exceed)'\nset key bottom right\nset samples 400\n"
+  set block 0
+  foreach ds $damageStates {
+    set plots {}
+    foreach c $cases {
+      set f [dict get $fits $c $ds $im]
+      set color [dict get $colors $c]
+      switch -- [dict get $f status] {
+        fit { lappend plots [format "norm(log(x/%.6g)/%.6g) lw 2 lc rgb '%s' title '%s'" [dict get $f theta] [dict get $f beta] $color $c] }
+        separated { lappend plots [format "(x >= %.6g ? 1 : 0) lw 2 lc rgb '%s' title '%s (step)'" [dict get $f theta] $color $c] }
+        none { lappend plots "0 lw 2 dt 2 lc rgb '$color' title '$c (not reached)'" }
+        all { lappend plots "1 lw 2 dt 2 lc rgb '$color' title '$c (always)'" }
+      }
+      if {$im eq "pgv"} { lappend plots "'$pointsFile' index [expr {$block}] with points pt 7 lc rgb '$color' notitle" }
+      incr block
+    }
+    append gp "set title '$ds'\nplot [join $plots {, }]\n"
+  }
+  append gp "unset multiplot\n"
+  if {[auto_execok gnuplot] ne ""} {
+    if {[catch {exec gnuplot << $gp} err]} { puts "gnuplot: $err" }
+  }
+}
+puts "fragility: [file join $outDir fragility.md]"
+
+# The smoke study checks itself (the test suite runs it): every run completed, every fit written,
+# and a rerun runs nothing.
+if {$study eq "smoke"} {
+  source [file join $here .. lib check.tcl]
+  checkTrue "every run of the smoke study completed ($summary)" \
+      [expr {[dict get $summary ok] == [llength $jobs] && [llength $jobs] == 8}]
+  set fh [open [file join $outDir fragility.csv]]; set n [llength [split [string trim [read $fh]] \n]]; close $fh
+  checkTrue "a fit per case, damage state and intensity measure ($n lines)" \
+      [expr {$n == 1 + [llength $cases] * [llength $damageStates] * 2}]
+  set again [ensemble run $jobs bridgeRun -out [file join $outDir runs]]
+  checkTrue "a rerun skips every run ($again)" [expr {[dict get $again ran] == 0 && [dict get $again skipped] == [llength $jobs]}]
+  finish
+}
