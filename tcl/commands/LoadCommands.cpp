@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// Load and time commands: timeSeries, pattern, load, sp, groundMotion, imposedMotion, loadConst,
+// Load and time commands: timeSeries, pattern, load, eleLoad, sp, groundMotion, imposedMotion, loadConst,
 // setTime, getTime, remove, rayleigh, modalDamping.
 #include <string>
 
@@ -110,6 +110,71 @@ void loadCmd(Runtime& rt, ArgReader& a) {
   a.finish();
   if (constant) a.fail("-const loads are not supported; put them in a pattern with a Constant series");
   p.loads.push_back(std::move(load));
+}
+
+// eleLoad -ele t1 t2 .. | -range first last -type -beamUniform|-beamPoint values (OpenSees'
+// TclCommand_addElementalLoad): member loads in the element's local axes, added to the current
+// Plain pattern. 2D: -beamUniform Wy ?Wx? ?aOverL ?bOverL??, -beamPoint Py xL ?Px?;
+// 3D: -beamUniform Wy Wz ?Wx? ?aOverL ?bOverL??, -beamPoint Py Pz xL ?Px?.
+void eleLoadCmd(Runtime& rt, ArgReader& a) {
+  rt.requireModel("eleLoad");
+  const int ndm = rt.builder.ndm;
+  a.setUsage(ndm == 3 ? "eleLoad -ele tags.. | -range first last -type -beamUniform Wy Wz ?Wx? "
+                        "?aOverL bOverL? | -beamPoint Py Pz xL ?Px?"
+                      : "eleLoad -ele tags.. | -range first last -type -beamUniform Wy ?Wx? "
+                        "?aOverL bOverL? | -beamPoint Py xL ?Px?");
+  std::vector<int> tags;
+  while (auto list = a.optionIntegerList("-ele")) tags.insert(tags.end(), list->begin(), list->end());
+  while (auto range = a.optionTagRange("-range"))
+    for (int t = range->first; t <= range->second; ++t) tags.push_back(t);
+  if (tags.empty()) a.fail("needs the loaded elements: -ele tags.. or -range first last");
+  const auto typeWord = a.optionalWordOption("-type");
+  if (!typeWord) a.fail("needs -type -beamUniform or -type -beamPoint");
+  std::string type = *typeWord;
+  if (!type.empty() && type[0] == '-') type.erase(0, 1);
+  if (ndm != 2 && ndm != 3) a.fail("member loads need a 2D or 3D model");
+  const std::vector<double> v = a.reals("load values");
+  domain::PlainPattern& p = currentPlain(rt, a);
+  a.finish();
+
+  elements::BeamLoad load;
+  const std::size_t n = v.size();
+  auto at = [&v](std::size_t i, double fallback) { return i < v.size() ? v[i] : fallback; };
+  if (type == "beamUniform") {
+    load.type = elements::BeamLoad::Type::Uniform;
+    const std::size_t transverse = ndm == 3 ? 2 : 1;  // Wy (Wz)
+    if (n < transverse)
+      a.fail(ndm == 3 ? "-beamUniform needs Wy Wz" : "-beamUniform needs Wy");
+    if (n > transverse + 3)
+      a.fail("-beamUniform takes at most " + std::to_string(transverse + 3) +
+             " values; loads varying along the member (values at bOverL) are not supported");
+    load.w = Eigen::Vector3d(at(transverse, 0.0), v[0], ndm == 3 ? v[1] : 0.0);
+    load.a = at(transverse + 1, 0.0);
+    load.b = at(transverse + 2, 1.0);
+    if (!(load.a >= 0.0 && load.a < load.b && load.b <= 1.0))
+      a.fail("-beamUniform needs 0 <= aOverL < bOverL <= 1, got " + std::to_string(load.a) + " and " +
+             std::to_string(load.b));
+  } else if (type == "beamPoint") {
+    load.type = elements::BeamLoad::Type::Point;
+    const std::size_t transverse = ndm == 3 ? 2 : 1;  // Py (Pz)
+    if (n < transverse + 1 || n > transverse + 2)
+      a.fail(ndm == 3 ? "-beamPoint needs Py Pz xL ?Px?" : "-beamPoint needs Py xL ?Px?");
+    load.w = Eigen::Vector3d(at(transverse + 1, 0.0), v[0], ndm == 3 ? v[1] : 0.0);
+    load.a = v[transverse];
+    if (!(load.a >= 0.0 && load.a <= 1.0))
+      a.fail("-beamPoint needs 0 <= xL <= 1, got " + std::to_string(load.a));
+  } else {
+    a.fail("-type expects -beamUniform or -beamPoint, got \"" + *typeWord + "\"");
+  }
+  const int dofPerNode = ndm == 3 ? 6 : 3;
+  for (int tag : tags) {
+    const elements::Element* e = rt.domain.findElement(tag);
+    if (e == nullptr) a.fail("element " + std::to_string(tag) + " does not exist");
+    if (!e->acceptsBeamLoads() || e->dofPerNode() != dofPerNode)
+      a.fail("element " + std::to_string(tag) + " (" + std::string(e->typeName()) +
+             ") takes no member loads");
+  }
+  for (int tag : tags) p.elementLoads.push_back({tag, load});
 }
 
 void spCmd(Runtime& rt, ArgReader& a) {
@@ -269,6 +334,7 @@ constexpr CommandEntry kCommands[] = {
     {"pattern", "pattern Plain|UniformExcitation|MultipleSupport tag args...", patternCmd},
     {"load", "load node v1 .. vndf ?-pattern tag?", loadCmd},
     {"sp", "sp node dof value ?-const? ?-pattern tag?", spCmd},
+    {"eleLoad", "eleLoad -ele tags.. | -range first last -type -beamUniform|-beamPoint values..", eleLoadCmd},
     {"groundMotion", "groundMotion tag Plain ?-accel ts? ?-vel ts? ?-disp ts? ?-fact f?", groundMotionCmd},
     {"imposedMotion", "imposedMotion node dof gmTag", imposedMotionCmd},
     {"imposedSupportMotion", "imposedSupportMotion node dof gmTag", imposedMotionCmd},
