@@ -72,7 +72,8 @@ void patternCmd(Runtime& rt, ArgReader& a) {
         n.committedVel(dir - 1) = vel0;
       }
     }
-  } else if (type == "MultipleSupport") {
+  } else if (type == "MultipleSupport" || type == "MultiSupport" ||
+             type == "MultipleSupportExcitation") {
     a.setUsage("pattern MultipleSupport tag { groundMotion ..; imposedMotion .. }");
     Tcl_Obj* body = a.object("body");
     a.finish();
@@ -80,7 +81,8 @@ void patternCmd(Runtime& rt, ArgReader& a) {
     rt.currentPattern = tag;
     evalBody(rt, a, tag, body);
   } else {
-    a.fail(1, "type", "expected Plain, UniformExcitation or MultipleSupport, got \"" + type + "\"");
+    a.fail(1, "type", "expected Plain, UniformExcitation or MultipleSupport (MultiSupport), got \"" +
+                          type + "\"");
   }
 }
 
@@ -219,11 +221,13 @@ void imposedMotionCmd(Runtime& rt, ArgReader& a) {
   const domain::Node& n = rt.domain.node(node);
   if (dof < 1 || dof > n.ndf()) a.fail(2, "dof", "must be 1.." + std::to_string(n.ndf()));
   if (p.groundMotions.count(gm) == 0) a.fail(3, "gmTag", "groundMotion " + std::to_string(gm) + " does not exist");
-  for (const auto& fix : rt.domain.fixes())
-    if (fix.node == node && fix.dof == dof - 1)
-      a.fail("node " + std::to_string(node) + " dof " + std::to_string(dof) +
-             " is fixed; imposedMotion needs a free support dof (remove the fix)");
-  p.imposed.push_back({node, dof - 1, gm});
+  // A fixed support dof follows the motion while the pattern exists, as under OpenSees'
+  // Transformation handler (its Plain handler ignores the motion, its Penalty handler averages the
+  // two constraints); removing the pattern fixes the dof again.
+  bool fixed = false;
+  for (const auto& fix : rt.domain.fixes()) fixed = fixed || (fix.node == node && fix.dof == dof - 1);
+  if (fixed) rt.domain.removeFix(node, dof - 1);
+  p.imposed.push_back({node, dof - 1, gm, fixed});
   rt.domain.touch();
 }
 
@@ -331,7 +335,7 @@ void modalDampingCmd(Runtime& rt, ArgReader& a) {
 
 constexpr CommandEntry kCommands[] = {
     {"timeSeries", "timeSeries Constant|Linear|Trig|Rectangular|Path tag args...", timeSeriesCmd},
-    {"pattern", "pattern Plain|UniformExcitation|MultipleSupport tag args...", patternCmd},
+    {"pattern", "pattern Plain|UniformExcitation|MultipleSupport|MultiSupport tag args...", patternCmd},
     {"load", "load node v1 .. vndf ?-pattern tag?", loadCmd},
     {"sp", "sp node dof value ?-const? ?-pattern tag?", spCmd},
     {"eleLoad", "eleLoad -ele tags.. | -range first last -type -beamUniform|-beamPoint values..", eleLoadCmd},

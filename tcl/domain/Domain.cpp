@@ -198,7 +198,18 @@ LoadPattern* Domain::findPattern(int tag) {
 }
 
 void Domain::removePattern(int tag) {
-  if (patterns_.erase(tag) == 0) throw InputError("pattern", std::to_string(tag) + " does not exist");
+  auto it = patterns_.find(tag);
+  if (it == patterns_.end()) throw InputError("pattern", std::to_string(tag) + " does not exist");
+  if (it->second->kind() == LoadPattern::Kind::MultipleSupport) {
+    // Imposed motions that took a fix's place give it back.
+    for (const auto& m : static_cast<const MultipleSupportPattern&>(*it->second).imposed) {
+      const bool fixed = std::any_of(fixes_.begin(), fixes_.end(), [&m](const SPConstraint& sp) {
+        return sp.node == m.node && sp.dof == m.dof;
+      });
+      if (m.replacedFix && !fixed && nodes_.count(m.node) != 0) fixes_.push_back(SPConstraint{m.node, m.dof});
+    }
+  }
+  patterns_.erase(it);
   touch();
 }
 

@@ -116,6 +116,10 @@ class MultipleSupportPattern : public LoadPattern {
     int node = 0;
     int dof = 0;  ///< 0-based
     int groundMotion = 0;
+    /// The dof was fixed: the motion takes the fix's place while the pattern exists (OpenSees'
+    /// Transformation handler lets the imposed motion win), and removing the pattern fixes the
+    /// dof again.
+    bool replacedFix = false;
   };
   explicit MultipleSupportPattern(int tag) : LoadPattern(tag, Kind::MultipleSupport, nullptr, 1.0) {}
   std::map<int, std::unique_ptr<GroundMotion>> groundMotions;
