@@ -232,6 +232,9 @@ TEST(BeamMemberLoadsTest, CommittedStiffnessIsTheTangentAtTheLastCommit) {
   EXPECT_EQ((e.committedStiff() - e.initialStiff()).norm(), 0.0);  // not committed yet
   e.commitState();
   EXPECT_EQ((e.committedStiff() - yielded).norm(), 0.0);
+  // Independently: the central difference of the resisting force about the committed state.
+  const Eigen::MatrixXd kfd = testing::numericalStiffness(e, s, 1e-7);
+  EXPECT_LT(testing::relativeDifference(e.committedStiff(), kfd), kFdTol);
   s.u(4) = 0.0;
   ASSERT_TRUE(ok(e.update(s.kinematics())));
   e.revertToLastCommit();
