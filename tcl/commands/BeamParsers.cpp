@@ -276,6 +276,25 @@ void sectionCommand(Runtime& rt, ArgReader& args) {
   rt.requireModel("section");
   const int ndm = rt.builder.ndm;
   const std::string type = args.word("type");
+  if (type == "Uniaxial") {
+    // section Uniaxial tag matTag code: one resultant carried by one material (OpenSees'
+    // SectionAggregator with a single material, as its own Uniaxial section).
+    args.setContext("section Uniaxial");
+    args.setUsage("section Uniaxial tag matTag code (code P, Mz, Vy, My, Vz or T)");
+    const int tag = readNewTag(args, rt.builder.sections, "section");
+    const int mat = args.integer("matTag");
+    const materials::section::SectionCode code = sectionCode(args);
+    args.finish();
+    if (ndm == 2 && (code == materials::section::SectionCode::My ||
+                     code == materials::section::SectionCode::Vz ||
+                     code == materials::section::SectionCode::T))
+      args.fail(args.lastPosition(), "code", "My, Vz and T are not available in a 2D model");
+    rt.builder.sections[tag] = std::make_unique<materials::section::SectionAggregator>(
+        tag, std::vector<materials::section::SectionAggregator::Part>{{&rt.builder.uniaxialMaterial(mat), code}},
+        nullptr);
+    Tcl_SetObjResult(rt.interp, Tcl_NewIntObj(tag));
+    return;
+  }
   if (type == "Elastic" || type == "Aggregator") {
     args.setContext("section " + type);
     args.setUsage(type == "Aggregator" ? kAggregatorUsage
@@ -290,7 +309,7 @@ void sectionCommand(Runtime& rt, ArgReader& args) {
   }
   if (type != "Fiber" && type != "fiberSec")
     args.fail(args.lastPosition(), "type",
-              "unknown section \"" + type + "\" (available: Fiber, Elastic, Aggregator)");
+              "unknown section \"" + type + "\" (available: Fiber, Elastic, Aggregator, Uniaxial)");
   args.setContext("section " + type);
   args.setUsage("section Fiber tag ?-GJ GJ? { fiber ...; patch ...; layer ... }");
   const int tag = readNewTag(args, rt.builder.sections, "section");
@@ -637,7 +656,7 @@ constexpr std::array kSectionCommands{
                  geomTransfCommand},
     CommandEntry{"section",
                  "section Fiber tag ?-GJ GJ? {body} | Elastic tag E A Iz ... | Aggregator tag "
-                 "matTag code ... ?-section secTag?",
+                 "matTag code ... ?-section secTag? | Uniaxial tag matTag code",
                  sectionCommand},
     CommandEntry{"fiber", "fiber y z A matTag", fiberCommand},
     CommandEntry{"patch",
