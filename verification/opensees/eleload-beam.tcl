@@ -1,5 +1,6 @@
 # Member loads (eleLoad -beamUniform, -beamPoint) on elastic, force- and displacement-based
-# beam-columns in 2D and 3D, static, in a Plain pattern with a Linear series. Writes
+# beam-columns in 2D and 3D, static, in a Plain pattern with a Linear series; Linear, PDelta and
+# Corotational transformations. Writes
 # eleload-beam.csv: case, quantity, value (SI units: m, kN).
 # Run: OpenSees eleload-beam.tcl (or dabs eleload-beam.tcl)
 set out [open eleload-beam.csv w]
@@ -128,5 +129,35 @@ foreach type {elastic force disp} {
   foreach dof {1 2 3 4 5 6} { record cant3d-$type u$dof [nodeDisp 2 $dof] }
   set f [eleResponse 1 localForce]
   for {set k 0} {$k < 12} {incr k} { record cant3d-$type localForce$k [lindex $f $k] }
+}
+# Geometrically nonlinear transformations: a column of two elements under a lateral member load
+# and a compressive tip load (below its buckling load), loaded in ten steps.
+foreach transf {PDelta Corotational} {
+  foreach type {elastic force} {
+    model2d $type
+    geomTransf $transf 2
+    node 1 0 0; node 2 0 3.0; node 3 0 6.0
+    fix 1 1 1 1
+    if {$type eq "elastic"} {
+      element elasticBeamColumn 1 1 2 $A $E $Iz 2
+      element elasticBeamColumn 2 2 3 $A $E $Iz 2
+    } else {
+      element forceBeamColumn 1 1 2 2 1
+      element forceBeamColumn 2 2 3 2 1
+    }
+    timeSeries Linear 1
+    pattern Plain 1 1 {
+      eleLoad -ele 1 2 -type -beamUniform -3.0
+      load 3 0 -60.0 0
+    }
+    system BandGeneral; numberer Plain; constraints Plain
+    test NormDispIncr 1.0e-12 30; algorithm Newton
+    integrator LoadControl 0.1; analysis Static
+    analyze 10
+    record column-$transf-$type ux-top [nodeDisp 3 1]
+    record column-$transf-$type uy-top [nodeDisp 3 2]
+    set f [eleResponse 1 localForce]
+    for {set k 0} {$k < 6} {incr k} { record column-$transf-$type localForce$k [lindex $f $k] }
+  }
 }
 close $out
