@@ -44,19 +44,27 @@ typename BeamMemberLoads<Nb>::Statics BeamMemberLoads<Nb>::statics(const BeamLoa
     s.my = rzI * x - (right ? w.z() * (x - a) : 0.0);
     return s;
   }
+  // Loaded part [A, B] with intensity w0 + k (s - A), k = (w1 - w0) / (B - A); with C = c - A
+  // and X = x - A for c = clamp(x, A, B): int_A^c w ds = w0 C + k C^2/2 and
+  // int_A^c w (x - s) ds = w0 (X C - C^2/2) + k (X C^2/2 - C^3/3).
   const double b = load.b * length;
   const double span = b - a;
-  const double centre = 0.5 * (a + b);
-  const double ryI = w.y() * span * (1.0 - centre / length);
-  const double rzI = w.z() * span * (1.0 - centre / length);
+  const Eigen::Vector3d w1 = load.wEnd.value_or(w);
+  const Eigen::Vector3d k = (w1 - w) / span;
+  const Eigen::Vector3d total = 0.5 * (w + w1) * span;
+  // First moment about I: int w s ds = w0 (B^2 - A^2)/2 + k ((B^3 - A^3)/3 - A (B^2 - A^2)/2).
+  const Eigen::Vector3d moment = w * 0.5 * (b * b - a * a) +
+                                 k * ((b * b * b - a * a * a) / 3.0 - a * 0.5 * (b * b - a * a));
+  const Eigen::Vector3d rI = total - moment / length;  // reactions at I (lever rule)
   const double c = std::clamp(x, a, b);
-  const double loaded = c - a;                                          // int_0^x ds over [A, B]
-  const double lever = 0.5 * ((x - a) * (x - a) - (x - c) * (x - c));  // int (x - s) ds
-  s.n = w.x() * (b - c);
-  s.vy = -ryI + w.y() * loaded;
-  s.mz = -ryI * x + w.y() * lever;
-  s.vz = rzI - w.z() * loaded;
-  s.my = rzI * x - w.z() * lever;
+  const double cc = c - a, xx = x - a;
+  const Eigen::Vector3d loaded = w * cc + k * (0.5 * cc * cc);
+  const Eigen::Vector3d lever = w * (xx * cc - 0.5 * cc * cc) + k * (0.5 * xx * cc * cc - cc * cc * cc / 3.0);
+  s.n = total.x() - loaded.x();
+  s.vy = -rI.y() + loaded.y();
+  s.mz = -rI.y() * x + lever.y();
+  s.vz = rI.z() - loaded.z();
+  s.my = rI.z() * x - lever.z();
   return s;
 }
 
@@ -69,48 +77,58 @@ void BeamMemberLoads<Nb>::add(const BeamLoad& given, double factor, double lengt
   } else if (!(given.a >= 0.0 && given.a < given.b && given.b <= 1.0)) {
     throw InputError("aOverL bOverL", "must satisfy 0 <= aOverL < bOverL <= 1");
   }
-  if (Nb == 3 && given.w.z() != 0.0)
+  if (Nb == 3 && (given.w.z() != 0.0 || (given.wEnd && given.wEnd->z() != 0.0)))
     throw InputError("", "a 2D member load has no component along local z");
   BeamLoad load = given;
   load.w *= factor;
+  if (load.wEnd) *load.wEnd *= factor;
   length_ = length;
   loads_.push_back({load});
 
-  // Reactions: resultant shares by the lever rule.
+  // Reactions: a point load shares by the lever rule; for a distributed load the section forces
+  // at the ends are the reactions (all the axial load goes to I).
   const double a = load.a * length;
-  double total = 1.0, centre = a;  // resultant per unit intensity and its position
-  if (load.type == BeamLoad::Type::Uniform) {
-    total = (load.b - load.a) * length;
-    centre = 0.5 * (load.a + load.b) * length;
-  }
-  const double shareJ = centre / length;
   Reactions p = Reactions::Zero();
-  p(0) = -load.w.x() * total;
-  p(1) = -load.w.y() * total * (1.0 - shareJ);
-  p(2) = -load.w.y() * total * shareJ;
-  if constexpr (Nb == 6) {
-    p(3) = -load.w.z() * total * (1.0 - shareJ);
-    p(4) = -load.w.z() * total * shareJ;
+  if (load.type == BeamLoad::Type::Point) {
+    p(0) = -load.w.x();
+    p(1) = -load.w.y() * (1.0 - load.a);
+    p(2) = -load.w.y() * load.a;
+    if constexpr (Nb == 6) {
+      p(3) = -load.w.z() * (1.0 - load.a);
+      p(4) = -load.w.z() * load.a;
+    }
+  } else {
+    const Statics atI = statics(load, 0.0);
+    const Statics atJ = statics(load, length);
+    p(0) = -atI.n;
+    p(1) = atI.vy;   // V_y(0) = -R_yI
+    p(2) = -atJ.vy;  // V_y(L) = R_yJ
+    if constexpr (Nb == 6) {
+      p(3) = -atI.vz;  // V_z(0) = R_zI
+      p(4) = atJ.vz;   // V_z(L) = -R_zJ
+    }
   }
   p0_ += p;
 
   // Fixed-end forces: v0 = int b^T sp dx / (EI or EA) integrated exactly (Gauss-Legendre with
-  // two points per piece is exact for the cubic integrands; the pieces end where the load starts
-  // and stops), then q0 = -kb v0 for the prismatic member.
+  // three points per piece is exact for the quartic integrands of a linearly varying load; the
+  // pieces end where the load starts and stops), then q0 = -kb v0 for the prismatic member.
   std::array<double, 4> breaks{0.0, a, load.type == BeamLoad::Type::Uniform ? load.b * length : a,
                                length};
   std::sort(breaks.begin(), breaks.end());
-  const double g = 0.5 / std::sqrt(3.0);
+  const double g = 0.5 * std::sqrt(0.6);
+  constexpr std::array<double, 3> kWeights{5.0 / 18.0, 8.0 / 18.0, 5.0 / 18.0};
   double intN = 0.0;
   Eigen::Vector2d rotZ = Eigen::Vector2d::Zero(), rotY = Eigen::Vector2d::Zero();
   for (std::size_t k = 0; k + 1 < breaks.size(); ++k) {
     const double x0 = breaks[k], h = breaks[k + 1] - breaks[k];
     if (h <= 0.0) continue;
-    for (double t : {0.5 - g, 0.5 + g}) {
-      const double x = x0 + t * h;
+    const std::array<double, 3> points{0.5 - g, 0.5, 0.5 + g};
+    for (std::size_t q = 0; q < 3; ++q) {
+      const double x = x0 + points[q] * h;
       const double xi = x / length;
       const Statics s = statics(load, x);
-      const double wgt = 0.5 * h;
+      const double wgt = kWeights[q] * h;
       intN += wgt * s.n;
       rotZ += wgt * s.mz * Eigen::Vector2d(xi - 1.0, xi);
       rotY += wgt * s.my * Eigen::Vector2d(xi - 1.0, xi);

@@ -113,6 +113,24 @@ TEST(BeamMemberLoadsTest, PartialLoadEqualsIntegralOfPointLoads) {
   EXPECT_NEAR(loads.reactions()(4), -wz * total * centre / kL, kTol * kL);
 }
 
+TEST(BeamMemberLoadsTest, TriangularLoadGivesClassicalFixedEndForces) {
+  // Load rising linearly from 0 at I to w at J: fixed-end moments w L^2/30 at I and w L^2/20 at
+  // J, simply supported reactions w L/6 and w L/3 (Przemieniecki 1968, Table 5.1).
+  BeamMemberLoads<3> loads;
+  const double w = 6.0;
+  BeamLoad l = uniform(0.0, 0.0, 0.0);
+  l.wEnd = Eigen::Vector3d(0.0, w, 0.0);
+  loads.add(l, 1.0, kL);
+  EXPECT_NEAR(loads.fixedEndForces()(1), -w * kL * kL / 30, kTol * w * kL * kL);
+  EXPECT_NEAR(loads.fixedEndForces()(2), w * kL * kL / 20, kTol * w * kL * kL);
+  EXPECT_NEAR(loads.reactions()(1), -w * kL / 6, kTol * w * kL);
+  EXPECT_NEAR(loads.reactions()(2), -w * kL / 3, kTol * w * kL);
+  // Simply supported moment at midspan: R_I L/2 - (w/2)(L/2)^2/2 (L/2)/3 = w L^2/16, negative
+  // for an upward load.
+  const std::array<SectionCode, 1> codes{SectionCode::Mz};
+  EXPECT_NEAR(loads.sectionForces(codes, 0.5)(0), -w * kL * kL / 16, kTol * w * kL * kL);
+}
+
 TEST(BeamMemberLoadsTest, RejectsLoadsOutsideTheMember) {
   BeamMemberLoads<3> loads;
   EXPECT_THROW(loads.add(point(0, 1, 0, 1.2), 1.0, kL), InputError);

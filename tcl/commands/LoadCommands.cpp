@@ -116,15 +116,16 @@ void loadCmd(Runtime& rt, ArgReader& a) {
 
 // eleLoad -ele t1 t2 .. | -range first last -type -beamUniform|-beamPoint values (OpenSees'
 // TclCommand_addElementalLoad): member loads in the element's local axes, added to the current
-// Plain pattern. 2D: -beamUniform Wy ?Wx? ?aOverL ?bOverL??, -beamPoint Py xL ?Px?;
-// 3D: -beamUniform Wy Wz ?Wx? ?aOverL ?bOverL??, -beamPoint Py Pz xL ?Px?.
+// Plain pattern. 2D: -beamUniform Wy ?Wx? ?aOverL ?bOverL? ?WyB ?WxB????, -beamPoint Py xL ?Px?;
+// 3D: -beamUniform Wy Wz ?Wx? ?aOverL ?bOverL? ?WyB ?WzB ?WxB?????, -beamPoint Py Pz xL ?Px?
+// (WyB.. the intensities at bOverL of a load varying linearly along the member).
 void eleLoadCmd(Runtime& rt, ArgReader& a) {
   rt.requireModel("eleLoad");
   const int ndm = rt.builder.ndm;
   a.setUsage(ndm == 3 ? "eleLoad -ele tags.. | -range first last -type -beamUniform Wy Wz ?Wx? "
-                        "?aOverL bOverL? | -beamPoint Py Pz xL ?Px?"
+                        "?aOverL bOverL? ?WyB WzB WxB? | -beamPoint Py Pz xL ?Px?"
                       : "eleLoad -ele tags.. | -range first last -type -beamUniform Wy ?Wx? "
-                        "?aOverL bOverL? | -beamPoint Py xL ?Px?");
+                        "?aOverL bOverL? ?WyB WxB? | -beamPoint Py xL ?Px?");
   std::vector<int> tags;
   while (auto list = a.optionIntegerList("-ele")) tags.insert(tags.end(), list->begin(), list->end());
   while (auto range = a.optionTagRange("-range"))
@@ -147,12 +148,19 @@ void eleLoadCmd(Runtime& rt, ArgReader& a) {
     const std::size_t transverse = ndm == 3 ? 2 : 1;  // Wy (Wz)
     if (n < transverse)
       a.fail(ndm == 3 ? "-beamUniform needs Wy Wz" : "-beamUniform needs Wy");
-    if (n > transverse + 3)
-      a.fail("-beamUniform takes at most " + std::to_string(transverse + 3) +
-             " values; loads varying along the member (values at bOverL) are not supported");
+    // After aOverL bOverL OpenSees reads the intensities at bOverL, each defaulting to its value
+    // at aOverL: 2D Wy Wx, 3D Wy Wz Wx.
+    const std::size_t atEnd = transverse + 3;
+    if (n > atEnd + transverse + 1)
+      a.fail("-beamUniform takes at most " + std::to_string(atEnd + transverse + 1) + " values");
     load.w = Eigen::Vector3d(at(transverse, 0.0), v[0], ndm == 3 ? v[1] : 0.0);
     load.a = at(transverse + 1, 0.0);
     load.b = at(transverse + 2, 1.0);
+    if (n > atEnd) {
+      const Eigen::Vector3d end(at(atEnd + transverse, load.w.x()), at(atEnd, load.w.y()),
+                                ndm == 3 ? at(atEnd + 1, load.w.z()) : 0.0);
+      if (end != load.w) load.wEnd = end;
+    }
     if (!(load.a >= 0.0 && load.a < load.b && load.b <= 1.0))
       a.fail("-beamUniform needs 0 <= aOverL < bOverL <= 1, got " + std::to_string(load.a) + " and " +
              std::to_string(load.b));

@@ -37,6 +37,23 @@ foreach type {elastic} {
   check "$type: partial uniform load, tip rotation" [value cant-partial-$type,rz-tip] \
       [expr {-8.0*($b**3 - $a**3)/(6*$EI)}] 1e-9
 }
+# Cantilever, load varying linearly from (wy, wx) = (-4, 1) at 0.2 L to (-10, 3) at 0.9 L:
+# integrals of the point-load influence lines by Simpson's rule (independent of the element).
+proc simpson {f a b n} {
+  set h [expr {($b - $a)/$n}]
+  set sum [expr {[apply $f $a] + [apply $f $b]}]
+  for {set k 1} {$k < $n} {incr k} { set sum [expr {$sum + ($k % 2 ? 4 : 2)*[apply $f [expr {$a + $k*$h}]]}] }
+  return [expr {$sum*$h/3}]
+}
+set a [expr {0.2*$L}]; set b [expr {0.9*$L}]
+set wy [list s "expr {-4.0 + (-10.0 + 4.0)*(\$s - $a)/($b - $a)}"]
+set wx [list s "expr {1.0 + (3.0 - 1.0)*(\$s - $a)/($b - $a)}"]
+set deflection [simpson [list s "expr {\[apply {$wy} \$s\]*\$s**2*(3*$L - \$s)/(6*$EI)}"] $a $b 2000]
+set rotation [simpson [list s "expr {\[apply {$wy} \$s\]*\$s**2/(2*$EI)}"] $a $b 2000]
+set axial [simpson [list s "expr {\[apply {$wx} \$s\]*\$s/$EA}"] $a $b 2000]
+check "elastic: linearly varying load, tip deflection" [value cant-trapezoid-elastic,uy-tip] $deflection 1e-9
+check "elastic: linearly varying load, tip rotation" [value cant-trapezoid-elastic,rz-tip] $rotation 1e-9
+check "elastic: linearly varying axial load, tip displacement" [value cant-trapezoid-elastic,ux-tip] $axial 1e-9
 set full [expr {-10.0*$L**4/(8*$EI)}]
 check "Linear series: half the load at t = 0.5" [value series-elastic,uy-tip-half] [expr {$full/2}] 1e-9
 check "Linear series: full load wL^4/8EI at t = 1" [value series-elastic,uy-tip-full] $full 1e-9

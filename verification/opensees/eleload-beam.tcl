@@ -83,6 +83,20 @@ foreach type {elastic force} {
   record cant-partial-$type rz-tip [nodeDisp 2 3]
 }
 
+# Cantilever with a load varying linearly over [0.2 L, 0.9 L] (intensities at bOverL given).
+foreach type {elastic force} {
+  model2d $type
+  node 1 0 0; node 2 $L 0
+  fix 1 1 1 1
+  element2d $type 1 1 2
+  timeSeries Linear 1
+  pattern Plain 1 1 { eleLoad -ele 1 -type -beamUniform -4.0 1.0 0.2 0.9 -10.0 3.0 }
+  solve
+  record cant-trapezoid-$type uy-tip [nodeDisp 2 2]
+  record cant-trapezoid-$type rz-tip [nodeDisp 2 3]
+  record cant-trapezoid-$type ux-tip [nodeDisp 2 1]
+}
+
 # The loads scale with the series and leave with their pattern: load at factor 1, hold it
 # (loadConst), remove the pattern and analyse again.
 model2d elastic
@@ -129,6 +143,25 @@ foreach type {elastic force disp} {
   foreach dof {1 2 3 4 5 6} { record cant3d-$type u$dof [nodeDisp 2 $dof] }
   set f [eleResponse 1 localForce]
   for {set k 0} {$k < 12} {incr k} { record cant3d-$type localForce$k [lindex $f $k] }
+}
+# 3D cantilever with a load varying linearly over [0.1 L, 0.8 L] in all three directions.
+foreach type {elastic force} {
+  wipe
+  model basic -ndm 3 -ndf 6
+  geomTransf Linear 1 0 0 1
+  section Elastic 1 $E $A $Iz $Iy $G $J
+  beamIntegration Lobatto 1 1 5
+  node 1 0 0 0; node 2 $L 0 0
+  fix 1 1 1 1 1 1 1
+  if {$type eq "elastic"} {
+    element elasticBeamColumn 1 1 2 $A $E $G $J $Iy $Iz 1
+  } else {
+    element forceBeamColumn 1 1 2 1 1
+  }
+  timeSeries Linear 1
+  pattern Plain 1 1 { eleLoad -ele 1 -type -beamUniform -2.0 1.0 0.5 0.1 0.8 -6.0 4.0 1.5 }
+  solve
+  foreach dof {1 2 3 5 6} { record cant3d-trapezoid-$type u$dof [nodeDisp 2 $dof] }
 }
 # Geometrically nonlinear transformations: a column of two elements under a lateral member load
 # and a compressive tip load (below its buckling load), loaded in ten steps.

@@ -36,7 +36,7 @@ TEST_F(ElementLoadCommandsTest, EleLoadChecksItsValues) {
   EXPECT_NE(error("eleLoad -ele 1 -type -beamPoint -1.0").find("Py xL"), std::string::npos);
   EXPECT_NE(error("eleLoad -ele 1 -type -beamUniform -1.0 0 0.6 0.4").find("aOverL < bOverL"),
             std::string::npos);
-  EXPECT_NE(error("eleLoad -ele 1 -type -beamUniform -1.0 0 0 1 -2.0").find("varying"),
+  EXPECT_NE(error("eleLoad -ele 1 -type -beamUniform -1.0 0 0 1 -2.0 0 7").find("at most 6 values"),
             std::string::npos);
   EXPECT_NE(error("eleLoad -ele 1 -type -beamUniform abc").find("expected a number"), std::string::npos);
   // Good loads on both elements, with -ele and -range.
