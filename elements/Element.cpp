@@ -26,6 +26,11 @@ Eigen::Ref<const Eigen::MatrixXd> Element::mass() const {
   return zeroMatrix(n).topLeftCorner(n, n);
 }
 
+void Element::addLoad(const BeamLoad& /*load*/, double /*factor*/) {
+  throw InputError("", std::string(typeName()) + " element " + std::to_string(tag()) +
+                           " takes no member loads");
+}
+
 std::optional<Eigen::VectorXd> Element::response(std::span<const std::string> args) const {
   if (args.size() == 1 && (args[0] == "force" || args[0] == "forces" || args[0] == "globalForce" ||
                            args[0] == "globalForces")) {

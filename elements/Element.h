@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "elements/BeamLoad.h"
 #include "materials/InputError.h"
 #include "materials/Status.h"
 
@@ -64,7 +65,9 @@ class Element {
   virtual Eigen::Ref<const Eigen::MatrixXd> tangentStiff() const = 0;
   /// Stiffness of the virgin element (global frame).
   virtual Eigen::Ref<const Eigen::MatrixXd> initialStiff() const = 0;
-  /// Stiffness at the last commit, for Rayleigh betaKcomm; defaults to the initial stiffness.
+  /// Tangent stiffness at the last commit, for Rayleigh betaKcomm (the initial stiffness before
+  /// the first commit). Elements whose tangent changes override it; the default, the initial
+  /// stiffness, is right for linear elements.
   virtual Eigen::Ref<const Eigen::MatrixXd> committedStiff() const { return initialStiff(); }
   /// d(resistingForce)/dv: the element's own dashpots (not Rayleigh). Zero by default.
   virtual Eigen::Ref<const Eigen::MatrixXd> dampingTangent() const;
@@ -83,6 +86,15 @@ class Element {
   /// Material updates (setTrialStrain calls of section materials) since construction: a work count
   /// for benchmarks, not part of the state.
   virtual long materialUpdates() const { return 0; }
+
+  /// True when the element takes member loads (addLoad).
+  virtual bool acceptsBeamLoads() const { return false; }
+  /// Removes every member load; the domain calls it before it applies the load patterns' member
+  /// loads at a new time (OpenSees' zeroLoad).
+  virtual void zeroLoad() {}
+  /// Adds `factor` times a member load, in effect from the next update. Throws InputError when the
+  /// element takes no member loads or the load does not fit it.
+  virtual void addLoad(const BeamLoad& load, double factor);
 
   virtual void commitState() = 0;
   virtual void revertToLastCommit() = 0;

@@ -34,6 +34,8 @@ class FixedSizeElement : public Element {
   Vector f_ = Vector::Zero();   ///< resisting force at the last update (global)
   Matrix k_ = Matrix::Zero();   ///< tangent stiffness at the last update (global)
   Matrix k0_ = Matrix::Zero();  ///< initial stiffness (global)
+  /// Tangent at the last commit (global), for elements that override committedStiff() with it.
+  Matrix kc_ = Matrix::Zero();
   Matrix c_ = Matrix::Zero();   ///< element's own viscous tangent (global)
   Matrix m_ = Matrix::Zero();   ///< mass matrix (global)
 };

@@ -15,6 +15,7 @@ void DispBeamColumn<Ndm>::initialize(const NodalCoordinates& x) {
   this->uTrial_.setZero();
   this->uCommitted_.setZero();
   (void)formState(false);
+  this->kc_ = this->k_;
 }
 
 template <int Ndm>
@@ -43,7 +44,8 @@ Status DispBeamColumn<Ndm>::formState(bool initial) {
     kb_ += wl * b.transpose() * ks * b;
   }
   if (!initial) {
-    this->f_ = this->transf_->globalForce(this->q_);
+    if (!this->loads_.empty()) this->q_ += this->loads_.fixedEndForces();
+    this->f_ = this->endForces(this->q_);
     this->k_ = this->transf_->globalStiffness(kb_, this->q_);
   }
   return status;
@@ -62,6 +64,7 @@ void DispBeamColumn<Ndm>::commitState() {
   this->transf_->commitState();
   for (auto& p : this->points_) p.section->commitState();
   this->uCommitted_ = this->uTrial_;
+  this->kc_ = this->k_;
 }
 
 template <int Ndm>
@@ -79,6 +82,7 @@ void DispBeamColumn<Ndm>::revertToStart() {
   this->uTrial_.setZero();
   this->uCommitted_.setZero();
   (void)formState(false);
+  this->kc_ = this->k_;
 }
 
 template class DispBeamColumn<2>;

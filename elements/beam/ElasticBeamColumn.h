@@ -8,13 +8,16 @@
 #include <string>
 
 #include "elements/FixedSizeElement.h"
+#include "elements/beam/BeamMemberLoads.h"
 
 namespace dabs::elements {
 
 /// What the 2D and 3D elastic beam-columns share: basic forces q = kb v through a coordinate
 /// transformation, the stiffness formed once for transformations with a constant compatibility
 /// matrix (Linear, PDelta: only the geometric part is added per update), the trial/commit state
-/// and the responses. The derived class sets kb_ and the mass in initialize().
+/// and the responses. The derived class sets kb_ and the mass in initialize(). Member loads add
+/// their fixed-end forces q0 to the basic forces and their reactions p0 to the end forces
+/// (q = kb v + q0; OpenSees/OpenSees:SRC/element/elasticBeamColumn/ElasticBeam2d.cpp addLoad).
 template <class Transf, int Ndf>
 class ElasticBeamColumn : public FixedSizeElement<2, Ndf> {
  public:
@@ -27,6 +30,13 @@ class ElasticBeamColumn : public FixedSizeElement<2, Ndf> {
 
   std::string_view typeName() const override { return "elasticBeamColumn"; }
   bool isLinear() const override { return transf_->isLinear(); }
+  Eigen::Ref<const Eigen::MatrixXd> committedStiff() const override { return this->kc_; }
+
+  bool acceptsBeamLoads() const override { return true; }
+  void zeroLoad() override { loads_.clear(); }
+  void addLoad(const BeamLoad& load, double factor) override {
+    loads_.add(load, factor, transf_->initialLength());
+  }
 
   [[nodiscard]] Status update(const Kinematics& trial) override {
     uTrial_ = trial.u;
@@ -36,6 +46,7 @@ class ElasticBeamColumn : public FixedSizeElement<2, Ndf> {
   void commitState() override {
     transf_->commitState();
     uCommitted_ = uTrial_;
+    this->kc_ = this->k_;
   }
   void revertToLastCommit() override {
     transf_->revertToLastCommit();
@@ -45,6 +56,7 @@ class ElasticBeamColumn : public FixedSizeElement<2, Ndf> {
   void revertToStart() override {
     transf_->revertToStart();
     resetState();
+    this->kc_ = this->k_;
   }
 
   std::optional<Eigen::VectorXd> response(std::span<const std::string> args) const override {
@@ -52,7 +64,8 @@ class ElasticBeamColumn : public FixedSizeElement<2, Ndf> {
     const std::string& name = args[0];
     if (name == "force" || name == "forces" || name == "globalForce" || name == "globalForces")
       return Eigen::VectorXd(this->f_);
-    if (name == "localForce" || name == "localForces") return Eigen::VectorXd(transf_->localForce(q_));
+    if (name == "localForce" || name == "localForces")
+      return Eigen::VectorXd(transf_->localForce(q_) + loads_.localEndForces());
     if (name == "basicForce" || name == "basicForces") return Eigen::VectorXd(q_);
     if (name == "deformations" || name == "basicDeformation" || name == "basicDeformations")
       return Eigen::VectorXd(transf_->basicDeformation());
@@ -69,6 +82,7 @@ class ElasticBeamColumn : public FixedSizeElement<2, Ndf> {
     this->k0_ = transf_->initialGlobalStiffness(kb_);
     constantCompat_ = transf_->hasConstantCompatibility();
     this->k_ = this->k0_;
+    this->kc_ = this->k0_;
   }
   /// Zero displacement, state formed from it.
   void resetState() {
@@ -84,7 +98,9 @@ class ElasticBeamColumn : public FixedSizeElement<2, Ndf> {
   void formState(const Vector& u) {
     transf_->update(u);
     q_ = kb_ * transf_->basicDeformation();
+    if (!loads_.empty()) q_ += loads_.fixedEndForces();
     this->f_ = transf_->globalForce(q_);
+    if (!loads_.empty()) this->f_ += globalReactions(*transf_, loads_);
     if (!constantCompat_) {
       this->k_ = transf_->globalStiffness(kb_, q_);
     } else if (!transf_->isLinear()) {
@@ -94,6 +110,7 @@ class ElasticBeamColumn : public FixedSizeElement<2, Ndf> {
   }
 
   typename Transf::Basic q_ = Transf::Basic::Zero();
+  BeamMemberLoads<Transf::Basic::RowsAtCompileTime> loads_;
   bool constantCompat_ = false;  ///< B constant: k_ = k0_ + geometric part
   Vector uTrial_ = Vector::Zero();
   Vector uCommitted_ = Vector::Zero();

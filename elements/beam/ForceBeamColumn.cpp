@@ -71,6 +71,7 @@ void ForceBeamColumn<Ndm>::initialize(const NodalCoordinates& x) {
   this->uCommitted_.setZero();
   this->transf_->update(this->uTrial_);
   finish();
+  this->kc_ = this->k_;
 }
 
 // One solve from state s (which holds the start point) to basic deformations `target`.
@@ -85,7 +86,8 @@ Status ForceBeamColumn<Ndm>::iterate(State& s, const Basic& target) const {
     for (int i = 0; i < n; ++i) {
       auto& sec = *this->points_[i].section;
       const auto& b = bmat_[i];
-      const SectionVector force = b * s.q;
+      SectionVector force = b * s.q;
+      if (!sp_.empty()) force += sp_[static_cast<std::size_t>(i)];
       s.e[i] += s.fs[i] * (force - s.sr[i]);
       const Status st = sec.setTrialDeformation(s.e[i]);
       if (!ok(st)) return st;
@@ -151,9 +153,16 @@ Status ForceBeamColumn<Ndm>::solve(const Basic& target) {
 }
 
 template <int Ndm>
+void ForceBeamColumn<Ndm>::loadsChanged() {
+  sp_.clear();
+  if (this->loads_.empty()) return;
+  for (const auto& p : this->points_) sp_.push_back(this->loads_.sectionForces(p.section->type(), p.xi));
+}
+
+template <int Ndm>
 void ForceBeamColumn<Ndm>::finish() {
   this->q_ = trial_.q;
-  this->f_ = this->transf_->globalForce(trial_.q);
+  this->f_ = this->endForces(trial_.q);
   this->k_ = this->transf_->globalStiffness(trial_.kb, trial_.q);
 }
 
@@ -174,6 +183,7 @@ void ForceBeamColumn<Ndm>::commitState() {
   committed_.assign(trial_, static_cast<int>(this->points_.size()));
   trialIsCommitted_ = true;
   this->uCommitted_ = this->uTrial_;
+  this->kc_ = this->k_;
 }
 
 template <int Ndm>
@@ -208,6 +218,7 @@ void ForceBeamColumn<Ndm>::revertToStart() {
   this->uCommitted_.setZero();
   this->transf_->update(this->uTrial_);
   finish();
+  this->kc_ = this->k_;
 }
 
 template <int Ndm>

@@ -15,7 +15,9 @@ namespace dabs::elements {
 /// basic deformations (Neuenhofer & Filippou 1997, J. Struct. Eng. 123(7), the "iterative"
 /// scheme), starting from the last trial state; if maxIter iterations do not converge, it starts
 /// again from the committed state, then splits the increment into 4 and 16 sub-increments; if
-/// those fail too, update() returns Status::NotConverged (never loops forever).
+/// those fail too, update() returns Status::NotConverged (never loops forever). Member loads add
+/// their simply supported section forces: s(x) = b(x) q + sp(x), and their reactions to the end
+/// forces (OpenSees' ForceBeamColumn2d::computeSectionForces and computeReactions).
 template <int Ndm>
 class ForceBeamColumn final : public SectionBeamColumn<Ndm> {
  public:
@@ -65,6 +67,7 @@ class ForceBeamColumn final : public SectionBeamColumn<Ndm> {
       }
     }
   };
+  void loadsChanged() override;
   Status iterate(State& s, const Basic& target) const;
   Status solve(const Basic& target);
   void finish();
@@ -73,6 +76,8 @@ class ForceBeamColumn final : public SectionBeamColumn<Ndm> {
   double tol_;
   std::vector<SectionBasicMatrix<kBasic>> bmat_;
   BasicMatrix fe_ = BasicMatrix::Zero();  ///< initial (elastic) flexibility
+  /// Section forces of the member loads in the basic system, per point (empty without loads).
+  std::vector<SectionVector> sp_;
   State trial_, committed_;
   bool trialIsCommitted_ = true;  ///< trial_ equals committed_ (no update since commit/revert)
 };

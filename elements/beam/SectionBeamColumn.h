@@ -8,6 +8,7 @@
 #include "materials/ResponseArgs.h"
 #include "elements/FixedSizeElement.h"
 #include "elements/beam/BeamColumnTraits.h"
+#include "elements/beam/BeamMemberLoads.h"
 #include "elements/beam/ConsistentMass.h"
 
 namespace dabs::elements {
@@ -43,6 +44,19 @@ class SectionBeamColumn : public FixedSizeElement<2, BeamColumnTraits<Ndm>::kDof
   /// torsional inertia, as OpenSees' force/disp beam-columns). Call before initialize().
   void setConsistentMass(bool consistent) noexcept { consistentMass_ = consistent; }
 
+  Eigen::Ref<const Eigen::MatrixXd> committedStiff() const override { return this->kc_; }
+
+  bool acceptsBeamLoads() const override { return true; }
+  void zeroLoad() override {
+    if (loads_.empty()) return;
+    loads_.clear();
+    loadsChanged();
+  }
+  void addLoad(const BeamLoad& load, double factor) override {
+    loads_.add(load, factor, transf_->initialLength());
+    loadsChanged();
+  }
+
   /// Basic forces at the last update.
   const Basic& basicForce() const noexcept { return q_; }
   const Transf& transformation() const noexcept { return *transf_; }
@@ -71,7 +85,7 @@ class SectionBeamColumn : public FixedSizeElement<2, BeamColumnTraits<Ndm>::kDof
     if (name == "force" || name == "forces" || name == "globalForce" || name == "globalForces")
       return Eigen::VectorXd(this->f_);
     if (name == "localForce" || name == "localForces")
-      return Eigen::VectorXd(transf_->localForce(q_));
+      return Eigen::VectorXd(transf_->localForce(q_) + loads_.localEndForces());
     if (name == "basicForce" || name == "basicForces") return Eigen::VectorXd(q_);
     if (name == "basicDeformation" || name == "basicDeformations" || name == "deformations")
       return Eigen::VectorXd(transf_->basicDeformation());
@@ -89,6 +103,15 @@ class SectionBeamColumn : public FixedSizeElement<2, BeamColumnTraits<Ndm>::kDof
   }
 
  protected:
+  /// Called after the member loads changed (force-based elements recompute their section loads).
+  virtual void loadsChanged() {}
+  /// Global end forces of the basic forces q plus the member loads' reactions.
+  Vector endForces(const Basic& q) const {
+    Vector f = transf_->globalForce(q);
+    if (!loads_.empty()) f += globalReactions(*transf_, loads_);
+    return f;
+  }
+
   /// Sets the transformation, lumped mass and point data; throws InputError for bad geometry.
   void initializeGeometry(const NodalCoordinates& x) {
     if (x.size() != 2) throw InputError("element", "needs 2 nodes");
@@ -111,6 +134,7 @@ class SectionBeamColumn : public FixedSizeElement<2, BeamColumnTraits<Ndm>::kDof
   std::unique_ptr<Transf> transf_;
   double massPerLength_ = 0.0;
   bool consistentMass_ = false;
+  BeamMemberLoads<kBasic> loads_;
   Basic q_ = Basic::Zero();
   Vector uTrial_ = Vector::Zero();
   Vector uCommitted_ = Vector::Zero();

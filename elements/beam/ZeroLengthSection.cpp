@@ -80,6 +80,7 @@ void ZeroLengthSection<Ndm>::initialize(const NodalCoordinates& x) {
   ka_.noalias() = section_->getInitialTangent() * a_;
   this->k0_.noalias() = a_.transpose() * ka_;
   formState();
+  this->kc_ = this->k_;
 }
 
 template <int Ndm>
@@ -107,6 +108,7 @@ template <int Ndm>
 void ZeroLengthSection<Ndm>::revertToStart() {
   section_->revertToStart();
   formState();
+  this->kc_ = this->k_;
 }
 
 template <int Ndm>

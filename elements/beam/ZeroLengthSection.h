@@ -35,7 +35,11 @@ class ZeroLengthSection final : public FixedSizeElement<2, BeamColumnTraits<Ndm>
   void initialize(const NodalCoordinates& x) override;
   [[nodiscard]] Status update(const Kinematics& trial) override;
   bool rayleighByDefault() const override { return false; }
-  void commitState() override { section_->commitState(); }
+  Eigen::Ref<const Eigen::MatrixXd> committedStiff() const override { return this->kc_; }
+  void commitState() override {
+    section_->commitState();
+    this->kc_ = this->k_;
+  }
   long materialUpdates() const override { return section_->materialUpdates(); }
   void revertToLastCommit() override;
   void revertToStart() override;

@@ -27,13 +27,11 @@ void Truss::initialize(const NodalCoordinates& x) {
   const Eigen::Vector3d d = x[1] - x[0];
   length_ = d.norm();
   if (length_ == 0.0) throw InputError("nodes", "coincide: a truss needs a length");
-  const Eigen::Vector3d c = d / length_;
+  axis0_ = d;
+  duTrial_.setZero();
+  duCommitted_.setZero();
+  setDeformedAxis(duTrial_);
   const int ndf = params_.ndf;
-  b_.setZero();
-  for (int i = 0; i < params_.ndm; ++i) {
-    b_(i) = -c(i) / length_;
-    b_(ndf + i) = c(i) / length_;
-  }
   const double totalMass = params_.rho * length_;
   m_.setZero();
   for (int i = 0; i < params_.ndm; ++i) {
@@ -50,32 +48,80 @@ void Truss::initialize(const NodalCoordinates& x) {
   kc_ = k_;
 }
 
+void Truss::setDeformedAxis(const Eigen::Vector3d& du) {
+  axis_ = axis0_ + du;
+  const double l = axis_.norm();
+  const Eigen::Vector3d n = axis_ / l;
+  const int ndf = params_.ndf;
+  b_.setZero();
+  for (int i = 0; i < params_.ndm; ++i) {
+    b_(i) = -n(i) / length_;
+    b_(ndf + i) = n(i) / length_;
+  }
+}
+
 void Truss::assemble() {
   const double al = params_.area * length_;
   f_ = (al * material_->getStress()) * b_;
   k_ = (al * material_->getTangent()) * b_ * b_.transpose();
   c_ = (al * material_->getDampTangent()) * b_ * b_.transpose();
+  if (!params_.corotational) return;
+  // Geometric stiffness of the axial force N turning with the axis: (N / l)(I - n n^T) on the
+  // end displacement difference (Crisfield 1991, eq. 3.21).
+  const double l = axis_.norm();
+  const double nForce = params_.area * material_->getStress();
+  const Eigen::Vector3d n = axis_ / l;
+  const int ndm = params_.ndm, ndf = params_.ndf;
+  const Eigen::MatrixXd kg = (nForce / l) * (Eigen::MatrixXd::Identity(ndm, ndm) -
+                                             n.head(ndm) * n.head(ndm).transpose());
+  k_.block(0, 0, ndm, ndm) += kg;
+  k_.block(ndf, ndf, ndm, ndm) += kg;
+  k_.block(0, ndf, ndm, ndm) -= kg;
+  k_.block(ndf, 0, ndm, ndm) -= kg;
 }
 
 Status Truss::update(const Kinematics& trial) {
-  const Status s = material_->setTrialStrain(b_.dot(trial.u), b_.dot(trial.v));
+  if (!params_.corotational) {
+    const Status s = material_->setTrialStrain(b_.dot(trial.u), b_.dot(trial.v));
+    if (!ok(s)) return s;
+    assemble();
+    return Status::Ok;
+  }
+  const int ndm = params_.ndm, ndf = params_.ndf;
+  Eigen::Vector3d du = Eigen::Vector3d::Zero(), dv = Eigen::Vector3d::Zero();
+  for (int i = 0; i < ndm; ++i) {
+    du(i) = trial.u(ndf + i) - trial.u(i);
+    dv(i) = trial.v(ndf + i) - trial.v(i);
+  }
+  duTrial_ = du;
+  setDeformedAxis(du);
+  const double l = axis_.norm();
+  const double strain = (l - length_) / length_;
+  const double rate = axis_.dot(dv) / (l * length_);
+  const Status s = material_->setTrialStrain(strain, rate);
   if (!ok(s)) return s;
   assemble();
-  return Status::Ok;
+  return f_.allFinite() ? Status::Ok : Status::NonFinite;
 }
 
 void Truss::commitState() {
   material_->commitState();
+  duCommitted_ = duTrial_;
   kc_ = k_;
 }
 
 void Truss::revertToLastCommit() {
   material_->revertToLastCommit();
+  duTrial_ = duCommitted_;
+  if (params_.corotational) setDeformedAxis(duTrial_);
   assemble();
 }
 
 void Truss::revertToStart() {
   material_->revertToStart();
+  duTrial_.setZero();
+  duCommitted_.setZero();
+  setDeformedAxis(duTrial_);
   assemble();
   kc_ = k_;
 }

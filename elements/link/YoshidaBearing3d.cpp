@@ -142,6 +142,7 @@ void YoshidaBearing3d::assemble(const Basic& q, const BasicMatrix& kb) {
 void YoshidaBearing3d::commitState() {
   material_->commitState();
   committed_ = trial_;
+  kc_ = k_;
 }
 
 void YoshidaBearing3d::revertToLastCommit() {
@@ -159,6 +160,7 @@ void YoshidaBearing3d::revertToStart() {
   kb(5, 5) = p_.Krz;
   kb.block<2, 2>(1, 1) = material_->getInitialTangent();
   assemble(Basic::Zero(), kb);
+  kc_ = k_;
 }
 
 int YoshidaBearing3d::damage() const noexcept {

@@ -78,6 +78,7 @@ class YoshidaBearing3d final : public FixedSizeElement<2, 6> {
   void initialize(const NodalCoordinates& x) override;
   [[nodiscard]] Status update(const Kinematics& trial) override;
   bool rayleighByDefault() const override { return false; }
+  Eigen::Ref<const Eigen::MatrixXd> committedStiff() const override { return kc_; }
 
   void commitState() override;
   void revertToLastCommit() override;

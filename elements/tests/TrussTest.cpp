@@ -17,8 +17,9 @@ constexpr double kTangentTolerance = 1e-6;
 constexpr double kExact = 1e-12;
 
 std::unique_ptr<Truss> makeTruss(std::unique_ptr<materials::UniaxialMaterial> m, double rho = 0.0,
-                                 bool consistent = false) {
+                                 bool consistent = false, bool corotational = false) {
   Truss::Params p;
+  p.corotational = corotational;
   p.nodes = {1, 2};
   p.ndm = 3;
   p.ndf = 3;
@@ -88,6 +89,47 @@ TEST(TrussTest, BadInputIsRejected) {
   p.validate();
   Truss t(1, p, elastic(1.0));
   EXPECT_THROW(t.initialize({Eigen::Vector3d(1, 1, 1), Eigen::Vector3d(1, 1, 1)}), InputError);
+}
+
+TEST(TrussTest, CorotationalTrussRotatesRigidlyWithoutForce) {
+  // A rigid rotation by 90 degrees about z (node j from (3, 4, 0) to (-4, 3, 0)) leaves the
+  // length, hence the force, at zero; the small-displacement truss would stretch.
+  auto t = makeTruss(elastic(100.0), 0.0, false, true);
+  testing::TrialState s{Eigen::VectorXd::Zero(6), Eigen::VectorXd::Zero(6), Eigen::VectorXd::Zero(6)};
+  s.u(3) = -7.0;
+  s.u(4) = -1.0;
+  ASSERT_TRUE(ok(t->update(s.kinematics())));
+  EXPECT_LT(t->resistingForce().norm(), kExact);
+  EXPECT_EQ(t->typeName(), "corotTruss");
+}
+
+TEST(TrussTest, CorotationalTrussForceFollowsTheDeformedAxis) {
+  // Node j moved to (0, 10, 0): length 10, engineering strain (10 - 5)/5 = 1, force A E along
+  // the new axis (global y).
+  auto t = makeTruss(elastic(100.0), 0.0, false, true);
+  testing::TrialState s{Eigen::VectorXd::Zero(6), Eigen::VectorXd::Zero(6), Eigen::VectorXd::Zero(6)};
+  s.u(3) = -3.0;
+  s.u(4) = 6.0;
+  ASSERT_TRUE(ok(t->update(s.kinematics())));
+  const double n = 2.0 * 100.0 * 1.0;
+  EXPECT_NEAR(t->resistingForce()(4), n, kExact * n);
+  EXPECT_NEAR(t->resistingForce()(1), -n, kExact * n);
+  EXPECT_NEAR(t->resistingForce()(3), 0.0, kExact * n);
+}
+
+TEST(TrussTest, CorotationalTrussTangentMatchesFiniteDifferences) {
+  materials::Steel02::Params p;
+  p.Fy = 3.0;
+  p.E = 100.0;
+  p.b = 0.02;
+  p.validate();
+  auto t = makeTruss(std::make_unique<materials::Steel02>(1, p), 0.0, false, true);
+  testing::TrialState s{Eigen::VectorXd::Zero(6), Eigen::VectorXd::Zero(6), Eigen::VectorXd::Zero(6)};
+  s.u << 0.1, -0.2, 0.05, -1.5, 0.8, 0.4;  // large rotation and stretch past yield
+  ASSERT_TRUE(ok(t->update(s.kinematics())));
+  const Eigen::MatrixXd k = t->tangentStiff();
+  EXPECT_LT(testing::relativeDifference(k, testing::numericalStiffness(*t, s, 1e-7)), kTangentTolerance);
+  EXPECT_LT((k - k.transpose()).norm(), 1e-12 * k.norm());
 }
 
 }  // namespace

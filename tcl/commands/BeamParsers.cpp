@@ -276,6 +276,25 @@ void sectionCommand(Runtime& rt, ArgReader& args) {
   rt.requireModel("section");
   const int ndm = rt.builder.ndm;
   const std::string type = args.word("type");
+  if (type == "Uniaxial") {
+    // section Uniaxial tag matTag code: one resultant carried by one material (OpenSees'
+    // SectionAggregator with a single material, as its own Uniaxial section).
+    args.setContext("section Uniaxial");
+    args.setUsage("section Uniaxial tag matTag code (code P, Mz, Vy, My, Vz or T)");
+    const int tag = readNewTag(args, rt.builder.sections, "section");
+    const int mat = args.integer("matTag");
+    const materials::section::SectionCode code = sectionCode(args);
+    args.finish();
+    if (ndm == 2 && (code == materials::section::SectionCode::My ||
+                     code == materials::section::SectionCode::Vz ||
+                     code == materials::section::SectionCode::T))
+      args.fail(args.lastPosition(), "code", "My, Vz and T are not available in a 2D model");
+    rt.builder.sections[tag] = std::make_unique<materials::section::SectionAggregator>(
+        tag, std::vector<materials::section::SectionAggregator::Part>{{&rt.builder.uniaxialMaterial(mat), code}},
+        nullptr);
+    Tcl_SetObjResult(rt.interp, Tcl_NewIntObj(tag));
+    return;
+  }
   if (type == "Elastic" || type == "Aggregator") {
     args.setContext("section " + type);
     args.setUsage(type == "Aggregator" ? kAggregatorUsage
@@ -290,7 +309,7 @@ void sectionCommand(Runtime& rt, ArgReader& args) {
   }
   if (type != "Fiber" && type != "fiberSec")
     args.fail(args.lastPosition(), "type",
-              "unknown section \"" + type + "\" (available: Fiber, Elastic, Aggregator)");
+              "unknown section \"" + type + "\" (available: Fiber, Elastic, Aggregator, Uniaxial)");
   args.setContext("section " + type);
   args.setUsage("section Fiber tag ?-GJ GJ? { fiber ...; patch ...; layer ... }");
   const int tag = readNewTag(args, rt.builder.sections, "section");
@@ -461,19 +480,82 @@ std::unique_ptr<elements::Element> parseElasticBeam(Runtime& rt, ArgReader& args
                                                    transformFor<CrdTransf2d>(rt, transfTag));
 }
 
-// element forceBeamColumn|nonlinearBeamColumn|dispBeamColumn tag i j transfTag integrationTag
-//   ?-iter maxIter tol? ?-mass m?     or the older   tag i j nIP secTag transfTag ?...?
 // Element iterations of a force-based beam: OpenSees' default is 10; thousands never help.
 constexpr int kMaxElementIterations = 1000;
 constexpr double kMinElementTolerance = 1e-15;
 
+// An integration rule written in the element command, as OpenSees' TclForceBeamColumnCommand
+// takes it after the transformation tag: `Lobatto|Legendre|Radau|NewtonCotes secTag N` or
+// `HingeRadau secI lpI secJ lpJ secE`, as separate words or as one list ("Lobatto 1 5").
+std::unique_ptr<elements::BeamIntegration> inlineIntegration(Runtime& rt, ArgReader& args) {
+  std::vector<std::string> words;
+  const std::string first = args.word("integration");
+  if (first.find_first_of(" \t\n") != std::string::npos) {
+    int n = 0;
+    const char** list = nullptr;
+    if (Tcl_SplitList(nullptr, first.c_str(), &n, &list) != TCL_OK)
+      args.fail(args.lastPosition(), "integration", "is not a list: \"" + first + "\"");
+    for (int k = 0; k < n; ++k) words.emplace_back(list[k]);
+    Tcl_Free(reinterpret_cast<char*>(list));
+  } else {
+    words.push_back(first);
+    const std::size_t more = first == "HingeRadau" ? 5 : 2;
+    for (std::size_t k = 0; k < more && args.hasPositional(); ++k) words.push_back(args.word("integration"));
+  }
+  const std::string& type = words[0];
+  auto number = [&](std::size_t k, const char* name) {
+    double v = 0.0;
+    if (k >= words.size() || Tcl_GetDouble(nullptr, words[k].c_str(), &v) != TCL_OK)
+      args.fail(args.lastPosition(), name,
+                "expected a number in the integration \"" + type + " ...\", got \"" +
+                    (k < words.size() ? words[k] : std::string()) + "\"");
+    return v;
+  };
+  auto integer = [&](std::size_t k, const char* name) {
+    int v = 0;
+    if (k >= words.size() || Tcl_GetInt(nullptr, words[k].c_str(), &v) != TCL_OK)
+      args.fail(args.lastPosition(), name,
+                "expected an integer in the integration \"" + type + " ...\", got \"" +
+                    (k < words.size() ? words[k] : std::string()) + "\"");
+    return v;
+  };
+  if (type == "HingeRadau") {
+    if (words.size() != 6) args.fail(args.lastPosition(), "integration", "HingeRadau needs secI lpI secJ lpJ secE");
+    const int secI = integer(1, "secI"), secJ = integer(3, "secJ"), secE = integer(5, "secE");
+    for (int sec : {secI, secJ, secE}) (void)rt.builder.section(sec);
+    return std::make_unique<elements::HingeRadauIntegration>(0, secI, number(2, "lpI"), secJ,
+                                                             number(4, "lpJ"), secE);
+  }
+  using Rule = elements::QuadratureIntegration::Rule;
+  Rule r = Rule::Lobatto;
+  if (type == "Legendre") r = Rule::Legendre;
+  else if (type == "Radau") r = Rule::Radau;
+  else if (type == "NewtonCotes") r = Rule::NewtonCotes;
+  else if (type != "Lobatto")
+    args.fail(args.lastPosition(), "integration",
+              "expected Lobatto, Legendre, Radau, NewtonCotes or HingeRadau, got \"" + type + "\"");
+  if (words.size() != 3) args.fail(args.lastPosition(), "integration", type + " needs secTag N");
+  const int sec = integer(1, "secTag");
+  (void)rt.builder.section(sec);
+  return std::make_unique<elements::QuadratureIntegration>(0, r, sec, integer(2, "N"));
+}
+
+// element forceBeamColumn|nonlinearBeamColumn|dispBeamColumn tag i j transfTag integrationTag
+//   ?-iter maxIter tol? ?-mass m? ?-cMass|-lMass?, the older tag i j nIP secTag transfTag ?...?
+//   ?-integration type? (forceBeamColumn: Lobatto, dispBeamColumn: Legendre, as OpenSees), or
+//   tag i j transfTag "Type secTag N" | Type secTag N (inline integration, see above).
 template <bool Force>
 std::unique_ptr<elements::Element> parseSectionBeam(Runtime& rt, ArgReader& args, int tag) {
   const int ndm = rt.builder.ndm;
   const int iNode = args.integer("iNode");
   const int jNode = args.integer("jNode");
-  const std::vector<int> ints = args.integers("transfTag integrationTag | nIP secTag transfTag", 2);
+  const std::vector<int> ints = args.integers("transfTag integrationTag | nIP secTag transfTag", 1);
   if (ints.size() > 3) args.fail("too many integer arguments");
+  std::unique_ptr<elements::BeamIntegration> owned;
+  if (ints.size() == 1) {
+    if (!args.hasPositional()) args.fail("needs an integration after transfTag");
+    owned = inlineIntegration(rt, args);
+  }
   int maxIter = 10;
   double tol = 1e-12;
   if (auto it = args.optionReals("-iter", 2)) {
@@ -488,7 +570,10 @@ std::unique_ptr<elements::Element> parseSectionBeam(Runtime& rt, ArgReader& args
   }
   const double mass = args.option("-mass", 0.0);
   const bool consistentMass = args.flag("-cMass");
-  const std::string integrationType = args.option("-integration", std::string("Lobatto"));
+  const bool lumpedMass = args.flag("-lMass");  // lumped is the default anyway
+  if (consistentMass && lumpedMass) args.fail("takes -cMass or -lMass, not both");
+  const std::string integrationType =
+      args.option("-integration", std::string(Force ? "Lobatto" : "Legendre"));
   args.finish();
   if (maxIter < 1) throw InputError("-iter maxIter", "must be at least 1");
   if (!(tol > 0.0)) throw InputError("-iter tol", "must be positive");
@@ -496,13 +581,11 @@ std::unique_ptr<elements::Element> parseSectionBeam(Runtime& rt, ArgReader& args
   const double length = (rt.domain.node(jNode).coords() - rt.domain.node(iNode).coords()).norm();
   if (!(length > 0.0)) throw InputError("element", "nodes coincide (zero length)");
 
-  std::unique_ptr<elements::BeamIntegration> owned;
-  const elements::BeamIntegration* rule = nullptr;
-  int transfTag = 0;
+  const elements::BeamIntegration* rule = owned.get();
+  int transfTag = ints[0];
   if (ints.size() == 2) {
-    transfTag = ints[0];
     rule = &rt.builder.integration(ints[1]);
-  } else {
+  } else if (ints.size() == 3) {
     transfTag = ints[2];
     using Rule = elements::QuadratureIntegration::Rule;
     Rule r = Rule::Lobatto;
@@ -573,7 +656,7 @@ constexpr std::array kSectionCommands{
                  geomTransfCommand},
     CommandEntry{"section",
                  "section Fiber tag ?-GJ GJ? {body} | Elastic tag E A Iz ... | Aggregator tag "
-                 "matTag code ... ?-section secTag?",
+                 "matTag code ... ?-section secTag? | Uniaxial tag matTag code",
                  sectionCommand},
     CommandEntry{"fiber", "fiber y z A matTag", fiberCommand},
     CommandEntry{"patch",
@@ -597,18 +680,19 @@ constexpr std::array kBeamElements{
                  "(2D) | tag iNode jNode A E G J Iy Iz transfTag ?-mass m? ?-cMass? (3D)",
                  parseElasticBeam},
     ElementEntry{"forceBeamColumn",
-                 "element forceBeamColumn tag iNode jNode transfTag integrationTag ?-iter maxIter "
-                 "tol? ?-mass m? ?-cMass? | tag iNode jNode nIP secTag transfTag ?-iter maxIter tol? ?-mass "
-                 "m? ?-cMass? ?-integration Lobatto|Legendre|Radau|NewtonCotes?",
+                 "element forceBeamColumn tag iNode jNode transfTag integrationTag|\"Type secTag "
+                 "N\" ?-iter maxIter tol? ?-mass m? ?-cMass|-lMass? | tag iNode jNode nIP secTag "
+                 "transfTag ?-iter maxIter tol? ?-mass m? ?-cMass|-lMass? ?-integration "
+                 "Lobatto|Legendre|Radau|NewtonCotes?",
                  parseSectionBeam<true>},
     ElementEntry{"nonlinearBeamColumn",
                  "element nonlinearBeamColumn tag iNode jNode nIP secTag transfTag ?-iter maxIter "
-                 "tol? ?-mass m? ?-cMass?",
+                 "tol? ?-mass m? ?-cMass|-lMass?",
                  parseSectionBeam<true>},
     ElementEntry{"dispBeamColumn",
-                 "element dispBeamColumn tag iNode jNode transfTag integrationTag ?-mass m? ?-cMass? | "
-                 "tag iNode jNode nIP secTag transfTag ?-mass m? ?-cMass? ?-integration "
-                 "Lobatto|Legendre|Radau?",
+                 "element dispBeamColumn tag iNode jNode transfTag integrationTag|\"Type secTag N\" "
+                 "?-mass m? ?-cMass|-lMass? | tag iNode jNode nIP secTag transfTag ?-mass m? "
+                 "?-cMass|-lMass? ?-integration Legendre|Lobatto|Radau|NewtonCotes?",
                  parseSectionBeam<false>},
 };
 

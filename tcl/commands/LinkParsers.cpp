@@ -1,8 +1,12 @@
 // SPDX-License-Identifier: MIT
-// Parsers of the link elements: zeroLength and truss.
+// Parsers of the link elements: zeroLength, truss and corotTruss.
+#include <cmath>
+#include <optional>
+
 #include "elements/link/Truss.h"
 #include "elements/link/ZeroLength.h"
 #include "materials/InputError.h"
+#include "materials/section/SectionAxialMaterial.h"
 #include "tcl/commands/Registry.h"
 
 namespace dabs::tcl {
@@ -35,13 +39,23 @@ std::unique_ptr<elements::Element> parseZeroLength(Runtime& rt, ArgReader& a, in
   return std::make_unique<elements::ZeroLength>(tag, std::move(p), std::move(clones));
 }
 
+// element truss|corotTruss tag i j A matTag <options> | tag i j secTag <options>: a single value
+// after the nodes is a section tag (OpenSees tells the forms apart by the number of arguments);
+// options -rho rho, -cMass 0|1, -doRayleigh 0|1.
+template <bool Corotational>
 std::unique_ptr<elements::Element> parseTruss(Runtime& rt, ArgReader& a, int tag) {
   elements::Truss::Params p;
+  p.corotational = Corotational;
   p.nodes = {a.integer("iNode"), a.integer("jNode")};
-  p.area = a.real("A");
-  const int mat = a.integer("matTag");
+  const double first = a.real("A | secTag");
+  std::optional<int> mat;
+  if (a.hasPositional()) mat = a.integer("matTag");
   p.rho = a.option("-rho", 0.0);
-  p.consistentMass = a.option("-cMass", 0) != 0;
+  if (a.flag("-cMass")) {
+    // `-cMass` alone switches it on; `-cMass 0|1` sets it.
+    p.consistentMass = true;
+    if (a.hasPositional()) p.consistentMass = a.integer("cMass flag") != 0;
+  }
   if (a.flag("-doRayleigh")) {
     p.doRayleigh = true;
     if (a.hasPositional()) p.doRayleigh = a.integer("doRayleigh flag") != 0;
@@ -49,16 +63,34 @@ std::unique_ptr<elements::Element> parseTruss(Runtime& rt, ArgReader& a, int tag
   a.finish();
   p.ndm = rt.builder.ndm;
   p.ndf = rt.domain.node(p.nodes[0]).ndf();
+  std::unique_ptr<materials::UniaxialMaterial> material;
+  if (mat) {
+    p.area = first;
+    material = rt.builder.uniaxialMaterial(*mat).clone();
+  } else {
+    if (first != std::floor(first)) a.fail(3, "secTag", "expected a section tag (or A matTag)");
+    p.area = 1.0;  // the section's axial force is the truss force
+    material = std::make_unique<materials::section::SectionAxialMaterial>(
+        rt.builder.section(static_cast<int>(first)).clone());
+  }
   p.validate();
-  return std::make_unique<elements::Truss>(tag, std::move(p), rt.builder.uniaxialMaterial(mat).clone());
+  return std::make_unique<elements::Truss>(tag, std::move(p), std::move(material));
 }
 
 constexpr ElementEntry kParsers[] = {
     {"zeroLength",
      "element zeroLength tag iNode jNode -mat m1 .. -dir d1 .. ?-orient x1 x2 x3 yp1 yp2 yp3? ?-doRayleigh 0|1?",
      parseZeroLength},
-    {"truss", "element truss tag iNode jNode A matTag ?-rho rho? ?-cMass 0|1? ?-doRayleigh 0|1?", parseTruss},
-    {"Truss", "element Truss tag iNode jNode A matTag ?-rho rho? ?-cMass 0|1? ?-doRayleigh 0|1?", parseTruss},
+    {"truss", "element truss tag iNode jNode A matTag|secTag ?-rho rho? ?-cMass 0|1? ?-doRayleigh 0|1?",
+     parseTruss<false>},
+    {"Truss", "element Truss tag iNode jNode A matTag|secTag ?-rho rho? ?-cMass 0|1? ?-doRayleigh 0|1?",
+     parseTruss<false>},
+    {"corotTruss",
+     "element corotTruss tag iNode jNode A matTag|secTag ?-rho rho? ?-cMass 0|1? ?-doRayleigh 0|1?",
+     parseTruss<true>},
+    {"CorotTruss",
+     "element CorotTruss tag iNode jNode A matTag|secTag ?-rho rho? ?-cMass 0|1? ?-doRayleigh 0|1?",
+     parseTruss<true>},
 };
 
 }  // namespace

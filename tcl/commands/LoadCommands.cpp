@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// Load and time commands: timeSeries, pattern, load, sp, groundMotion, imposedMotion, loadConst,
+// Load and time commands: timeSeries, pattern, load, eleLoad, sp, groundMotion, imposedMotion, loadConst,
 // setTime, getTime, remove, rayleigh, modalDamping.
 #include <string>
 
@@ -72,7 +72,8 @@ void patternCmd(Runtime& rt, ArgReader& a) {
         n.committedVel(dir - 1) = vel0;
       }
     }
-  } else if (type == "MultipleSupport") {
+  } else if (type == "MultipleSupport" || type == "MultiSupport" ||
+             type == "MultipleSupportExcitation") {
     a.setUsage("pattern MultipleSupport tag { groundMotion ..; imposedMotion .. }");
     Tcl_Obj* body = a.object("body");
     a.finish();
@@ -80,7 +81,8 @@ void patternCmd(Runtime& rt, ArgReader& a) {
     rt.currentPattern = tag;
     evalBody(rt, a, tag, body);
   } else {
-    a.fail(1, "type", "expected Plain, UniformExcitation or MultipleSupport, got \"" + type + "\"");
+    a.fail(1, "type", "expected Plain, UniformExcitation or MultipleSupport (MultiSupport), got \"" +
+                          type + "\"");
   }
 }
 
@@ -110,6 +112,79 @@ void loadCmd(Runtime& rt, ArgReader& a) {
   a.finish();
   if (constant) a.fail("-const loads are not supported; put them in a pattern with a Constant series");
   p.loads.push_back(std::move(load));
+}
+
+// eleLoad -ele t1 t2 .. | -range first last -type -beamUniform|-beamPoint values (OpenSees'
+// TclCommand_addElementalLoad): member loads in the element's local axes, added to the current
+// Plain pattern. 2D: -beamUniform Wy ?Wx? ?aOverL ?bOverL? ?WyB ?WxB????, -beamPoint Py xL ?Px?;
+// 3D: -beamUniform Wy Wz ?Wx? ?aOverL ?bOverL? ?WyB ?WzB ?WxB?????, -beamPoint Py Pz xL ?Px?
+// (WyB.. the intensities at bOverL of a load varying linearly along the member).
+void eleLoadCmd(Runtime& rt, ArgReader& a) {
+  rt.requireModel("eleLoad");
+  const int ndm = rt.builder.ndm;
+  a.setUsage(ndm == 3 ? "eleLoad -ele tags.. | -range first last -type -beamUniform Wy Wz ?Wx? "
+                        "?aOverL bOverL? ?WyB WzB WxB? | -beamPoint Py Pz xL ?Px?"
+                      : "eleLoad -ele tags.. | -range first last -type -beamUniform Wy ?Wx? "
+                        "?aOverL bOverL? ?WyB WxB? | -beamPoint Py xL ?Px?");
+  std::vector<int> tags;
+  while (auto list = a.optionIntegerList("-ele")) tags.insert(tags.end(), list->begin(), list->end());
+  while (auto range = a.optionTagRange("-range"))
+    for (int t = range->first; t <= range->second; ++t) tags.push_back(t);
+  if (tags.empty()) a.fail("needs the loaded elements: -ele tags.. or -range first last");
+  const auto typeWord = a.optionalWordOption("-type");
+  if (!typeWord) a.fail("needs -type -beamUniform or -type -beamPoint");
+  std::string type = *typeWord;
+  if (!type.empty() && type[0] == '-') type.erase(0, 1);
+  if (ndm != 2 && ndm != 3) a.fail("member loads need a 2D or 3D model");
+  const std::vector<double> v = a.reals("load values");
+  domain::PlainPattern& p = currentPlain(rt, a);
+  a.finish();
+
+  elements::BeamLoad load;
+  const std::size_t n = v.size();
+  auto at = [&v](std::size_t i, double fallback) { return i < v.size() ? v[i] : fallback; };
+  if (type == "beamUniform") {
+    load.type = elements::BeamLoad::Type::Uniform;
+    const std::size_t transverse = ndm == 3 ? 2 : 1;  // Wy (Wz)
+    if (n < transverse)
+      a.fail(ndm == 3 ? "-beamUniform needs Wy Wz" : "-beamUniform needs Wy");
+    // After aOverL bOverL OpenSees reads the intensities at bOverL, each defaulting to its value
+    // at aOverL: 2D Wy Wx, 3D Wy Wz Wx.
+    const std::size_t atEnd = transverse + 3;
+    if (n > atEnd + transverse + 1)
+      a.fail("-beamUniform takes at most " + std::to_string(atEnd + transverse + 1) + " values");
+    load.w = Eigen::Vector3d(at(transverse, 0.0), v[0], ndm == 3 ? v[1] : 0.0);
+    load.a = at(transverse + 1, 0.0);
+    load.b = at(transverse + 2, 1.0);
+    if (n > atEnd) {
+      const Eigen::Vector3d end(at(atEnd + transverse, load.w.x()), at(atEnd, load.w.y()),
+                                ndm == 3 ? at(atEnd + 1, load.w.z()) : 0.0);
+      if (end != load.w) load.wEnd = end;
+    }
+    if (!(load.a >= 0.0 && load.a < load.b && load.b <= 1.0))
+      a.fail("-beamUniform needs 0 <= aOverL < bOverL <= 1, got " + std::to_string(load.a) + " and " +
+             std::to_string(load.b));
+  } else if (type == "beamPoint") {
+    load.type = elements::BeamLoad::Type::Point;
+    const std::size_t transverse = ndm == 3 ? 2 : 1;  // Py (Pz)
+    if (n < transverse + 1 || n > transverse + 2)
+      a.fail(ndm == 3 ? "-beamPoint needs Py Pz xL ?Px?" : "-beamPoint needs Py xL ?Px?");
+    load.w = Eigen::Vector3d(at(transverse + 1, 0.0), v[0], ndm == 3 ? v[1] : 0.0);
+    load.a = v[transverse];
+    if (!(load.a >= 0.0 && load.a <= 1.0))
+      a.fail("-beamPoint needs 0 <= xL <= 1, got " + std::to_string(load.a));
+  } else {
+    a.fail("-type expects -beamUniform or -beamPoint, got \"" + *typeWord + "\"");
+  }
+  const int dofPerNode = ndm == 3 ? 6 : 3;
+  for (int tag : tags) {
+    const elements::Element* e = rt.domain.findElement(tag);
+    if (e == nullptr) a.fail("element " + std::to_string(tag) + " does not exist");
+    if (!e->acceptsBeamLoads() || e->dofPerNode() != dofPerNode)
+      a.fail("element " + std::to_string(tag) + " (" + std::string(e->typeName()) +
+             ") takes no member loads");
+  }
+  for (int tag : tags) p.elementLoads.push_back({tag, load});
 }
 
 void spCmd(Runtime& rt, ArgReader& a) {
@@ -154,11 +229,13 @@ void imposedMotionCmd(Runtime& rt, ArgReader& a) {
   const domain::Node& n = rt.domain.node(node);
   if (dof < 1 || dof > n.ndf()) a.fail(2, "dof", "must be 1.." + std::to_string(n.ndf()));
   if (p.groundMotions.count(gm) == 0) a.fail(3, "gmTag", "groundMotion " + std::to_string(gm) + " does not exist");
-  for (const auto& fix : rt.domain.fixes())
-    if (fix.node == node && fix.dof == dof - 1)
-      a.fail("node " + std::to_string(node) + " dof " + std::to_string(dof) +
-             " is fixed; imposedMotion needs a free support dof (remove the fix)");
-  p.imposed.push_back({node, dof - 1, gm});
+  // A fixed support dof follows the motion while the pattern exists, as under OpenSees'
+  // Transformation handler (its Plain handler ignores the motion, its Penalty handler averages the
+  // two constraints); removing the pattern fixes the dof again.
+  bool fixed = false;
+  for (const auto& fix : rt.domain.fixes()) fixed = fixed || (fix.node == node && fix.dof == dof - 1);
+  if (fixed) rt.domain.removeFix(node, dof - 1);
+  p.imposed.push_back({node, dof - 1, gm, fixed});
   rt.domain.touch();
 }
 
@@ -274,9 +351,10 @@ void modalDampingCmd(Runtime& rt, ArgReader& a) {
 
 constexpr CommandEntry kCommands[] = {
     {"timeSeries", "timeSeries Constant|Linear|Trig|Rectangular|Path tag args...", timeSeriesCmd},
-    {"pattern", "pattern Plain|UniformExcitation|MultipleSupport tag args...", patternCmd},
+    {"pattern", "pattern Plain|UniformExcitation|MultipleSupport|MultiSupport tag args...", patternCmd},
     {"load", "load node v1 .. vndf ?-pattern tag?", loadCmd},
     {"sp", "sp node dof value ?-const? ?-pattern tag?", spCmd},
+    {"eleLoad", "eleLoad -ele tags.. | -range first last -type -beamUniform|-beamPoint values..", eleLoadCmd},
     {"groundMotion", "groundMotion tag Plain ?-accel ts? ?-vel ts? ?-disp ts? ?-fact f?", groundMotionCmd},
     {"imposedMotion", "imposedMotion node dof gmTag", imposedMotionCmd},
     {"imposedSupportMotion", "imposedSupportMotion node dof gmTag", imposedMotionCmd},

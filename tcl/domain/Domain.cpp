@@ -70,7 +70,15 @@ elements::Element* Domain::findElement(int tag) {
 }
 
 void Domain::removeElement(int tag) {
-  if (elements_.erase(tag) == 0) throw InputError("element", std::to_string(tag) + " does not exist");
+  if (elements_.count(tag) == 0) throw InputError("element", std::to_string(tag) + " does not exist");
+  for (const auto& [ptag, p] : patterns_) {
+    if (p->kind() != LoadPattern::Kind::Plain) continue;
+    for (const auto& l : static_cast<const PlainPattern&>(*p).elementLoads)
+      if (l.element == tag)
+        throw InputError("element", std::to_string(tag) + " is loaded by pattern " +
+                                        std::to_string(ptag) + "; remove the pattern first");
+  }
+  elements_.erase(tag);
   elementRayleigh_.erase(tag);
   touch();
 }
@@ -190,7 +198,18 @@ LoadPattern* Domain::findPattern(int tag) {
 }
 
 void Domain::removePattern(int tag) {
-  if (patterns_.erase(tag) == 0) throw InputError("pattern", std::to_string(tag) + " does not exist");
+  auto it = patterns_.find(tag);
+  if (it == patterns_.end()) throw InputError("pattern", std::to_string(tag) + " does not exist");
+  if (it->second->kind() == LoadPattern::Kind::MultipleSupport) {
+    // Imposed motions that took a fix's place give it back.
+    for (const auto& m : static_cast<const MultipleSupportPattern&>(*it->second).imposed) {
+      const bool fixed = std::any_of(fixes_.begin(), fixes_.end(), [&m](const SPConstraint& sp) {
+        return sp.node == m.node && sp.dof == m.dof;
+      });
+      if (m.replacedFix && !fixed && nodes_.count(m.node) != 0) fixes_.push_back(SPConstraint{m.node, m.dof});
+    }
+  }
+  patterns_.erase(it);
   touch();
 }
 
@@ -230,13 +249,46 @@ void Domain::commit() {
   record();
 }
 
+void Domain::setTime(double t) {
+  time_ = t;
+  applyElementLoads(t);
+}
+
+void Domain::setCommittedTime(double t) {
+  time_ = committedTime_ = t;
+  applyElementLoads(t);
+}
+
+void Domain::applyElementLoads(double t) {
+  bool any = false;
+  for (const auto& [ptag, p] : patterns_)
+    if (p->kind() == LoadPattern::Kind::Plain)
+      any = any || !static_cast<const PlainPattern&>(*p).elementLoads.empty();
+  if (!any && !elementLoadsApplied_) return;
+  for (auto& [tag, e] : elements_) e->zeroLoad();
+  for (const auto& [ptag, p] : patterns_) {
+    if (p->kind() != LoadPattern::Kind::Plain) continue;
+    const auto& plain = static_cast<const PlainPattern&>(*p);
+    if (plain.elementLoads.empty()) continue;
+    const double f = plain.factor(t);
+    for (const auto& l : plain.elementLoads) {
+      // The eleLoad command checked the element and the load; removeElement keeps them.
+      elements::Element* e = findElement(l.element);
+      if (e != nullptr) e->addLoad(l.load, f);
+    }
+  }
+  elementLoadsApplied_ = any;
+}
+
 void Domain::revertToLastCommit() {
+  applyElementLoads(committedTime_);
   for (auto& [tag, n] : nodes_) n.revertToLastCommit();
   for (auto& [tag, e] : elements_) e->revertToLastCommit();
   time_ = committedTime_;
 }
 
 void Domain::revertToStart() {
+  applyElementLoads(0.0);
   for (auto& [tag, n] : nodes_) n.revertToStart();
   for (auto& [tag, e] : elements_) e->revertToStart();
   time_ = committedTime_ = 0.0;
@@ -368,6 +420,7 @@ void Domain::clear() {
   modalDamping.clear();
   eigenvalues.clear();
   time_ = committedTime_ = 0.0;
+  elementLoadsApplied_ = false;
   touch();
 }
 

@@ -103,9 +103,12 @@ class Domain {
   // --- time and state -------------------------------------------------------------------
   double time() const noexcept { return time_; }
   double committedTime() const noexcept { return committedTime_; }
-  void setTime(double t) noexcept { time_ = t; }
+  /// Sets the trial time and applies the patterns' member loads at it (each element's loads are
+  /// replaced by the sum over the patterns of factor(t) times its loads, as OpenSees'
+  /// Domain::applyLoad does), in effect from the elements' next update.
+  void setTime(double t);
   /// setTime command: sets trial and committed time.
-  void setCommittedTime(double t) noexcept { time_ = committedTime_ = t; }
+  void setCommittedTime(double t);
   /// Commits nodes, elements and time, then lets recorders record.
   void commit();
   /// Reverts nodes, elements and time to the last commit.
@@ -160,6 +163,9 @@ class Domain {
   double time_ = 0.0;
   double committedTime_ = 0.0;
   long modelVersion_ = 0;
+  /// Member loads at time t on the elements (see setTime).
+  void applyElementLoads(double t);
+  bool elementLoadsApplied_ = false;  ///< some element holds member loads
 };
 
 }  // namespace dabs::domain

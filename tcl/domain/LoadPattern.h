@@ -6,6 +6,7 @@
 #include <memory>
 #include <vector>
 
+#include "elements/BeamLoad.h"
 #include "tcl/domain/TimeSeries.h"
 
 namespace dabs::domain {
@@ -39,7 +40,7 @@ class LoadPattern {
   double frozenFactor_ = 0.0;
 };
 
-/// `pattern Plain`: nodal loads and prescribed displacements scaled by the series.
+/// `pattern Plain`: nodal loads, member loads and prescribed displacements scaled by the series.
 class PlainPattern : public LoadPattern {
  public:
   /// Reference nodal load (one value per node dof).
@@ -54,10 +55,11 @@ class PlainPattern : public LoadPattern {
     double reference = 0.0;
     bool constant = false;  ///< `sp -const`: not scaled by the series
   };
-  /// Uniform load on a beam element in its local axes (eleLoad -type -beamUniform).
-  struct BeamUniformLoad {
+  /// Member load on a beam element in its local axes (eleLoad -type -beamUniform|-beamPoint),
+  /// scaled like the nodal loads.
+  struct ElementLoad {
     int element = 0;
-    double wy = 0.0, wz = 0.0, wx = 0.0;
+    elements::BeamLoad load;
   };
 
   PlainPattern(int tag, std::shared_ptr<const TimeSeries> series, double fact)
@@ -65,7 +67,7 @@ class PlainPattern : public LoadPattern {
 
   std::vector<NodalLoad> loads;
   std::vector<PrescribedDisp> prescribed;
-  std::vector<BeamUniformLoad> beamLoads;
+  std::vector<ElementLoad> elementLoads;
 };
 
 /// `pattern UniformExcitation`: the supports all move with one ground acceleration in one
@@ -114,6 +116,10 @@ class MultipleSupportPattern : public LoadPattern {
     int node = 0;
     int dof = 0;  ///< 0-based
     int groundMotion = 0;
+    /// The dof was fixed: the motion takes the fix's place while the pattern exists (OpenSees'
+    /// Transformation handler lets the imposed motion win), and removing the pattern fixes the
+    /// dof again.
+    bool replacedFix = false;
   };
   explicit MultipleSupportPattern(int tag) : LoadPattern(tag, Kind::MultipleSupport, nullptr, 1.0) {}
   std::map<int, std::unique_ptr<GroundMotion>> groundMotions;
