@@ -92,7 +92,7 @@ int registerCommands(Tcl_Interp* interp) {
   Tcl_CreateExitHandler(flushAtExit, rt);
   const std::span<const CommandEntry> families[] = {
       modelCommands(),        loadCommands(),    analysisCommands(), queryCommands(),
-      recorderCommands(),     materialTestCommands(), sectionCommands(), bearingCommands(),
+      recorderCommands(),     materialTestCommands(), sectionCommands(), beamCommands(), bearingCommands(),
       contactCommands(),
       dabs::parallel::parallelCommands(),  // getPID, getNP, send, recv, barrier, Bcast, ensemble
   };

@@ -49,7 +49,8 @@ std::span<const CommandEntry> analysisCommands();      // AnalysisCommands.cpp
 std::span<const CommandEntry> queryCommands();         // QueryCommands.cpp
 std::span<const CommandEntry> recorderCommands();      // RecorderCommands.cpp
 std::span<const CommandEntry> materialTestCommands();  // MaterialTestCommands.cpp
-std::span<const CommandEntry> sectionCommands();       // BeamParsers.cpp (geomTransf, section, ...)
+std::span<const CommandEntry> sectionCommands();       // SectionParsers.cpp (section, fiber, ...)
+std::span<const CommandEntry> beamCommands();          // BeamParsers.cpp (geomTransf, beamIntegration)
 std::span<const CommandEntry> bearingCommands();       // BearingParsers.cpp (biaxialMaterial)
 std::span<const CommandEntry> contactCommands();       // ContactParsers.cpp (pounding)
 
