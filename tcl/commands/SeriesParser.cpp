@@ -139,13 +139,13 @@ std::shared_ptr<const domain::TimeSeries> parseSeries(Runtime& rt, ArgReader& a,
 
 std::shared_ptr<const domain::TimeSeries> seriesArgument(Runtime& rt, ArgReader& a, std::string_view name) {
   Tcl_Obj* obj = a.object(name);
-  int tag = 0;
-  if (Tcl_GetIntFromObj(nullptr, obj, &tag) == TCL_OK) return rt.builder.series(tag);
+  if (const auto tag = integerValue(obj)) return rt.builder.series(*tag);
+  // A number is a tag, never a one-word spec: a tag out of range is reported as such.
+  if (isIntegerWord(Tcl_GetString(obj))) a.failArgument(name, integerExpectation(obj) + " (a time series tag)");
   int count = 0;
   Tcl_Obj** items = nullptr;
   if (Tcl_ListObjGetElements(nullptr, obj, &count, &items) != TCL_OK || count == 0)
-    a.fail(a.lastPosition(), name, "expected a time series tag or spec, got \"" +
-                                       std::string(Tcl_GetString(obj)) + "\"");
+    a.failArgument(name, "expected a time series tag or spec");
   ArgReader inner(count, items, "Type ?args?", 0);
   inner.setContext(a.context() + " (" + std::string(name) + ")");
   return parseSeries(rt, inner, false);
