@@ -9,40 +9,21 @@
 #include <vector>
 
 #include "materials/Elastic.h"
-#include "materials/UniaxialMaterial.h"
 #include "tcl/analysis/AnalysisBuilder.h"
 #include "tcl/analysis/CentralDifference.h"
 #include "tcl/analysis/GeneralizedAlpha.h"
 #include "tcl/analysis/LinearAlgorithm.h"
 #include "tcl/analysis/LoadControl.h"
 #include "tcl/analysis/NewtonRaphson.h"
+#include "tcl/analysis/tests/CubicSpring.h"
 #include "tcl/analysis/tests/SpringModel.h"
 #include "tcl/domain/ConstantSeries.h"
 
 namespace dabs::analysis {
 namespace {
 
-/// A hardening cubic spring, stress = k e + c e^3, for Newton iterations with a known sequence.
-class CubicSpring final : public materials::UniaxialMaterial {
- public:
-  CubicSpring(double k, double c) : UniaxialMaterial(1), k_(k), c_(c) {}
-  Status setTrialStrain(double e, double /*rate*/) override {
-    trial_ = e;
-    return Status::Ok;
-  }
-  double getStrain() const override { return trial_; }
-  double getStress() const override { return k_ * trial_ + c_ * trial_ * trial_ * trial_; }
-  double getTangent() const override { return k_ + 3.0 * c_ * trial_ * trial_; }
-  double getInitialTangent() const override { return k_; }
-  void commitState() override { committed_ = trial_; }
-  void revertToLastCommit() override { trial_ = committed_; }
-  void revertToStart() override { trial_ = committed_ = 0.0; }
-  std::unique_ptr<UniaxialMaterial> clone() const override { return std::make_unique<CubicSpring>(*this); }
-
- private:
-  double k_, c_;
-  double trial_ = 0.0, committed_ = 0.0;
-};
+using testing::CubicSpring;
+using testing::dispTest;
 
 /// The spring of SpringModel.h with its load held constant (a step load P0 from t = 0).
 void buildStepLoadedSpring(domain::Domain& domain, double k, double m, double P0) {
@@ -52,10 +33,6 @@ void buildStepLoadedSpring(domain::Domain& domain, double k, double m, double P0
   auto pattern = std::make_unique<domain::PlainPattern>(2, std::make_shared<domain::ConstantSeries>(2, 1.0), 1.0);
   pattern->loads.push_back({2, Eigen::VectorXd::Constant(1, P0)});
   domain.addPattern(std::move(pattern));
-}
-
-std::unique_ptr<ConvergenceTest> dispTest(double tol, int maxIter) {
-  return std::make_unique<ConvergenceTest>(ConvergenceTest::Kind::NormDispIncr, tol, maxIter);
 }
 
 // Average acceleration (Newmark 1/2, 1/4) on an undamped linear SDOF: the amplification matrix is
