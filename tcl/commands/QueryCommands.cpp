@@ -151,12 +151,12 @@ void describeNode(std::ostream& out, const domain::Node& n) {
   out << "\n";
 }
 
-// Tags after `node`/`ele` in `print`: an optional `flag n` (accepted; one layout only), then tags;
-// none means all.
+// Tags after `node`/`ele` in `print`: an optional `flag n`, then tags; none means all. dabs has
+// one layout, OpenSees' default (flag 0); another flag asks for output it cannot give.
 std::vector<int> printTags(ArgReader& a, std::string_view what) {
   if (a.hasMore() && (a.peek() == "flag" || a.peek() == "-flag")) {
-    (void)a.word("flag");
-    (void)a.integer("flag");
+    (void)a.word("flag word");
+    if (a.integer("flag") != 0) a.failArgument("flag", "is not supported: only OpenSees' default layout (flag 0)");
   }
   std::vector<int> tags;
   while (a.hasMore()) tags.push_back(a.integer(what));
@@ -173,10 +173,9 @@ void printCmd(Runtime& rt, ArgReader& a) {
     const std::string word = a.word("what");
     if (word == "node" || word == "-node") nodes = printTags(a, "nodeTag");
     else if (word == "ele" || word == "-ele") eles = printTags(a, "eleTag");
-    else if (word == "integrator" || word == "-integrator" || word == "algorithm" || word == "-algorithm") {
-      while (a.hasMore()) (void)a.word("flag");
-      return;  // nothing to say about strategies beyond the script's own commands
-    } else if (word == "-JSON") a.fail("-JSON output is not supported");
+    else if (word == "integrator" || word == "-integrator" || word == "algorithm" || word == "-algorithm")
+      a.failArgument("what", "is not supported: dabs does not describe its analysis strategies");
+    else if (word == "-JSON") a.fail("-JSON output is not supported");
     else if (word == "file" || word == "-file") target = a.word("fileName");
     else target = word;
   }

@@ -78,6 +78,15 @@ TEST_F(AnalysisCommandsTest, ReactionsWithRayleighAloneAreRefused) {
   ok("reactions -dynamic");
 }
 
+TEST_F(AnalysisCommandsTest, PrintOptionsWithoutOutputAreRefused) {
+  ok("model basic -ndm 1 -ndf 1; node 1 0.0");
+  EXPECT_TRUE(Contains(error("print node flag 2"), "argument 3 (flag) is not supported"));
+  EXPECT_TRUE(Contains(error("print -integrator"), "argument 1 (what) is not supported"));
+  EXPECT_TRUE(Contains(error("print algorithm"), "is not supported: dabs does not describe"));
+  const std::string file = ::testing::TempDir() + "dabs_print_flag0.txt";
+  ok("print " + file + " node flag 0 1");
+}
+
 TEST_F(AnalysisCommandsTest, HugeInlineSeriesTagIsReportedAsATag) {
   ok("model basic -ndm 1 -ndf 1; node 1 0.0");
   const std::string msg = error("pattern Plain 1 99999999999 {}");
