@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 #include "tcl/commands/ArgReader.h"
 
+#include "materials/InputError.h"
+
 #include <algorithm>
 #include <cctype>
 #include <cmath>
@@ -24,20 +26,33 @@ bool parseInteger(Tcl_Obj* obj, int& value) {
   return true;
 }
 
-// What an integer argument expects, saying the range when the token is a decimal integer too
-// large for it.
-std::string integerExpected(Tcl_Obj* obj) {
-  std::string_view t = obj != nullptr ? std::string_view(Tcl_GetString(obj)) : std::string_view{};
+}  // namespace
+
+bool isIntegerWord(std::string_view t) noexcept {
   if (!t.empty() && (t[0] == '-' || t[0] == '+')) t.remove_prefix(1);
-  const bool digits = !t.empty() && std::all_of(t.begin(), t.end(), [](char c) {
+  return !t.empty() && std::all_of(t.begin(), t.end(), [](char c) {
     return std::isdigit(static_cast<unsigned char>(c)) != 0;
   });
-  if (digits)
+}
+
+std::string integerExpectation(Tcl_Obj* obj) {
+  if (obj != nullptr && isIntegerWord(Tcl_GetString(obj)))
     return "expected an integer from " + std::to_string(std::numeric_limits<int>::min()) + " to " +
            std::to_string(std::numeric_limits<int>::max());
   return "expected an integer";
 }
-}  // namespace
+
+std::optional<int> integerValue(Tcl_Obj* obj) {
+  int value = 0;
+  if (obj == nullptr || !parseInteger(obj, value)) return std::nullopt;
+  return value;
+}
+
+std::optional<double> realValue(Tcl_Obj* obj) {
+  double value = 0.0;
+  if (obj == nullptr || !parseReal(obj, value)) return std::nullopt;
+  return value;
+}
 
 bool isOptionWord(std::string_view token) noexcept {
   return token.size() >= 2 && token[0] == '-' &&
@@ -113,6 +128,27 @@ void ArgReader::failArgument(std::string_view name, std::string_view what) const
        std::string(what) + ", got \"" + std::string(text(read->second)) + "\"");
 }
 
+void ArgReader::failArgument(std::string_view name, std::size_t index, std::string_view what) const {
+  const auto* read = readUnder(name);
+  if (read == nullptr || read->second + index >= tokens_.size())
+    fail(std::string(name) + " " + std::string(what));
+  const std::size_t pos = read->second + index;
+  fail(pos, read->first, std::string(what) + ", got \"" + std::string(text(pos)) + "\"");
+}
+
+void ArgReader::failInput(const InputError& error) const {
+  // The field is often the subject of the reason ("node" + "7 does not exist"), so the message
+  // keeps the error's own sentence and adds the token only when the sentence lacks it.
+  const std::size_t pos = error.field().empty() ? 0 : positionOf(error.field());
+  if (pos == 0 || pos >= tokens_.size()) fail(error.what());
+  std::string msg = context_ + ": argument " + std::to_string(pos) + ": " + error.what();
+  const std::string_view token = text(pos);
+  if (std::string_view(error.what()).find(token) == std::string_view::npos)
+    msg += ", got \"" + std::string(token) + "\"";
+  if (!usage_.empty()) msg += "; usage: " + usage_;
+  throw ArgError(msg);
+}
+
 void ArgReader::expected(std::size_t i, std::string_view name, std::string_view what) const {
   if (i >= tokens_.size()) fail(i, name, std::string(what) + ", got nothing (too few arguments)");
   fail(i, name, std::string(what) + ", got \"" + std::string(text(i)) + "\"");
@@ -122,7 +158,7 @@ int ArgReader::integer(std::string_view name) {
   const std::size_t i = nextUnread();
   int value = 0;
   if (i >= tokens_.size() || !parseInteger(tokens_[i], value))
-    expected(i, name, integerExpected(i < tokens_.size() ? tokens_[i] : nullptr));
+    expected(i, name, integerExpectation(i < tokens_.size() ? tokens_[i] : nullptr));
   used_[i] = true;
   last_ = i;
   record(name, i);
@@ -174,7 +210,7 @@ std::vector<int> ArgReader::integers(std::string_view name, std::size_t atLeast)
     const std::size_t i = nextUnread();
     if (!parseInteger(tokens_[i], value)) {
       if (out.size() >= atLeast) break;
-      expected(i, name, integerExpected(tokens_[i]));
+      expected(i, name, integerExpectation(tokens_[i]));
     }
     used_[i] = true;
     last_ = i;
@@ -327,7 +363,7 @@ std::optional<std::pair<int, int>> ArgReader::optionTagRange(std::string_view ke
   for (std::size_t k = 0; k < 2; ++k) {
     const std::size_t j = i + 1 + k;
     if (j >= tokens_.size() || used_[j] || !parseInteger(tokens_[j], ends[k]))
-      expected(j, key, integerExpected(j < tokens_.size() ? tokens_[j] : nullptr) + " (" +
+      expected(j, key, integerExpectation(j < tokens_.size() ? tokens_[j] : nullptr) + " (" +
                            std::string(k == 0 ? "first" : "last") + " tag of " + std::string(key) + ")");
     used_[j] = true;
   }

@@ -10,6 +10,10 @@
 #include <utility>
 #include <vector>
 
+namespace dabs {
+class InputError;
+}
+
 namespace dabs::tcl {
 
 /// A command argument that cannot be used. The message names the command (and type and tag when
@@ -102,6 +106,12 @@ class ArgReader {
   /// Throws an ArgError about the argument read under `name` ("argument N (name) what, got
   /// "token""), or about the command as a whole ("name what") when none was read under it.
   [[noreturn]] void failArgument(std::string_view name, std::string_view what) const;
+  /// Throws an ArgError about the `index`-th value (from 0) of the list read under `name`.
+  [[noreturn]] void failArgument(std::string_view name, std::size_t index, std::string_view what) const;
+  /// Throws an ArgError for a validation error: "argument N: <field reason>, got "token"" at the
+  /// argument read under its field, or "<field reason>" about the command as a whole when the
+  /// field is empty or was not read. The command table reports every escaping InputError so.
+  [[noreturn]] void failInput(const InputError& error) const;
   /// The token at position `pos` (1-based, as positionOf returns), "" past the end.
   std::string_view token(std::size_t pos) const { return pos < tokens_.size() ? text(pos) : ""; }
 
@@ -124,5 +134,17 @@ class ArgReader {
 
 /// True for a token that is an option word: starts with '-' followed by a letter.
 bool isOptionWord(std::string_view token) noexcept;
+
+// The reader's own number rules, for words it does not hand out itself (items of a Tcl list
+// given as one argument, a word that may be a tag or a spec).
+/// `obj` as an int (within 32 bits, never wrapped around), or nullopt.
+std::optional<int> integerValue(Tcl_Obj* obj);
+/// `obj` as a finite real number, or nullopt.
+std::optional<double> realValue(Tcl_Obj* obj);
+/// What an integer word expects: "expected an integer", with the range when `obj` is a decimal
+/// integer too large for an int.
+std::string integerExpectation(Tcl_Obj* obj);
+/// True when `token` is a decimal integer (optionally signed) of any size.
+bool isIntegerWord(std::string_view token) noexcept;
 
 }  // namespace dabs::tcl

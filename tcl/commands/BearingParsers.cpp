@@ -48,7 +48,7 @@ void biaxialMaterialCommand(Runtime& rt, ArgReader& args) {
   args.setUsage(kBiaxialUsage);
   const std::string type = args.word("type");
   if (type != "Yoshida")
-    args.fail(args.lastPosition(), "type", "unknown biaxialMaterial \"" + type + "\" (expected Yoshida)");
+    args.failArgument("type", "is not a known biaxialMaterial (expected Yoshida)");
   args.setUsage(kYoshidaUsage);
   args.setContext("biaxialMaterial " + type);
   const int tag = readNewTag(args, rt.builder.biaxial, "biaxialMaterial");
@@ -72,8 +72,8 @@ std::unique_ptr<elements::Element> parseYoshidaBearing(Runtime& rt, ArgReader& a
   // -Kr Kr: the same rocking stiffness about local y and z; -Kr Kry Krz: one per axis (a pair
   // of bearings under a girder end resists roll far more than the end's bending rotation).
   if (auto kr = args.optionRealList("-Kr")) {
-    if (kr->size() > 2) args.fail("-Kr takes one value (both axes) or two (local y, local z), got " +
-                                  std::to_string(kr->size()));
+    if (kr->size() > 2)
+      args.failArgument("-Kr", 2, "is a third value: -Kr takes one value (both axes) or two (local y, local z)");
     p.Kry = kr->front();
     p.Krz = kr->back();
   }
@@ -95,7 +95,7 @@ std::unique_ptr<elements::Element> parseYoshidaBearing(Runtime& rt, ArgReader& a
     else if (*after == "stop")
       p.afterFailure = YoshidaBearing3d::AfterFailure::Stop;
     else
-      args.fail("-afterFailure expects keep, release or stop, got \"" + *after + "\"");
+      args.failArgument("-afterFailure", "expected keep, release or stop");
   }
   args.finish();
   if (!tr) args.fail("-Tr (total rubber thickness) is required");

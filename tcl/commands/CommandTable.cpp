@@ -66,18 +66,11 @@ int runCommand(Runtime& rt, const CommandEntry& entry, int objc, Tcl_Obj* const 
   } catch (const InputError& e) {
     // A validation error names the field it is about; the reader knows where that field was
     // read, so the message points at the argument without any bookkeeping in the parser.
-    std::string message = args.context() + ": ";
-    const std::size_t pos = e.field().empty() ? 0 : args.positionOf(e.field());
-    if (pos != 0) {
-      message += "argument " + std::to_string(pos) + ": " + e.what();
-      const std::string token(args.token(pos));
-      if (std::string_view(e.what()).find(token) == std::string_view::npos)
-        message += ", got \"" + token + "\"";
-    } else {
-      message += e.what();
+    try {
+      args.failInput(e);
+    } catch (const ArgError& located) {
+      setError(rt.interp, located.what());
     }
-    if (!args.usage().empty()) message += "; usage: " + args.usage();
-    setError(rt.interp, message);
   } catch (const std::bad_alloc&) {
     setError(rt.interp, args.context() + ": out of memory");
   } catch (const std::exception& e) {

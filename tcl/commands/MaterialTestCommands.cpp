@@ -20,12 +20,11 @@ materials::UniaxialMaterial& underTest(Runtime& rt, ArgReader& args) {
 
 void testUniaxialMaterial(Runtime& rt, ArgReader& args) {
   const int tag = args.integer("tag");
-  const std::size_t pos = args.lastPosition();
   args.finish();
   try {
     rt.testMaterial = rt.builder.uniaxialMaterial(tag).clone();
   } catch (const InputError&) {
-    args.fail(pos, "tag", "uniaxialMaterial " + std::to_string(tag) + " does not exist");
+    args.failArgument("tag", "uniaxialMaterial " + std::to_string(tag) + " does not exist");
   }
   Tcl_ResetResult(rt.interp);
 }

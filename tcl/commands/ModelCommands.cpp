@@ -17,12 +17,12 @@ namespace {
 void modelCmd(Runtime& rt, ArgReader& a) {
   const std::string kind = a.word("builder");
   if (kind != "basic" && kind != "Basic" && kind != "BasicBuilder")
-    a.fail(1, "builder", "expected \"basic\", got \"" + kind + "\"");
+    a.failArgument("builder", "expected \"basic\"");
   const int ndm = a.option("-ndm", 0);
-  if (ndm < 1 || ndm > 3) a.fail("-ndm must be 1, 2 or 3");
+  if (ndm < 1 || ndm > 3) a.failArgument("-ndm", "must be 1, 2 or 3");
   const int defaultNdf = ndm == 1 ? 1 : ndm == 2 ? 3 : 6;
   const int ndf = a.option("-ndf", defaultNdf);
-  if (ndf < 1 || ndf > 6) a.fail("-ndf must be 1 to 6");
+  if (ndf < 1 || ndf > 6) a.failArgument("-ndf", "must be 1 to 6");
   a.finish();
   rt.builder.ndm = ndm;
   rt.builder.ndf = ndf;
@@ -35,12 +35,12 @@ void nodeCmd(Runtime& rt, ArgReader& a) {
   Eigen::Vector3d x = Eigen::Vector3d::Zero();
   for (int i = 0; i < rt.builder.ndm; ++i) x(i) = a.real(i == 0 ? "x" : i == 1 ? "y" : "z");
   const int ndf = a.option("-ndf", rt.builder.ndf);
-  if (ndf < 1 || ndf > 6) a.fail("-ndf must be 1 to 6");
+  if (ndf < 1 || ndf > 6) a.failArgument("-ndf", "must be 1 to 6");
   const auto mass = a.optionReals("-mass", static_cast<std::size_t>(ndf));
   a.finish();
   if (mass)
     for (double m : *mass)
-      if (m < 0.0) a.fail("-mass values must not be negative, got " + std::to_string(m));
+      if (m < 0.0) a.failArgument("-mass", "values must not be negative, one is " + std::to_string(m));
   domain::Node& n = rt.domain.addNode(tag, rt.builder.ndm, ndf, x);
   if (mass) {
     Eigen::MatrixXd m = Eigen::MatrixXd::Zero(ndf, ndf);
@@ -55,7 +55,7 @@ void massCmd(Runtime& rt, ArgReader& a) {
   Eigen::MatrixXd m = Eigen::MatrixXd::Zero(n.ndf(), n.ndf());
   for (int i = 0; i < n.ndf(); ++i) {
     m(i, i) = a.real("mass");
-    if (m(i, i) < 0.0) a.fail(a.lastPosition(), "mass", "must not be negative, got " + std::to_string(m(i, i)));
+    if (m(i, i) < 0.0) a.failArgument("mass", "must not be negative");
   }
   a.finish();
   n.setMass(m);
@@ -81,7 +81,7 @@ std::vector<int> readFlags(ArgReader& a, int ndf) {
   std::vector<int> flags;
   for (int i = 0; i < ndf; ++i) {
     const int f = a.integer("constraint flag");
-    if (f != 0 && f != 1) a.fail(a.lastPosition(), "constraint flag", "expected 0 or 1, got " + std::to_string(f));
+    if (f != 0 && f != 1) a.failArgument("constraint flag", "expected 0 or 1");
     flags.push_back(f);
   }
   return flags;
@@ -104,7 +104,7 @@ void fixCoordinate(Runtime& rt, ArgReader& a, int axis) {
   while (a.hasPositional()) {
     flags.push_back(a.integer("constraint flag"));
     if (flags.back() != 0 && flags.back() != 1)
-      a.fail(a.lastPosition(), "constraint flag", "expected 0 or 1, got " + std::to_string(flags.back()));
+      a.failArgument("constraint flag", "expected 0 or 1");
   }
   const double tol = a.option("-tol", 1e-10);
   a.finish();
@@ -140,7 +140,7 @@ void equalDofCmd(Runtime& rt, ArgReader& a) {
   a.finish();
   for (std::size_t i = 0; i < dofs.size(); ++i)
     for (std::size_t j = 0; j < i; ++j)
-      if (dofs[i] == dofs[j]) a.fail(3 + i, "dof", "dof " + std::to_string(dofs[i]) + " is given twice");
+      if (dofs[i] == dofs[j]) a.failArgument("dof", i, "is given twice");
   for (int& d : dofs) --d;
   mp.constrainedDofs = mp.retainedDofs = dofs;
   mp.Ccr = Eigen::MatrixXd::Identity(static_cast<Eigen::Index>(dofs.size()),
@@ -151,7 +151,7 @@ void equalDofCmd(Runtime& rt, ArgReader& a) {
 void rigidLinkCmd(Runtime& rt, ArgReader& a) {
   rt.requireModel("rigidLink");
   const std::string type = a.word("type");
-  if (type != "beam" && type != "bar") a.fail(1, "type", "expected beam or bar, got \"" + type + "\"");
+  if (type != "beam" && type != "bar") a.failArgument("type", "expected beam or bar");
   domain::MPConstraint mp;
   mp.retainedNode = a.integer("rNode");
   mp.constrainedNode = a.integer("cNode");
@@ -213,7 +213,7 @@ void regionCmd(Runtime& rt, ArgReader& a) {
   a.finish();
   if (rayleigh)
     for (double f : *rayleigh)
-      if (f < 0.0) a.fail("-rayleigh factors must not be negative, got " + std::to_string(f));
+      if (f < 0.0) a.failArgument("-rayleigh", "factors must not be negative, one is " + std::to_string(f));
   for (int t : eles) {
     const elements::Element* e = rt.domain.findElement(t);
     if (e == nullptr) throw InputError("-ele", "element " + std::to_string(t) + " does not exist");
@@ -233,7 +233,7 @@ void uniaxialMaterialCmd(Runtime& rt, ArgReader& a) {
   const auto tables = {uniaxialParsers(), contactUniaxialParsers()};
   const UniaxialEntry* entry = findType<UniaxialEntry>(tables, type);
   if (entry == nullptr)
-    a.fail(1, "type", "\"" + type + "\" is not a known material; known: " + typeNames<UniaxialEntry>(tables));
+    a.fail(a.positionOf("type"), "type", "\"" + type + "\" is not a known material; known: " + typeNames<UniaxialEntry>(tables));
   a.setContext("uniaxialMaterial " + type);
   a.setUsage(std::string(entry->usage));
   const int tag = readNewTag(a, rt.builder.uniaxial, "uniaxialMaterial");
@@ -249,7 +249,7 @@ void elementCmd(Runtime& rt, ArgReader& a) {
                        contactElementParsers()};
   const ElementEntry* entry = findType<ElementEntry>(tables, type);
   if (entry == nullptr)
-    a.fail(1, "type", "\"" + type + "\" is not a known element; known: " + typeNames<ElementEntry>(tables));
+    a.fail(a.positionOf("type"), "type", "\"" + type + "\" is not a known element; known: " + typeNames<ElementEntry>(tables));
   a.setContext("element " + type);
   a.setUsage(std::string(entry->usage));
   const int tag = readNewTag(a, rt.domain.elements(), "element");
@@ -285,18 +285,18 @@ void rigidDiaphragmCmd(Runtime& rt, ArgReader& a) {
   const int rNode = a.integer("rNode");
   const std::vector<int> cNodes = a.integers("cNode");
   a.finish();
-  if (perp < 1 || perp > 3) a.fail(1, "perpDirn", "must be 1, 2 or 3, got " + std::to_string(perp));
+  if (perp < 1 || perp > 3) a.failArgument("perpDirn", "must be 1, 2 or 3");
   const domain::Node& r = rt.domain.node(rNode);
   const bool space = r.ndm() == 3 && r.ndf() == 6;
   const bool plane = r.ndm() == 2 && r.ndf() == 3;
-  if (!space && !plane) a.fail(2, "rNode", "must be a 3D node with 6 dofs or a 2D node with 3 dofs");
+  if (!space && !plane) a.failArgument("rNode", "must be a 3D node with 6 dofs or a 2D node with 3 dofs");
   std::vector<domain::MPConstraint> constraints;
   for (std::size_t i = 0; i < cNodes.size(); ++i) {
     const int tag = cNodes[i];
-    if (tag == rNode) a.fail(3 + i, "cNode", "the retained node cannot also be constrained");
+    if (tag == rNode) a.failArgument("cNode", i, "the retained node cannot also be constrained");
     const domain::Node& c = rt.domain.node(tag);
     if (c.ndm() != r.ndm() || c.ndf() != r.ndf())
-      a.fail(3 + i, "cNode", "node " + std::to_string(tag) + " must have the dimension and dofs of rNode");
+      a.failArgument("cNode", i, "node " + std::to_string(tag) + " must have the dimension and dofs of rNode");
     const Eigen::Vector3d d = c.coords() - r.coords();
     domain::MPConstraint mp;
     mp.retainedNode = rNode;
@@ -325,13 +325,13 @@ void rigidDiaphragmCmd(Runtime& rt, ArgReader& a) {
     for (int dof : mp.constrainedDofs) {
       const std::string which = "dof " + std::to_string(dof + 1) + " of node " + std::to_string(tag);
       for (const auto& sp : rt.domain.fixes())
-        if (sp.node == tag && sp.dof == dof) a.fail(3 + i, "cNode", which + " is fixed");
+        if (sp.node == tag && sp.dof == dof) a.failArgument("cNode", i, which + " is fixed");
       for (const auto& other : rt.domain.mps())
         if (other.constrainedNode == tag &&
             std::find(other.constrainedDofs.begin(), other.constrainedDofs.end(), dof) != other.constrainedDofs.end())
-          a.fail(3 + i, "cNode", which + " is already constrained");
+          a.failArgument("cNode", i, which + " is already constrained");
       for (const auto& other : constraints)
-        if (other.constrainedNode == tag) a.fail(3 + i, "cNode", "node " + std::to_string(tag) + " is listed twice");
+        if (other.constrainedNode == tag) a.failArgument("cNode", i, "node " + std::to_string(tag) + " is listed twice");
     }
     constraints.push_back(std::move(mp));
   }

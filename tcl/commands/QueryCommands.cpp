@@ -24,7 +24,7 @@ void nodeVectorQuery(Runtime& rt, ArgReader& a, Getter get) {
     setResult(rt, v);
     return;
   }
-  if (*dof > v.size()) a.fail(2, "dof", "must be 1.." + std::to_string(v.size()) + " (or 0 for all)");
+  if (*dof > v.size()) a.failArgument("dof", "must be 1.." + std::to_string(v.size()) + " (or 0 for all)");
   setResult(rt, v(*dof - 1));
 }
 
@@ -48,19 +48,23 @@ void nodeEigenvectorCmd(Runtime& rt, ArgReader& a) {
   const auto dof = a.optionalInteger("dof");
   a.finish();
   if (mode < 1 || mode > n.eigenvectors.cols())
-    a.fail(2, "mode", "must be 1.." + std::to_string(n.eigenvectors.cols()) + " (run eigen first)");
+    a.failArgument("mode", "must be 1.." + std::to_string(n.eigenvectors.cols()) + " (run eigen first)");
   const Eigen::VectorXd v = n.eigenvectors.col(mode - 1);
   if (!dof) {
     setResult(rt, v);
     return;
   }
-  if (*dof < 1 || *dof > v.size()) a.fail(3, "dof", "must be 1.." + std::to_string(v.size()));
+  if (*dof < 1 || *dof > v.size()) a.failArgument("dof", "must be 1.." + std::to_string(v.size()));
   setResult(rt, v(*dof - 1));
 }
 
 void reactionsCmd(Runtime& rt, ArgReader& a) {
   const bool dynamic = a.flag("-dynamic");
-  (void)a.flag("-rayleigh");
+  // OpenSees' -rayleigh adds the damping forces without the inertia forces; the domain computes
+  // reactions with both (-dynamic) or neither, so the option is refused rather than ignored.
+  if (a.flag("-rayleigh"))
+    a.fail("-rayleigh (damping forces without inertia) is not supported; use -dynamic for reactions "
+           "with inertia and damping forces");
   a.finish();
   rt.domain.calculateNodalReactions(dynamic);
 }
@@ -70,14 +74,14 @@ void eleResponseCmd(Runtime& rt, ArgReader& a) {
   std::vector<std::string> args;
   while (a.hasMore()) args.push_back(a.word("response"));
   const elements::Element* e = rt.domain.findElement(tag);
-  if (e == nullptr) a.fail(1, "eleTag", "element " + std::to_string(tag) + " does not exist");
+  if (e == nullptr) a.failArgument("eleTag", "element " + std::to_string(tag) + " does not exist");
   if (args.empty()) a.fail("needs a response name");
   const auto r = rt.domain.elementResponse(tag, args);
   if (!r) {
     std::string what;
     for (const auto& w : args) what += (what.empty() ? "" : " ") + w;
-    a.fail(2, "response", "\"" + what + "\" is not a response of element " + std::to_string(tag) +
-                              " (" + std::string(e->typeName()) + ")");
+    a.failArgument("response", "\"" + what + "\" is not a response of element " + std::to_string(tag) +
+                                   " (" + std::string(e->typeName()) + ")");
   }
   setResult(rt, *r);
 }
@@ -87,13 +91,13 @@ void eleForceCmd(Runtime& rt, ArgReader& a) {
   const auto dof = a.optionalInteger("dof");
   a.finish();
   const elements::Element* e = rt.domain.findElement(tag);
-  if (e == nullptr) a.fail(1, "eleTag", "element " + std::to_string(tag) + " does not exist");
+  if (e == nullptr) a.failArgument("eleTag", "element " + std::to_string(tag) + " does not exist");
   const Eigen::VectorXd f = e->resistingForce();
   if (!dof) {
     setResult(rt, f);
     return;
   }
-  if (*dof < 1 || *dof > f.size()) a.fail(2, "dof", "must be 1.." + std::to_string(f.size()));
+  if (*dof < 1 || *dof > f.size()) a.failArgument("dof", "must be 1.." + std::to_string(f.size()));
   setResult(rt, f(*dof - 1));
 }
 
@@ -101,7 +105,7 @@ void eleNodesCmd(Runtime& rt, ArgReader& a) {
   const int tag = a.integer("eleTag");
   a.finish();
   const elements::Element* e = rt.domain.findElement(tag);
-  if (e == nullptr) a.fail(1, "eleTag", "element " + std::to_string(tag) + " does not exist");
+  if (e == nullptr) a.failArgument("eleTag", "element " + std::to_string(tag) + " does not exist");
   setResult(rt, e->nodeTags());
 }
 
@@ -147,12 +151,12 @@ void describeNode(std::ostream& out, const domain::Node& n) {
   out << "\n";
 }
 
-// Tags after `node`/`ele` in `print`: an optional `flag n` (accepted; one layout only), then tags;
-// none means all.
+// Tags after `node`/`ele` in `print`: an optional `flag n`, then tags; none means all. dabs has
+// one layout, OpenSees' default (flag 0); another flag asks for output it cannot give.
 std::vector<int> printTags(ArgReader& a, std::string_view what) {
   if (a.hasMore() && (a.peek() == "flag" || a.peek() == "-flag")) {
-    (void)a.word("flag");
-    (void)a.integer("flag");
+    (void)a.word("flag word");
+    if (a.integer("flag") != 0) a.failArgument("flag", "is not supported: only OpenSees' default layout (flag 0)");
   }
   std::vector<int> tags;
   while (a.hasMore()) tags.push_back(a.integer(what));
@@ -169,10 +173,9 @@ void printCmd(Runtime& rt, ArgReader& a) {
     const std::string word = a.word("what");
     if (word == "node" || word == "-node") nodes = printTags(a, "nodeTag");
     else if (word == "ele" || word == "-ele") eles = printTags(a, "eleTag");
-    else if (word == "integrator" || word == "-integrator" || word == "algorithm" || word == "-algorithm") {
-      while (a.hasMore()) (void)a.word("flag");
-      return;  // nothing to say about strategies beyond the script's own commands
-    } else if (word == "-JSON") a.fail("-JSON output is not supported");
+    else if (word == "integrator" || word == "-integrator" || word == "algorithm" || word == "-algorithm")
+      a.failArgument("what", "is not supported: dabs does not describe its analysis strategies");
+    else if (word == "-JSON") a.fail("-JSON output is not supported");
     else if (word == "file" || word == "-file") target = a.word("fileName");
     else target = word;
   }

@@ -4,6 +4,7 @@
 
 #include "materials/InputError.h"
 #include "materials/ResponseArgs.h"
+#include "tcl/commands/CommandTable.h"
 #include "tcl/commands/Registry.h"
 #include "tcl/commands/SeriesParser.h"
 #include "tcl/commands/TclResult.h"
@@ -123,26 +124,42 @@ void driftRecorder(Runtime& rt, ArgReader& a) {
   setResult(rt, rt.domain.addRecorder(std::move(recorder)));
 }
 
+// OpenSees' window recorders draw on screen; dabs opens no windows (its page is `recorder
+// Viewer`), so scripts that also plot run unchanged and this one is noted and skipped.
+void windowRecorder(Runtime& /*rt*/, ArgReader& a) {
+  while (a.hasMore()) (void)a.word("option");
+  if (Tcl_Channel err = Tcl_GetStdChannel(TCL_STDERR); err != nullptr) {
+    const std::string text = a.context() + ": dabs opens no windows; ignored (see recorder Viewer)\n";
+    Tcl_WriteChars(err, text.c_str(), static_cast<int>(text.size()));
+  }
+}
+
+void nodeRecorderType(Runtime& rt, ArgReader& a) { nodeRecorder(rt, a, false); }
+void envelopeNodeRecorderType(Runtime& rt, ArgReader& a) { nodeRecorder(rt, a, true); }
+void elementRecorderType(Runtime& rt, ArgReader& a) { elementRecorder(rt, a, false); }
+void envelopeElementRecorderType(Runtime& rt, ArgReader& a) { elementRecorder(rt, a, true); }
+
+using RecorderParser = void (*)(Runtime& rt, ArgReader& a);
+
+constexpr TypeEntry<RecorderParser> kRecorders[] = {
+    {"Node", "", nodeRecorderType},
+    {"EnvelopeNode", "", envelopeNodeRecorderType},
+    {"Element", "", elementRecorderType},
+    {"EnvelopeElement", "", envelopeElementRecorderType},
+    {"Drift", "", driftRecorder},
+    {"Viewer", "", viewerRecorderCommand},
+    {"plot", "", windowRecorder},
+    {"display", "", windowRecorder},
+};
+
 void recorderCmd(Runtime& rt, ArgReader& a) {
   rt.requireModel("recorder");
   const std::string type = a.word("type");
+  const auto* entry = findType<TypeEntry<RecorderParser>>({kRecorders}, type);
+  if (entry == nullptr)
+    a.failArgument("type", "expected one of " + typeNames<TypeEntry<RecorderParser>>({kRecorders}));
   a.setContext("recorder " + type);
-  if (type == "Node") nodeRecorder(rt, a, false);
-  else if (type == "EnvelopeNode") nodeRecorder(rt, a, true);
-  else if (type == "Element") elementRecorder(rt, a, false);
-  else if (type == "EnvelopeElement") elementRecorder(rt, a, true);
-  else if (type == "Drift") driftRecorder(rt, a);
-  else if (type == "Viewer") viewerRecorderCommand(rt, a);
-  else if (type == "plot" || type == "display") {
-    // OpenSees' window recorders draw on screen; dabs opens no windows (its page is `recorder
-    // Viewer`), so scripts that also plot run unchanged and this one is noted and skipped.
-    while (a.hasMore()) (void)a.word("option");
-    if (Tcl_Channel err = Tcl_GetStdChannel(TCL_STDERR); err != nullptr) {
-      const std::string text = "recorder " + type + ": dabs opens no windows; ignored (see recorder Viewer)\n";
-      Tcl_WriteChars(err, text.c_str(), static_cast<int>(text.size()));
-    }
-  }
-  else a.fail(1, "type", "expected Node, EnvelopeNode, Element, EnvelopeElement, Drift or Viewer, got \"" + type + "\"");
+  entry->parse(rt, a);
 }
 
 void recordCmd(Runtime& rt, ArgReader& a) {

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "tcl/commands/SeriesParser.h"
 
+#include "tcl/commands/CommandTable.h"
 #include "tcl/commands/Registry.h"
 
 #include <cmath>
@@ -81,71 +82,93 @@ std::shared_ptr<const domain::TimeSeries> parsePath(ArgReader& a, int tag) {
   return std::make_shared<domain::PathSeries>(tag, step, std::move(values), factor, startTime, useLast);
 }
 
+using SeriesPtr = std::shared_ptr<const domain::TimeSeries>;
+
+SeriesPtr parseConstant(ArgReader& a, int tag) {
+  const double f = a.option("-factor", 1.0);
+  a.finish();
+  return std::make_shared<domain::ConstantSeries>(tag, f);
+}
+
+SeriesPtr parseLinear(ArgReader& a, int tag) {
+  const double f = a.option("-factor", 1.0);
+  a.finish();
+  return std::make_shared<domain::LinearSeries>(tag, f);
+}
+
+SeriesPtr parseTrig(ArgReader& a, int tag) {
+  const double t0 = a.real("tStart"), t1 = a.real("tEnd"), period = a.real("period");
+  const double f = a.option("-factor", 1.0);
+  const double shift = a.option("-shift", 0.0);
+  const double zeroShift = a.option("-zeroShift", 0.0);
+  a.finish();
+  if (!(period > 0.0)) a.failArgument("period", "must be positive");
+  if (t1 < t0) a.failArgument("tEnd", "must not be before tStart");
+  return std::make_shared<domain::TrigSeries>(tag, t0, t1, period, f, shift, zeroShift);
+}
+
+SeriesPtr parseRectangular(ArgReader& a, int tag) {
+  const double t0 = a.real("tStart"), t1 = a.real("tEnd");
+  const double f = a.option("-factor", 1.0);
+  a.finish();
+  if (t1 < t0) a.failArgument("tEnd", "must not be before tStart");
+  return std::make_shared<domain::RectangularSeries>(tag, t0, t1, f);
+}
+
+SeriesPtr parseNearFaultPulse(ArgReader& a, int tag) {
+  domain::NearFaultPulseSeries::Params p;
+  const auto Tp = a.optionalOption("-Tp"), Vp = a.optionalOption("-Vp"), gamma = a.optionalOption("-gamma");
+  const auto nu = a.optionalOption("-nu"), t0 = a.optionalOption("-t0");
+  p.factor = a.option("-factor", 1.0);
+  p.velocity = a.flag("-velocity");
+  a.finish();
+  if (!Tp || !Vp || !gamma || !nu || !t0) a.fail("needs -Tp, -Vp, -gamma, -nu and -t0");
+  p.Tp = *Tp;
+  p.Vp = *Vp;
+  p.gamma = *gamma;
+  p.nu = *nu;
+  p.t0 = *t0;
+  p.validate();
+  return std::make_shared<domain::NearFaultPulseSeries>(tag, p);
+}
+
+using SeriesParserFn = SeriesPtr (*)(ArgReader& a, int tag);
+
+// OpenSees' names with their synonyms (Sine for Trig, Series for Path, the *Series spellings).
+constexpr TypeEntry<SeriesParserFn> kSeries[] = {
+    {"Constant", "", parseConstant},     {"ConstantSeries", "", parseConstant},
+    {"Linear", "", parseLinear},         {"LinearSeries", "", parseLinear},
+    {"Trig", "", parseTrig},             {"Sine", "", parseTrig},
+    {"TrigSeries", "", parseTrig},       {"Rectangular", "", parseRectangular},
+    {"Path", "", parsePath},             {"Series", "", parsePath},
+    {"PathSeries", "", parsePath},       {"NearFaultPulse", "", parseNearFaultPulse},
+};
+
 }  // namespace
 
 std::shared_ptr<const domain::TimeSeries> parseSeries(Runtime& rt, ArgReader& a, bool withTag) {
   const std::string type = a.word("type");
+  const auto* entry = findType<TypeEntry<SeriesParserFn>>({kSeries}, type);
+  if (entry == nullptr)
+    a.fail(a.positionOf("type"), "type",
+           "\"" + type + "\" is not a known time series (Constant, Linear, Trig, Rectangular, Path, NearFaultPulse)");
   int tag = 0;
   if (withTag) {
     a.setContext(a.context() + " " + type);
     tag = readNewTag(a, rt.builder.timeSeries, "timeSeries");
   }
-  if (type == "Constant" || type == "ConstantSeries") {
-    const double f = a.option("-factor", 1.0);
-    a.finish();
-    return std::make_shared<domain::ConstantSeries>(tag, f);
-  }
-  if (type == "Linear" || type == "LinearSeries") {
-    const double f = a.option("-factor", 1.0);
-    a.finish();
-    return std::make_shared<domain::LinearSeries>(tag, f);
-  }
-  if (type == "Trig" || type == "Sine" || type == "TrigSeries") {
-    const double t0 = a.real("tStart"), t1 = a.real("tEnd"), period = a.real("period");
-    const double f = a.option("-factor", 1.0);
-    const double shift = a.option("-shift", 0.0);
-    const double zeroShift = a.option("-zeroShift", 0.0);
-    a.finish();
-    if (!(period > 0.0)) a.fail("period must be positive");
-    if (t1 < t0) a.fail("tEnd must not be before tStart");
-    return std::make_shared<domain::TrigSeries>(tag, t0, t1, period, f, shift, zeroShift);
-  }
-  if (type == "Rectangular") {
-    const double t0 = a.real("tStart"), t1 = a.real("tEnd");
-    const double f = a.option("-factor", 1.0);
-    a.finish();
-    if (t1 < t0) a.fail("tEnd must not be before tStart");
-    return std::make_shared<domain::RectangularSeries>(tag, t0, t1, f);
-  }
-  if (type == "Path" || type == "Series" || type == "PathSeries") return parsePath(a, tag);
-  if (type == "NearFaultPulse") {
-    domain::NearFaultPulseSeries::Params p;
-    const auto Tp = a.optionalOption("-Tp"), Vp = a.optionalOption("-Vp"), gamma = a.optionalOption("-gamma");
-    const auto nu = a.optionalOption("-nu"), t0 = a.optionalOption("-t0");
-    p.factor = a.option("-factor", 1.0);
-    p.velocity = a.flag("-velocity");
-    a.finish();
-    if (!Tp || !Vp || !gamma || !nu || !t0) a.fail("needs -Tp, -Vp, -gamma, -nu and -t0");
-    p.Tp = *Tp;
-    p.Vp = *Vp;
-    p.gamma = *gamma;
-    p.nu = *nu;
-    p.t0 = *t0;
-    p.validate();
-    return std::make_shared<domain::NearFaultPulseSeries>(tag, p);
-  }
-  a.fail("\"" + type + "\" is not a known time series (Constant, Linear, Trig, Rectangular, Path, NearFaultPulse)");
+  return entry->parse(a, tag);
 }
 
 std::shared_ptr<const domain::TimeSeries> seriesArgument(Runtime& rt, ArgReader& a, std::string_view name) {
   Tcl_Obj* obj = a.object(name);
-  int tag = 0;
-  if (Tcl_GetIntFromObj(nullptr, obj, &tag) == TCL_OK) return rt.builder.series(tag);
+  if (const auto tag = integerValue(obj)) return rt.builder.series(*tag);
+  // A number is a tag, never a one-word spec: a tag out of range is reported as such.
+  if (isIntegerWord(Tcl_GetString(obj))) a.failArgument(name, integerExpectation(obj) + " (a time series tag)");
   int count = 0;
   Tcl_Obj** items = nullptr;
   if (Tcl_ListObjGetElements(nullptr, obj, &count, &items) != TCL_OK || count == 0)
-    a.fail(a.lastPosition(), name, "expected a time series tag or spec, got \"" +
-                                       std::string(Tcl_GetString(obj)) + "\"");
+    a.failArgument(name, "expected a time series tag or spec");
   ArgReader inner(count, items, "Type ?args?", 0);
   inner.setContext(a.context() + " (" + std::string(name) + ")");
   return parseSeries(rt, inner, false);

@@ -4,6 +4,7 @@
 
 #include "tcl/commands/UniaxialParsers.h"
 
+#include <initializer_list>
 #include <string>
 #include <string_view>
 #include <utility>
@@ -30,58 +31,26 @@ namespace {
 
 using namespace dabs::materials;
 
-/// Reads values while remembering where each named value stood, so that an InputError from
-/// Params::validate() is reported at the argument the user typed.
-class Tracker {
- public:
-  explicit Tracker(ArgReader& args) : args_(args) {}
-
-  double real(const char* name) {
-    const double v = args_.real(name);
-    positions_.emplace_back(name, args_.lastPosition());
-    return v;
-  }
-  std::optional<double> optionalReal(const char* name) {
-    auto v = args_.optionalReal(name);
-    if (v) positions_.emplace_back(name, args_.lastPosition());
-    return v;
-  }
-  /// Either all of `names` follow (as numbers) or none does.
-  bool optionalGroup(std::initializer_list<double*> out, std::initializer_list<const char*> names) {
-    if (!args_.hasPositional()) return false;
-    auto value = out.begin();
-    for (const char* name : names) **value++ = real(name);
-    return true;
-  }
-  /// Validates `p`; an InputError becomes an ArgError at the offending argument.
-  template <class P>
-  void validate(const P& p) {
-    try {
-      p.validate();
-    } catch (const InputError& e) {
-      for (const auto& [name, pos] : positions_)
-        if (name == e.field()) args_.fail(pos, name, e.reason());
-      args_.fail(e.what());
-    }
-  }
-
- private:
-  ArgReader& args_;
-  std::vector<std::pair<std::string, std::size_t>> positions_;
-};
+/// Either all of `names` follow (as numbers) or none does; true when they did.
+bool optionalGroup(ArgReader& args, std::initializer_list<double*> out,
+                   std::initializer_list<const char*> names) {
+  if (!args.hasPositional()) return false;
+  auto value = out.begin();
+  for (const char* name : names) **value++ = args.real(name);
+  return true;
+}
 
 /// Reads the component tags of Parallel/Series and looks each prototype up.
 std::vector<const UniaxialMaterial*> readComponents(ArgReader& args,
                                                     const domain::ModelBuilder& builder,
                                                     std::size_t atLeast) {
   const std::vector<int> tags = args.integers("matTag", atLeast);
-  const std::size_t first = args.lastPosition() + 1 - tags.size();
   std::vector<const UniaxialMaterial*> out;
   for (std::size_t i = 0; i < tags.size(); ++i) {
     try {
       out.push_back(&builder.uniaxialMaterial(tags[i]));
     } catch (const InputError&) {
-      args.fail(first + i, "matTag", "uniaxialMaterial " + std::to_string(tags[i]) + " does not exist");
+      args.failArgument("matTag", i, "uniaxialMaterial " + std::to_string(tags[i]) + " does not exist");
     }
   }
   return out;
@@ -90,114 +59,105 @@ std::vector<const UniaxialMaterial*> readComponents(ArgReader& args,
 }  // namespace
 
 MaterialPtr parseElastic(ArgReader& args, int tag) {
-  Tracker t(args);
   Elastic::Params p;
-  p.E = t.real("E");
-  p.eta = t.optionalReal("eta").value_or(0.0);
-  p.Eneg = t.optionalReal("Eneg");
+  p.E = args.real("E");
+  p.eta = args.optionalReal("eta").value_or(0.0);
+  p.Eneg = args.optionalReal("Eneg");
   args.finish();
-  t.validate(p);
+  p.validate();
   return std::make_unique<Elastic>(tag, p);
 }
 
 MaterialPtr parseElasticPP(ArgReader& args, int tag) {
-  Tracker t(args);
   ElasticPP::Params p;
-  p.E = t.real("E");
-  p.epsyP = t.real("epsyP");
-  p.epsyN = t.optionalReal("epsyN");
-  p.eps0 = t.optionalReal("eps0").value_or(0.0);
+  p.E = args.real("E");
+  p.epsyP = args.real("epsyP");
+  p.epsyN = args.optionalReal("epsyN");
+  p.eps0 = args.optionalReal("eps0").value_or(0.0);
   args.finish();
-  t.validate(p);
+  p.validate();
   return std::make_unique<ElasticPP>(tag, p);
 }
 
 MaterialPtr parseElasticPPGap(ArgReader& args, int tag) {
-  Tracker t(args);
   ElasticPPGap::Params p;
-  p.E = t.real("E");
-  p.Fy = t.real("Fy");
-  p.gap = t.real("gap");
+  p.E = args.real("E");
+  p.Fy = args.real("Fy");
+  p.gap = args.real("gap");
   auto isDamage = [&] { return args.peek() == "damage" || args.peek() == "Damage"; };
-  if (!isDamage()) p.eta = t.optionalReal("eta").value_or(0.0);
+  if (!isDamage()) p.eta = args.optionalReal("eta").value_or(0.0);
   if (isDamage()) {
     args.word("damage");
     p.damage = true;
   }
   args.finish();
-  t.validate(p);
+  p.validate();
   return std::make_unique<ElasticPPGap>(tag, p);
 }
 
 MaterialPtr parseSteel01(ArgReader& args, int tag) {
-  Tracker t(args);
   Steel01::Params p;
-  p.Fy = t.real("Fy");
-  p.E0 = t.real("E0");
-  p.b = t.real("b");
-  t.optionalGroup({&p.a1, &p.a2, &p.a3, &p.a4}, {"a1", "a2", "a3", "a4"});
+  p.Fy = args.real("Fy");
+  p.E0 = args.real("E0");
+  p.b = args.real("b");
+  optionalGroup(args, {&p.a1, &p.a2, &p.a3, &p.a4}, {"a1", "a2", "a3", "a4"});
   args.finish();
-  t.validate(p);
+  p.validate();
   return std::make_unique<Steel01>(tag, p);
 }
 
 MaterialPtr parseSteel02(ArgReader& args, int tag) {
-  Tracker t(args);
   Steel02::Params p;
-  p.Fy = t.real("Fy");
-  p.E = t.real("E");
-  p.b = t.real("b");
-  if (t.optionalGroup({&p.R0, &p.cR1, &p.cR2}, {"R0", "cR1", "cR2"})) {
-    if (t.optionalGroup({&p.a1, &p.a2, &p.a3, &p.a4}, {"a1", "a2", "a3", "a4"}))
-      p.sigInit = t.optionalReal("sigInit").value_or(0.0);
+  p.Fy = args.real("Fy");
+  p.E = args.real("E");
+  p.b = args.real("b");
+  if (optionalGroup(args, {&p.R0, &p.cR1, &p.cR2}, {"R0", "cR1", "cR2"})) {
+    if (optionalGroup(args, {&p.a1, &p.a2, &p.a3, &p.a4}, {"a1", "a2", "a3", "a4"}))
+      p.sigInit = args.optionalReal("sigInit").value_or(0.0);
   }
   args.finish();
-  t.validate(p);
+  p.validate();
   return std::make_unique<Steel02>(tag, p);
 }
 
 MaterialPtr parseConcrete01(ArgReader& args, int tag) {
-  Tracker t(args);
   Concrete01::Params p;
-  p.fpc = t.real("fpc");
-  p.epsc0 = t.real("epsc0");
-  p.fpcu = t.real("fpcu");
-  p.epsU = t.real("epsU");
+  p.fpc = args.real("fpc");
+  p.epsc0 = args.real("epsc0");
+  p.fpcu = args.real("fpcu");
+  p.epsU = args.real("epsU");
   args.finish();
-  t.validate(p);
+  p.validate();
   return std::make_unique<Concrete01>(tag, p);
 }
 
 MaterialPtr parseConcrete02(ArgReader& args, int tag) {
-  Tracker t(args);
-  const double fpc = t.real("fpc");
-  const double epsc0 = t.real("epsc0");
-  const double fpcu = t.real("fpcu");
-  const double epsU = t.real("epsU");
+  const double fpc = args.real("fpc");
+  const double epsc0 = args.real("epsc0");
+  const double fpcu = args.real("fpcu");
+  const double epsU = args.real("epsU");
   auto p = Concrete02::Params::withDefaults(fpc, epsc0, fpcu, epsU);
-  t.optionalGroup({&p.lambda, &p.ft, &p.Ets}, {"lambda", "ft", "Ets"});
+  optionalGroup(args, {&p.lambda, &p.ft, &p.Ets}, {"lambda", "ft", "Ets"});
   args.finish();
-  t.validate(p);
+  p.validate();
   return std::make_unique<Concrete02>(tag, p);
 }
 
 MaterialPtr parseViscous(ArgReader& args, int tag) {
-  Tracker t(args);
   Viscous::Params p;
-  p.C = t.real("C");
-  p.alpha = t.real("alpha");
-  p.minVel = t.optionalReal("minVel").value_or(p.minVel);
+  p.C = args.real("C");
+  p.alpha = args.real("alpha");
+  p.minVel = args.optionalReal("minVel").value_or(p.minVel);
   args.finish();
-  t.validate(p);
+  p.validate();
   return std::make_unique<Viscous>(tag, p);
 }
 
 MaterialPtr parseENT(ArgReader& args, int tag) {
-  Tracker t(args);
   ENT::Params p;
-  p.E = t.real("E");
+  p.E = args.real("E");
   args.finish();
-  t.validate(p);
+  p.validate();
   return std::make_unique<ENT>(tag, p);
 }
 
@@ -206,11 +166,7 @@ MaterialPtr parseParallel(ArgReader& args, int tag, const domain::ModelBuilder& 
   p.components = readComponents(args, builder, 1);
   if (auto f = args.optionRealList("-factors")) p.factors = std::move(*f);
   args.finish();
-  try {
-    p.validate();
-  } catch (const InputError& e) {
-    args.fail(e.what());
-  }
+  p.validate();
   return std::make_unique<Parallel>(tag, p);
 }
 
@@ -218,11 +174,7 @@ MaterialPtr parseSeries(ArgReader& args, int tag, const domain::ModelBuilder& bu
   Series::Params p;
   p.components = readComponents(args, builder, 2);
   args.finish();
-  try {
-    p.validate();
-  } catch (const InputError& e) {
-    args.fail(e.what());
-  }
+  p.validate();
   return std::make_unique<Series>(tag, p);
 }
 

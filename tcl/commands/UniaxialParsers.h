@@ -3,8 +3,8 @@
 
 // Parsers behind the `uniaxialMaterial` rows of UniaxialParsers.cpp, exposed so that unit tests
 // can call them with a bare ModelBuilder (no Runtime, no dispatcher). Each reads the arguments
-// after the tag, validates the Params (an InputError becomes an ArgError naming the argument's
-// position) and calls args.finish().
+// after the tag, calls args.finish() and validates the Params; a validation InputError propagates
+// and is reported at the argument read under its field (ArgReader::failInput).
 
 #include <memory>
 

@@ -3,6 +3,7 @@
 #include "tcl/commands/ViewerCommands.h"
 
 #include <memory>
+#include <optional>
 #include <string>
 #include <type_traits>
 
@@ -35,20 +36,23 @@ std::vector<std::string> listWords(Runtime& rt, const ArgReader& a, const std::s
   return words;
 }
 
-/// The whole word read as an int or a double; fails with the reader's context otherwise.
+/// The word read by the ArgReader's rules as an int or a double; fails with the reader's context
+/// otherwise.
 template <class T>
 T toNumber(const ArgReader& a, const std::string& word, const std::string& what) {
-  std::size_t used = 0;
-  T v{};
-  try {
-    if constexpr (std::is_same_v<T, int>) v = std::stoi(word, &used);
-    else v = std::stod(word, &used);
-  } catch (const std::exception&) {
-    used = 0;
+  Tcl_Obj* obj = Tcl_NewStringObj(word.c_str(), static_cast<int>(word.size()));
+  Tcl_IncrRefCount(obj);
+  std::optional<T> v;
+  std::string expected = "expected a number";
+  if constexpr (std::is_same_v<T, int>) {
+    v = integerValue(obj);
+    expected = integerExpectation(obj);
+  } else {
+    v = realValue(obj);
   }
-  if (used == 0 || used != word.size())
-    a.fail(what + (std::is_same_v<T, int> ? " expected an integer" : " expected a number") + ", got \"" + word + "\"");
-  return v;
+  Tcl_DecrRefCount(obj);
+  if (!v) a.fail(what + " " + expected + ", got \"" + word + "\"");
+  return *v;
 }
 int toInteger(const ArgReader& a, const std::string& word, const std::string& what) {
   return toNumber<int>(a, word, what);

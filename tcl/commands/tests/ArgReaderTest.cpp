@@ -9,6 +9,8 @@
 #include <string>
 #include <vector>
 
+#include "materials/InputError.h"
+
 namespace dabs::tcl {
 namespace {
 
@@ -90,6 +92,47 @@ TEST(ArgReaderTest, ListsRecordTheirFirstValue) {
   EXPECT_EQ(args.positionOf("flags"), 2u);
   EXPECT_TRUE(args.optionIntegerList("-tags").has_value());
   EXPECT_EQ(args.positionOf("tags"), 6u);
+}
+
+TEST(ArgReaderTest, FailArgumentWithAnIndexPointsIntoAList) {
+  Words w{"equalDOF", "1", "2", "1", "3", "1"};
+  ArgReader args(w.count(), w.data(), "equalDOF rNode cNode dofs..");
+  args.integer("rNode");
+  args.integer("cNode");
+  (void)args.integers("dof");
+  std::string message;
+  try {
+    args.failArgument("dof", 2, "is given twice");
+  } catch (const ArgError& e) {
+    message = e.what();
+  }
+  EXPECT_EQ(message, "equalDOF: argument 5 (dof) is given twice, got \"1\"; usage: equalDOF rNode cNode dofs..");
+}
+
+std::string inputFailure(const ArgReader& args, const InputError& error) {
+  try {
+    args.failInput(error);
+  } catch (const ArgError& e) {
+    return e.what();
+  }
+  return "no error";
+}
+
+TEST(ArgReaderTest, FailInputKeepsTheErrorsSentenceAtItsArgument) {
+  Words w{"node", "7", "-mass", "-2.0"};
+  ArgReader args(w.count(), w.data(), "node tag ?-mass m?");
+  args.integer("tag");
+  (void)args.optionReals("-mass", 1);
+  // The field is the subject of the sentence; the token is added unless the sentence has it.
+  EXPECT_EQ(inputFailure(args, InputError("mass", "must not be negative")),
+            "node: argument 3: mass must not be negative, got \"-2.0\"; usage: node tag ?-mass m?");
+  EXPECT_EQ(inputFailure(args, InputError("tag", "7 already exists")),
+            "node: argument 1: tag 7 already exists; usage: node tag ?-mass m?");
+  // No field, or one never read: the command as a whole.
+  EXPECT_EQ(inputFailure(args, InputError("", "the model is empty")),
+            "node: the model is empty; usage: node tag ?-mass m?");
+  EXPECT_EQ(inputFailure(args, InputError("ndf", "must be 1 to 6")),
+            "node: ndf must be 1 to 6; usage: node tag ?-mass m?");
 }
 
 }  // namespace

@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "materials/Concrete02.h"
+#include "materials/InputError.h"
 #include "materials/ElasticPPGap.h"
 #include "materials/Steel01.h"
 #include "materials/Steel02.h"
@@ -57,9 +58,16 @@ class UniaxialParsersTest : public ::testing::Test {
   }
 
   /// The error message of parsing `line`, or "" when it parses.
+  /// A validation error is reported as the command table reports it (ArgReader::failInput).
   std::string error(ParseFn fn, const std::string& line) {
     try {
-      parse(fn, line);
+      int tag = 0;
+      ArgReader args = reader(line, tag);
+      try {
+        fn(args, tag);
+      } catch (const InputError& e) {
+        args.failInput(e);
+      }
     } catch (const ArgError& e) {
       return e.what();
     }
@@ -71,7 +79,11 @@ class UniaxialParsersTest : public ::testing::Test {
     try {
       int tag = 0;
       ArgReader args = reader(line, tag);
-      fn(args, tag, builder_);
+      try {
+        fn(args, tag, builder_);
+      } catch (const InputError& e) {
+        args.failInput(e);
+      }
     } catch (const ArgError& e) {
       return e.what();
     }
@@ -122,15 +134,15 @@ TEST_F(UniaxialParsersTest, ErrorsNameTheArgument) {
   const std::string bad = error(uniaxial::parseSteel02, "uniaxialMaterial Steel02 7 abc 2e5 0.01");
   EXPECT_TRUE(Contains(bad, "uniaxialMaterial Steel02 7: argument 3 (Fy) expected a number"));
   EXPECT_TRUE(Contains(bad, "usage: uniaxialMaterial Steel02 tag Fy E b"));
-  EXPECT_TRUE(Contains(error(uniaxial::parseSteel02, "uniaxialMaterial Steel02 7 -400 2e5 0.01"), "argument 3 (Fy) must be positive"));
+  EXPECT_TRUE(Contains(error(uniaxial::parseSteel02, "uniaxialMaterial Steel02 7 -400 2e5 0.01"), "argument 3: Fy must be positive, got \"-400\""));
   EXPECT_TRUE(Contains(error(uniaxial::parseSteel02, "uniaxialMaterial Steel02 7 400 2e5 0.01 18"), "(cR1)"));
   EXPECT_TRUE(Contains(error(uniaxial::parseSteel01, "uniaxialMaterial Steel01 7 400 2e5 0.01 0.1 5"), "(a3)"));
   EXPECT_TRUE(Contains(error(uniaxial::parseConcrete01,
-                    "uniaxialMaterial Concrete01 4 -30 -0.002 -6 -0.001"), "argument 6 (epsU) must exceed epsc0"));
+                    "uniaxialMaterial Concrete01 4 -30 -0.002 -6 -0.001"), "argument 6: epsU must exceed epsc0"));
   EXPECT_TRUE(Contains(error(uniaxial::parseConcrete02,
                     "uniaxialMaterial Concrete02 4 -30 -0.002 -6 -0.006 0.1 3"), "(Ets)"));
   EXPECT_TRUE(Contains(error(uniaxial::parseElastic, "uniaxialMaterial Elastic 1 100 1 2 3"), "unexpected argument \"3\""));
-  EXPECT_TRUE(Contains(error(uniaxial::parseViscous, "uniaxialMaterial Viscous 1 10 -1"), "argument 4 (alpha) must be positive"));
+  EXPECT_TRUE(Contains(error(uniaxial::parseViscous, "uniaxialMaterial Viscous 1 10 -1"), "argument 4: alpha must be positive, got \"-1\""));
   EXPECT_TRUE(Contains(error(uniaxial::parseENT, "uniaxialMaterial ENT 1"), "(E)"));
 }
 
@@ -144,7 +156,7 @@ TEST_F(UniaxialParsersTest, ElasticPPGapDamageWord) {
   EXPECT_TRUE(dynamic_cast<const materials::ElasticPPGap&>(*c).params().damage);
   EXPECT_TRUE(Contains(error(uniaxial::parseElasticPPGap,
                     "uniaxialMaterial ElasticPPGap 9 1000 5 0.002 0.1 broken"), "unexpected argument \"broken\""));
-  EXPECT_TRUE(Contains(error(uniaxial::parseElasticPPGap, "uniaxialMaterial ElasticPPGap 9 1000 5 0.002 1.5"), "argument 6 (eta) must be less than 1"));
+  EXPECT_TRUE(Contains(error(uniaxial::parseElasticPPGap, "uniaxialMaterial ElasticPPGap 9 1000 5 0.002 1.5"), "argument 6: eta must be less than 1, got \"1.5\""));
 }
 
 TEST_F(UniaxialParsersTest, Concrete02DefaultsAsOpenSees) {

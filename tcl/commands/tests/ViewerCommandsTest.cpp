@@ -42,5 +42,16 @@ TEST_F(ViewerCommandsTest, ErrorsNameTheOptionAndWhatWasExpected) {
   EXPECT_EQ(ok("llength [getNodeTags]"), "3");
 }
 
+TEST_F(ViewerCommandsTest, PlotIndicesAreWholeIntegersByTheReadersRules) {
+  ok(viewer("-plots {{d node 2 1 disp}}"));
+  EXPECT_NE(error(viewer("-plots {{d node 2 1.5 disp}}")).find("dof expected an integer, got \"1.5\""),
+            std::string::npos);
+  EXPECT_NE(error(viewer("-plots {{d node 99999999999 1 disp}}"))
+                .find("tag expected an integer from -2147483648 to 2147483647, got \"99999999999\""),
+            std::string::npos);
+  EXPECT_NE(error(viewer("-plots {{f ele 7 force 2.0}}")).find("component expected an integer"),
+            std::string::npos);
+}
+
 }  // namespace
 }  // namespace dabs::tcl::testing
