@@ -65,8 +65,15 @@ void ForceBeamColumn<Ndm>::initialize(const NodalCoordinates& x) {
   if (!lu.isInvertible())
     throw InputError("integration", "gives a singular element flexibility (too few points?)");
   s.kb = lu.inverse();
-  committed_ = trial_ = s;
+  virgin_ = s;
   this->k0_ = this->transf_->initialGlobalStiffness(s.kb);
+  startFromVirginState();
+}
+
+template <int Ndm>
+void ForceBeamColumn<Ndm>::startFromVirginState() {
+  committed_ = trial_ = virgin_;
+  trialIsCommitted_ = true;
   this->uTrial_.setZero();
   this->uCommitted_.setZero();
   this->transf_->update(this->uTrial_);
@@ -201,24 +208,8 @@ template <int Ndm>
 void ForceBeamColumn<Ndm>::revertToStart() {
   this->transf_->revertToStart();
   for (auto& p : this->points_) p.section->revertToStart();
-  State s;
-  const double length = this->transf_->initialLength();
-  for (std::size_t i = 0; i < this->points_.size(); ++i) {
-    SectionMatrix f;
-    (void)invert(this->points_[i].section->getInitialTangent(), f);
-    s.fs[i] = f;
-    s.e[i] = this->points_[i].section->getDeformation();
-    s.sr[i] = this->points_[i].section->getStressResultant();
-  }
-  (void)length;
-  s.kb = fe_.inverse();
-  committed_ = trial_ = s;
-  trialIsCommitted_ = true;
-  this->uTrial_.setZero();
-  this->uCommitted_.setZero();
-  this->transf_->update(this->uTrial_);
-  finish();
-  this->kc_ = this->k_;
+  // The sections are back at their virgin states, whose flexibilities initialize() inverted.
+  startFromVirginState();
 }
 
 template <int Ndm>

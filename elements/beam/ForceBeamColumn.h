@@ -71,6 +71,8 @@ class ForceBeamColumn final : public SectionBeamColumn<Ndm> {
   Status iterate(State& s, const Basic& target) const;
   Status solve(const Basic& target);
   void finish();
+  /// Trial and committed states at the virgin state formed by initialize() (no deformation).
+  void startFromVirginState();
 
   int maxIter_;
   double tol_;
@@ -79,6 +81,7 @@ class ForceBeamColumn final : public SectionBeamColumn<Ndm> {
   /// Section forces of the member loads in the basic system, per point (empty without loads).
   std::vector<SectionVector> sp_;
   State trial_, committed_;
+  State virgin_;  ///< the state at zero deformation, formed once by initialize()
   bool trialIsCommitted_ = true;  ///< trial_ equals committed_ (no update since commit/revert)
 };
 

@@ -152,6 +152,31 @@ TEST(ForceBeamColumnTest, TangentMatchesFiniteDifferencesWhenYielding2d) {
   }
 }
 
+TEST(ForceBeamColumnTest, RevertToStartAfterYieldingEqualsAFreshElement) {
+  // After a committed plastic excursion, revertToStart must give back the element as built:
+  // no force, the initial tangent, and then the same response as a new element on a new path.
+  const auto mat = plastic();
+  const auto sec = rect<2>(*mat);
+  const Eigen::VectorXd zero = Eigen::VectorXd::Zero(6);
+  Eigen::VectorXd yielded(6), next(6);
+  yielded << 0.0, 0.0, 0.03, 2e-4, 0.0, -0.02;
+  next << 0.0, 0.0, -0.01, -1e-4, 0.0, 0.015;
+  ForceBeamColumn2d used(1, 1, 2, points<2>(*sec, 5), std::make_unique<LinearTransf2d>(1), 0.0);
+  ForceBeamColumn2d fresh(1, 1, 2, points<2>(*sec, 5), std::make_unique<LinearTransf2d>(1), 0.0);
+  for (ForceBeamColumn2d* e : {&used, &fresh})
+    e->initialize({Eigen::Vector3d::Zero(), Eigen::Vector3d(kL, 0, 0)});
+  ASSERT_TRUE(ok(used.update(TrialState{yielded, zero, zero}.kinematics())));
+  used.commitState();
+  ASSERT_GT(std::abs((*used.response(std::vector<std::string>{"plasticDeformation"}))(1)), 1e-4);
+  used.revertToStart();
+  EXPECT_LT(used.resistingForce().norm(), 1e-9);
+  EXPECT_LT(testing::relativeDifference(used.tangentStiff(), fresh.initialStiff()), 1e-12);
+  for (ForceBeamColumn2d* e : {&used, &fresh})
+    ASSERT_TRUE(ok(e->update(TrialState{next, zero, zero}.kinematics())));
+  EXPECT_LT((used.resistingForce() - fresh.resistingForce()).norm(),
+            1e-12 * fresh.resistingForce().norm());
+}
+
 TEST(ForceBeamColumnTest, TangentMatchesFiniteDifferencesWhenYielding3d) {
   const auto mat = plastic();
   const auto sec = rect<3>(*mat);
