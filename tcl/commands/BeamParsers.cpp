@@ -4,6 +4,7 @@
 // dispBeamColumn and zeroLengthSection. Syntax follows OpenSees (OpenSees/OpenSees:SRC/
 // coordTransformation/TclGeomTransfCommand.cpp, SRC/element/elasticBeamColumn/
 // TclElasticBeamCommand.cpp, SRC/element/forceBeamColumn/TclForceBeamColumnCommand.cpp).
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <string>
@@ -87,13 +88,36 @@ constexpr const char* kGeomTransfUsage2d = "geomTransf Linear|PDelta|Corotationa
 constexpr const char* kGeomTransfUsage3d =
     "geomTransf Linear|PDelta|Corotational tag vecxzX vecxzY vecxzZ";
 
+/// A transformation type: its 2D and 3D constructors.
+struct TransfType {
+  std::string_view name;
+  std::unique_ptr<CrdTransf> (*make2d)(int tag);
+  std::unique_ptr<CrdTransf> (*make3d)(int tag, const Eigen::Vector3d& vecxz);
+};
+
+template <class T2, class T3>
+constexpr TransfType transfType(std::string_view name) {
+  return {name, [](int tag) -> std::unique_ptr<CrdTransf> { return std::make_unique<T2>(tag); },
+          [](int tag, const Eigen::Vector3d& v) -> std::unique_ptr<CrdTransf> {
+            return std::make_unique<T3>(tag, v);
+          }};
+}
+
+const std::array kTransfTypes{
+    transfType<elements::LinearTransf2d, elements::LinearTransf3d>("Linear"),
+    transfType<elements::PDeltaTransf2d, elements::PDeltaTransf3d>("PDelta"),
+    transfType<elements::CorotationalTransf2d, elements::CorotationalTransf3d>("Corotational"),
+};
+
 // geomTransf Linear|PDelta|Corotational tag ?vecxz(3D)?
 void geomTransfCommand(Runtime& rt, ArgReader& args) {
   rt.requireModel("geomTransf");
   const int ndm = rt.builder.ndm;
   args.setUsage(ndm == 2 ? kGeomTransfUsage2d : kGeomTransfUsage3d);
   const std::string type = args.word("type");
-  if (type != "Linear" && type != "PDelta" && type != "Corotational")
+  const auto found = std::find_if(kTransfTypes.begin(), kTransfTypes.end(),
+                                  [&](const TransfType& t) { return t.name == type; });
+  if (found == kTransfTypes.end())
     args.fail(args.lastPosition(), "type", "unknown transformation \"" + type +
                                                "\" (expected Linear, PDelta or Corotational)");
   args.setContext("geomTransf " + type);
@@ -104,24 +128,14 @@ void geomTransfCommand(Runtime& rt, ArgReader& args) {
   if (ndm == 2) {
     if (args.optionRealList("-jntOffset")) args.fail("-jntOffset (joint offsets) is not supported");
     args.finish();
-    if (type == "Linear")
-      transf = std::make_unique<elements::LinearTransf2d>(tag);
-    else if (type == "PDelta")
-      transf = std::make_unique<elements::PDeltaTransf2d>(tag);
-    else
-      transf = std::make_unique<elements::CorotationalTransf2d>(tag);
+    transf = found->make2d(tag);
   } else {
     const std::vector<double> v = args.reals("vecxz", 3, true);
     const Eigen::Vector3d vecxz(v[0], v[1], v[2]);
     if (args.optionRealList("-jntOffset")) args.fail("-jntOffset (joint offsets) is not supported");
     args.finish();
     if (!(vecxz.norm() > 0.0)) throw InputError("vecxz", "must be a nonzero vector");
-    if (type == "Linear")
-      transf = std::make_unique<elements::LinearTransf3d>(tag, vecxz);
-    else if (type == "PDelta")
-      transf = std::make_unique<elements::PDeltaTransf3d>(tag, vecxz);
-    else
-      transf = std::make_unique<elements::CorotationalTransf3d>(tag, vecxz);
+    transf = found->make3d(tag, vecxz);
   }
   rt.builder.transforms[tag] = std::move(transf);
   Tcl_SetObjResult(rt.interp, Tcl_NewIntObj(tag));

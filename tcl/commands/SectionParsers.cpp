@@ -2,6 +2,7 @@
 // Tcl parsers for cross-sections: `section Fiber` with its `fiber`, `patch` and `layer` body
 // commands, `section Elastic`, `section Aggregator` and `section Uniaxial`. Syntax follows
 // OpenSees (OpenSees/OpenSees:SRC/material/section/TclModelBuilderSectionCommand.cpp).
+#include <algorithm>
 #include <array>
 #include <string>
 
@@ -246,48 +247,28 @@ std::unique_ptr<materials::section::SectionForceDeformation> parseAggregator(Run
   return std::make_unique<materials::section::SectionAggregator>(tag, parts, baseSection);
 }
 
-// section Fiber tag ?-GJ GJ? {body} | Elastic ... | Aggregator ...
-void sectionCommand(Runtime& rt, ArgReader& args) {
-  rt.requireModel("section");
+using SectionPtr = std::unique_ptr<materials::section::SectionForceDeformation>;
+
+// section Uniaxial tag matTag code: one resultant carried by one material (OpenSees'
+// SectionAggregator with a single material, as its own Uniaxial section).
+SectionPtr parseUniaxialSection(Runtime& rt, ArgReader& args, int tag) {
+  const int mat = args.integer("matTag");
+  const materials::section::SectionCode code = sectionCode(args);
+  args.finish();
+  if (rt.builder.ndm == 2 && (code == materials::section::SectionCode::My ||
+                              code == materials::section::SectionCode::Vz ||
+                              code == materials::section::SectionCode::T))
+    args.fail(args.lastPosition(), "code", "My, Vz and T are not available in a 2D model");
+  return std::make_unique<materials::section::SectionAggregator>(
+      tag,
+      std::vector<materials::section::SectionAggregator::Part>{
+          {&rt.builder.uniaxialMaterial(mat), code}},
+      nullptr);
+}
+
+// section Fiber tag ?-GJ GJ? { fiber ...; patch ...; layer ... }
+SectionPtr parseFiberSection(Runtime& rt, ArgReader& args, int tag) {
   const int ndm = rt.builder.ndm;
-  const std::string type = args.word("type");
-  if (type == "Uniaxial") {
-    // section Uniaxial tag matTag code: one resultant carried by one material (OpenSees'
-    // SectionAggregator with a single material, as its own Uniaxial section).
-    args.setContext("section Uniaxial");
-    args.setUsage("section Uniaxial tag matTag code (code P, Mz, Vy, My, Vz or T)");
-    const int tag = readNewTag(args, rt.builder.sections, "section");
-    const int mat = args.integer("matTag");
-    const materials::section::SectionCode code = sectionCode(args);
-    args.finish();
-    if (ndm == 2 && (code == materials::section::SectionCode::My ||
-                     code == materials::section::SectionCode::Vz ||
-                     code == materials::section::SectionCode::T))
-      args.fail(args.lastPosition(), "code", "My, Vz and T are not available in a 2D model");
-    rt.builder.sections[tag] = std::make_unique<materials::section::SectionAggregator>(
-        tag, std::vector<materials::section::SectionAggregator::Part>{{&rt.builder.uniaxialMaterial(mat), code}},
-        nullptr);
-    Tcl_SetObjResult(rt.interp, Tcl_NewIntObj(tag));
-    return;
-  }
-  if (type == "Elastic" || type == "Aggregator") {
-    args.setContext("section " + type);
-    args.setUsage(type == "Aggregator" ? kAggregatorUsage
-                  : ndm == 3           ? kElasticSectionUsage3d
-                                       : kElasticSectionUsage2d);
-    const int tag = readNewTag(args, rt.builder.sections, "section");
-    auto section =
-        type == "Elastic" ? parseElasticSection(rt, args, tag) : parseAggregator(rt, args, tag);
-    rt.builder.sections[tag] = std::move(section);
-    Tcl_SetObjResult(rt.interp, Tcl_NewIntObj(tag));
-    return;
-  }
-  if (type != "Fiber" && type != "fiberSec")
-    args.fail(args.lastPosition(), "type",
-              "unknown section \"" + type + "\" (available: Fiber, Elastic, Aggregator, Uniaxial)");
-  args.setContext("section " + type);
-  args.setUsage("section Fiber tag ?-GJ GJ? { fiber ...; patch ...; layer ... }");
-  const int tag = readNewTag(args, rt.builder.sections, "section");
   if (rt.currentFiberSection != nullptr) args.fail("section Fiber bodies cannot be nested");
   const std::optional<double> gj = args.optionalOption("-GJ");
   Tcl_Obj* body = args.object("body");
@@ -304,11 +285,44 @@ void sectionCommand(Runtime& rt, ArgReader& args) {
   if (code != TCL_OK)
     throw ArgError(args.context() + ": error in the section body: " +
                    Tcl_GetStringResult(rt.interp));
-  std::unique_ptr<materials::section::SectionForceDeformation> section;
-  if (ndm == 2)
-    section = buildFiberSection<materials::section::FiberSection2d>(rt, tag, under, 0.0);
-  else
-    section = buildFiberSection<materials::section::FiberSection3d>(rt, tag, under, *gj);
+  if (ndm == 2) return buildFiberSection<materials::section::FiberSection2d>(rt, tag, under, 0.0);
+  return buildFiberSection<materials::section::FiberSection3d>(rt, tag, under, *gj);
+}
+
+/// A section type: its usage lines (2D, 3D) and its parser (arguments after the tag).
+struct SectionType {
+  std::string_view name;
+  const char* usage2d;
+  const char* usage3d;
+  SectionPtr (*parse)(Runtime&, ArgReader&, int tag);
+};
+
+constexpr const char* kFiberSectionUsage =
+    "section Fiber tag ?-GJ GJ? { fiber ...; patch ...; layer ... }";
+constexpr const char* kUniaxialSectionUsage =
+    "section Uniaxial tag matTag code (code P, Mz, Vy, My, Vz or T)";
+
+constexpr std::array kSectionTypes{
+    SectionType{"Fiber", kFiberSectionUsage, kFiberSectionUsage, parseFiberSection},
+    SectionType{"fiberSec", kFiberSectionUsage, kFiberSectionUsage, parseFiberSection},
+    SectionType{"Elastic", kElasticSectionUsage2d, kElasticSectionUsage3d, parseElasticSection},
+    SectionType{"Aggregator", kAggregatorUsage, kAggregatorUsage, parseAggregator},
+    SectionType{"Uniaxial", kUniaxialSectionUsage, kUniaxialSectionUsage, parseUniaxialSection},
+};
+
+// section Fiber|Elastic|Aggregator|Uniaxial tag ...
+void sectionCommand(Runtime& rt, ArgReader& args) {
+  rt.requireModel("section");
+  const std::string type = args.word("type");
+  const auto found = std::find_if(kSectionTypes.begin(), kSectionTypes.end(),
+                                  [&](const SectionType& t) { return t.name == type; });
+  if (found == kSectionTypes.end())
+    args.fail(args.lastPosition(), "type",
+              "unknown section \"" + type + "\" (available: Fiber, Elastic, Aggregator, Uniaxial)");
+  args.setContext("section " + type);
+  args.setUsage(rt.builder.ndm == 3 ? found->usage3d : found->usage2d);
+  const int tag = readNewTag(args, rt.builder.sections, "section");
+  SectionPtr section = found->parse(rt, args, tag);
   rt.builder.sections[tag] = std::move(section);
   Tcl_SetObjResult(rt.interp, Tcl_NewIntObj(tag));
 }
