@@ -84,6 +84,18 @@ void AnalysisBuilder::wipe() {
   numSubSteps_ = 10;
   integratorSeeded_ = false;
   stats_ = {};
+  contactStepping_.reset();
+  afterStep = nullptr;
+}
+
+void AnalysisBuilder::setContactStepping(const std::optional<ContactSteppingParams>& params) {
+  if (!params) {
+    contactStepping_.reset();
+    return;
+  }
+  params->validate();
+  contactStepping_ = std::make_unique<ContactStepping>(*params);
+  contactStepping_->attach(domain_);
 }
 
 void AnalysisBuilder::ensureModel() {
@@ -97,6 +109,7 @@ void AnalysisBuilder::ensureModel() {
     system_->patternChanged();
     integratorSeeded_ = false;
     refreshModalDamping();
+    if (contactStepping_) contactStepping_->attach(domain_);  // the pairs of the new model
   }
   if (integrator_ && !integratorSeeded_) {
     model_->applyLoad(domain_.committedTime());
@@ -161,6 +174,7 @@ Status AnalysisBuilder::analyzeSubLevel(int level, double dt) {
 }
 
 int AnalysisBuilder::analyze(int numSteps, double dt) {
+  if (inAfterStep_) throw InputError("analyze", "cannot be called from the script run after each step");
   if (kind_ == Kind::None)
     throw InputError("analysis", "is not defined; give `analysis Static` or `analysis Transient` first");
   if (kind_ == Kind::Transient && !(dt > 0.0))
@@ -175,36 +189,58 @@ int AnalysisBuilder::analyze(int numSteps, double dt) {
     StepLoopGuard() { StopRequest::stepLoopRunning = 1; }
     ~StepLoopGuard() { StopRequest::stepLoopRunning = 0; }
   } guard;
-  for (int step = 0; step < numSteps && StopRequest::signal == 0; ++step) {
-    Status s = analyzeStep(dt);
-    if (!ok(s) && kind_ == Kind::Transient && numSubLevels_ > 0) {
-      ++stats_.failedSteps;
-      s = analyzeSubLevel(1, dt);
-      if (ok(s)) ++stats_.subSteppedSteps;
-    } else if (!ok(s)) {
-      ++stats_.failedSteps;
+  const bool stepping = kind_ == Kind::Transient && contactStepping_ != nullptr;
+  const double t0 = domain_.committedTime();
+  const long contactStepsBefore = stepping ? contactStepping_->contactSteps() : 0;
+  for (int step = 0; step < numSteps && StopRequest::signal == 0 && result == 0; ++step) {
+    if (!stepping) {
+      result = advance(dt, factorizationsBefore);
+      continue;
     }
-    if (!ok(s)) {
-      result = code(s);
-      break;
-    }
-    if (noteBearingFailures()) {
-      result = kBearingFailureStop;
-      break;
-    }
-    if (auto error = domain_.takeRecorderError()) {
-      stats_.factorizations += system_->factorizations() - factorizationsBefore;
-      char when[64];
-      std::snprintf(when, sizeof when, "%.10g", domain_.committedTime());
-      throw InputError("", *error + "; the analysis stopped at time " + when +
-                               " (the other recorders hold every step up to it)");
+    // Steps of the lengths contact stepping chooses up to the end of this output step (times
+    // from the start of analyze, so round-off does not accumulate from step to step).
+    const double tEnd = t0 + (step + 1) * dt;
+    while (result == 0 && StopRequest::signal == 0) {
+      const double remaining = tEnd - domain_.committedTime();
+      if (remaining <= 1e-9 * dt) break;
+      result = advance(contactStepping_->nextStep(remaining, dt), factorizationsBefore);
     }
   }
+  if (stepping) stats_.contactSteps += contactStepping_->contactSteps() - contactStepsBefore;
   stats_.factorizations += system_->factorizations() - factorizationsBefore;
   stats_.elementUpdates += model_->elementUpdates() - elementUpdatesBefore;
   stats_.materialUpdates += domain_.materialUpdates() - materialUpdatesBefore;
   domain_.flushRecorders();
   return result;
+}
+
+int AnalysisBuilder::advance(double dt, long factorizationsBefore) {
+  Status s = analyzeStep(dt);
+  if (!ok(s) && kind_ == Kind::Transient && numSubLevels_ > 0) {
+    ++stats_.failedSteps;
+    s = analyzeSubLevel(1, dt);
+    if (ok(s)) ++stats_.subSteppedSteps;
+  } else if (!ok(s)) {
+    ++stats_.failedSteps;
+  }
+  if (!ok(s)) return code(s);
+  if (noteBearingFailures()) return kBearingFailureStop;
+  if (auto error = domain_.takeRecorderError()) {
+    stats_.factorizations += system_->factorizations() - factorizationsBefore;
+    char when[64];
+    std::snprintf(when, sizeof when, "%.10g", domain_.committedTime());
+    throw InputError("", *error + "; the analysis stopped at time " + when +
+                             " (the other recorders hold every step up to it)");
+  }
+  if (afterStep && kind_ == Kind::Transient) {
+    struct Flag {
+      bool& f;
+      explicit Flag(bool& flag) : f(flag) { f = true; }
+      ~Flag() { f = false; }
+    } flag(inAfterStep_);
+    return afterStep();
+  }
+  return 0;
 }
 
 bool AnalysisBuilder::noteBearingFailures() {

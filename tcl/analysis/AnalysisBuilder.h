@@ -7,6 +7,7 @@
 #include <string>
 
 #include "tcl/analysis/AnalysisModel.h"
+#include "tcl/analysis/ContactStepping.h"
 #include "tcl/analysis/ConvergenceTest.h"
 #include "tcl/analysis/EigenSolver.h"
 #include "tcl/analysis/Integrator.h"
@@ -27,6 +28,7 @@ struct AnalysisStatistics {
   long elementUpdates = 0;    ///< element state determinations
   long materialUpdates = 0;   ///< section material (fiber) state determinations
   long failedBearings = 0;    ///< yoshidaBearing elements that reached their failure shear strain
+  long contactSteps = 0;      ///< steps shortened by contact stepping (shorter than analyze's dt)
 };
 
 /// Code `analyze` returns when a bearing with `-afterFailure stop` reached its failure strain: the
@@ -67,6 +69,15 @@ class AnalysisBuilder {
   /// Forces renumbering at the next analyze (after wipe, reset, domain changes).
   void invalidate() noexcept { model_.reset(); }
 
+  /// Event-located contact stepping of transient analyses (the `contactStepping` command): each
+  /// of analyze's steps is then made of steps of the lengths ContactStepping chooses; nullopt
+  /// turns it off. Forgotten by wipe().
+  void setContactStepping(const std::optional<ContactSteppingParams>& params);
+  const ContactStepping* contactStepping() const noexcept { return contactStepping_.get(); }
+  /// Called after every committed step of a transient analysis (sub-steps included); a non-zero
+  /// return stops the analysis with that code. Thrown exceptions leave analyze.
+  std::function<int()> afterStep;
+
   const AnalysisStatistics& statistics() const noexcept { return stats_; }
   /// Threads for element state determination (`threads n`); results do not depend on it.
   void setThreads(int threads) {
@@ -83,6 +94,9 @@ class AnalysisBuilder {
   void refreshModalDamping();
   [[nodiscard]] Status analyzeStep(double dt);
   [[nodiscard]] Status analyzeSubLevel(int level, double dt);
+  /// One step of analyze (sub-stepped on failure), with the checks that follow it; 0 or the code
+  /// analyze returns.
+  int advance(double dt, long factorizationsBefore);
   /// Notes bearings that failed in the step just committed (statistics, one log line each); true
   /// when one of them asks to stop the analysis.
   bool noteBearingFailures();
@@ -107,6 +121,8 @@ class AnalysisBuilder {
   bool integratorSeeded_ = false;
   AnalysisStatistics stats_;
   std::set<int> failedBearings_;  ///< bearings already reported
+  std::unique_ptr<ContactStepping> contactStepping_;
+  bool inAfterStep_ = false;
 };
 
 }  // namespace dabs::analysis

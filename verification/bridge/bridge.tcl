@@ -30,7 +30,7 @@
 #                contact and the restrainers decline Rayleigh damping; foundation dashpots
 #   motion       one horizontal component applied at angle $motionAngle to the bridge axis
 #   stepping     dt, shortened to at most $contactDt while a joint is closed or closing and cut at
-#                each predicted first contact (nextStepLength)
+#                each predicted first contact (the driver's contactStepping)
 
 # ---------------------------------------------------------------------------------------------
 # Parameters
@@ -141,7 +141,7 @@ set serviceMaxResidual $jointGap  ;# m, largest residual longitudinal or transve
 set defaultDt 0.01
 set defaultTol 1.0e-4
 set defaultIntegrator Newmark
-set contactDt 0.0005        ;# s, longest step while a joint is closed or closing (nextStepLength)
+set contactDt 0.0005        ;# s, longest step while a joint is closed or closing (contactStepping -maxStep)
 set contactLookahead 2.0    ;# steps: sub-step when the gap would close within this many steps
 set contactOvershoot 1.2    ;# a step cut at a predicted first contact ends at 1.2 x that time
 # The parameters above, which buildModel reads (a script that sources this file keeps its own
@@ -491,37 +491,6 @@ proc setIntegrator {integrator} {
   }
 }
 
-# Length of the next analysis step, at most $remaining (the rest of the current output step).
-# Impacts last a few hundredths of a second and start with a jump of the dashpot force, so while a
-# pair is closed or, from its gap and gap rate over the last step, would close within
-# $contactLookahead steps, the step is at most $contactDt; and a step in which a pair is predicted
-# to close is cut to end just past that instant, so the jump falls on a step boundary (event
-# location; without it the impacts' error is of order dt whatever the step).
-proc nextStepLength {remaining} {
-  upvar #0 contactGapLast last contactStepLast lastH
-  set h $remaining
-  set near 0
-  set hMin [expr {0.01 * $::contactDt}]
-  foreach list $::poundingEles {
-    foreach e $list {
-      set gap [eleResponse $e gap]
-      if {$gap < 0.0 || [eleResponse $e status] != 0} { set near 1 }
-      if {[info exists last($e)] && $lastH > 0.0 && $gap > 0.0 && $gap < $last($e)} {
-        set tClose [expr {$gap * $lastH / ($last($e) - $gap)}]
-        if {$tClose <= $::contactLookahead * $remaining} { set near 1 }
-        # (1.2 tClose may pass the end of the output step by a fraction of a contact step; the
-        # row is then written at that time and the next output step is that much shorter)
-        if {$tClose < $h} { set h [expr {max($::contactOvershoot * $tClose, $hMin)}] }
-      }
-      set last($e) $gap
-    }
-  }
-  if {$near} { set h [expr {min($h, $::contactDt)}] }
-  if {$remaining - $h < $hMin} { set h $remaining }
-  set lastH $h
-  return $h
-}
-
 # ---------------------------------------------------------------------------------------------
 # One run: returns a dict of results; writes the time histories to $csv (if not empty). perStep,
 # if given, is a command prefix evaluated once before the first step and after every converged
@@ -531,12 +500,12 @@ proc nextStepLength {remaining} {
 # residual gaps in x, y, z, largest opening and closing, pounding force and impacts), every
 # bearing (peak and residual displacements, peak shear strain, damage at the end), every girder
 # (mid-span longitudinal displacement and rotation about the vertical) and the middle girder's
-# deck and bearings (the histories of the three-span study: G2). Sets, in the caller, joints,
-# jointBearings (array), allBearings, midBearings, mids, midGirder, peak, last, impacts, closed
+# deck and bearings (the histories of the three-span study: G2). Sets, in namespace run, joints,
+# jointBearing (array), allBearings, midBearings, mids, midGirder, peak, last, impacts, closed
 # and the CSV header columns.
+namespace eval run {}
 proc monitorSetup {} {
-  upvar joints joints jointBearing jointBearing allBearings allBearings midBearings midBearings \
-      mids mids midGirder midGirder peak peak last last impacts impacts closed closed columns columns
+  foreach v {joints jointBearing allBearings midBearings mids midGirder peak last impacts closed columns} { variable ::run::$v }
   set nJ [expr {$::nSpans - 1}]
   set joints {}
   array unset jointBearing
@@ -575,8 +544,7 @@ proc monitorSetup {} {
 
 # After a converged step: updates the peaks, the residuals (last), the impacts; returns the CSV row.
 proc monitorStep {} {
-  upvar joints joints jointBearing jointBearing allBearings allBearings midBearings midBearings \
-      mids mids midGirder midGirder peak peak last last impacts impacts closed closed
+  foreach v {joints jointBearing allBearings midBearings mids midGirder peak last impacts closed} { variable ::run::$v }
   set row [list [getTime]]
   set j 0
   foreach pair $joints {
@@ -649,6 +617,15 @@ proc monitorStep {} {
   return $row
 }
 
+# Run by the driver after every converged step (contactStepping -eachStep): follows the
+# quantities, writes the CSV row at the end of each output step (run::tEnd), calls perStep.
+proc run::afterStep {} {
+  variable fh; variable tEnd; variable dt; variable perStep
+  set row [monitorStep]
+  if {$fh ne "" && $tEnd - [getTime] <= 1e-9 * $dt} { puts $fh [join $row ,] }
+  if {$perStep ne ""} { uplevel #0 $perStep }
+}
+
 proc runCase {case scale dt integrator tol motion {csv ""} {perStep ""}} {
   global duration
   set wall0 [clock microseconds]
@@ -665,6 +642,7 @@ proc runCase {case scale dt integrator tol motion {csv ""} {perStep ""}} {
   analysis Transient -numSubLevels 4 -numSubSteps 4
 
   monitorSetup
+  foreach v {joints allBearings midBearings midGirder columns} { set $v [set ::run::$v] }
   set fh ""
   if {$csv ne ""} {
     # The animated page of this case: the bridge with its members' real sizes, bearings coloured
@@ -702,39 +680,39 @@ proc runCase {case scale dt integrator tol motion {csv ""} {perStep ""}} {
   set nSteps [expr {int(round($duration / $dt))}]
   set failed 0
   set loosened 0
-  set contactSubsteps 0
-  array unset ::contactGapLast
-  set ::contactStepLast 0.0
+  # Event-located contact steps by the driver: at most contactDt while a joint is closed or
+  # closing, a step cut at each predicted first contact (README "Contact stepping"); every
+  # converged step, output step or shorter, goes through run::afterStep.
+  set ::run::fh $fh; set ::run::dt $dt; set ::run::perStep $perStep; set ::run::tEnd 0.0
+  contactStepping -maxStep $::contactDt -lookAhead $::contactLookahead -overshoot $::contactOvershoot \
+      -eachStep run::afterStep
   set wall1 [clock microseconds]
   if {$perStep ne ""} { {*}$perStep }
   for {set step 1} {$step <= $nSteps && !$failed} {incr step} {
     set tEnd [expr {$step * $dt}]
-    while {!$failed} {
-      set remaining [expr {$tEnd - [getTime]}]
-      if {$remaining <= 1e-9 * $dt} { break }
-      set h [nextStepLength $remaining]
-      if {[analyze 1 $h] != 0} {
-        # the driver already sub-stepped; try line search, then Krylov-Newton, with more
-        # iterations, and last a tolerance 100 times looser for this step (contact stick-slip
-        # chattering can make Newton cycle at the 1e-4 m level); such steps are counted as
-        # "loosened"
-        set rc -1
-        foreach alg {NewtonLineSearch KrylovNewton Newton} t [list $tol $tol [expr {100.0 * $tol}]] {
-          algorithm $alg
-          test NormDispIncr $t 100
-          set rc [analyze 1 $h]
-          if {$rc == 0} { if {$t != $tol} { incr loosened }; break }
-        }
-        algorithm Newton
-        test NormDispIncr $tol 30
-        if {$rc != 0} { incr failed; break }
+    set ::run::tEnd $tEnd
+    set remaining [expr {$tEnd - [getTime]}]
+    if {$remaining <= 1e-9 * $dt} { continue }
+    if {[analyze 1 $remaining] != 0} {
+      # the driver already sub-stepped the failed step; try the rest of the output step with line
+      # search, then Krylov-Newton, with more iterations, and last a tolerance 100 times looser
+      # (contact stick-slip chattering can make Newton cycle at the 1e-4 m level); such output
+      # steps are counted as "loosened"
+      set rc -1
+      foreach alg {NewtonLineSearch KrylovNewton Newton} t [list $tol $tol [expr {100.0 * $tol}]] {
+        algorithm $alg
+        test NormDispIncr $t 100
+        set rc [analyze 1 [expr {$tEnd - [getTime]}]]
+        if {$rc == 0} { if {$t != $tol} { incr loosened }; break }
       }
-      if {$h < 0.999 * $dt} { incr contactSubsteps }
-      set row [monitorStep]
-      if {$fh ne "" && $tEnd - [getTime] <= 1e-9 * $dt} { puts $fh [join $row ,] }
-      if {$perStep ne ""} { {*}$perStep }
+      algorithm Newton
+      test NormDispIncr $tol 30
+      if {$rc != 0} { incr failed }
     }
   }
+  set contactSubsteps [dict get [contactStepping] contactSteps]
+  contactStepping -off
+  foreach v {peak last impacts} { set $v [set ::run::$v] }
   set wall2 [clock microseconds]
   if {$fh ne ""} { close $fh }
   set damage {}
