@@ -86,6 +86,7 @@ void AnalysisBuilder::wipe() {
   stats_ = {};
   contactStepping_.reset();
   afterStep = nullptr;
+  bearingsOf_ = nullptr;
 }
 
 void AnalysisBuilder::setContactStepping(const std::optional<ContactSteppingParams>& params) {
@@ -105,6 +106,7 @@ void AnalysisBuilder::ensureModel() {
     model->build();  // throws InputError for constraints it cannot enforce; nothing changed yet
     model->setThreads(threads_);
     model_ = std::move(model);
+    bearingsOf_ = nullptr;  // a new model may sit where the old one was
     system_ = std::make_unique<LinearSystem>(*model_, solver_);
     system_->patternChanged();
     integratorSeeded_ = false;
@@ -146,7 +148,20 @@ Status AnalysisBuilder::analyzeStep(double dt) {
   Status s = integrator_->newStep(*system_, dt);
   if (ok(s)) s = algorithm_->solveCurrentStep(*system_, *integrator_, test_.get());
   stats_.iterations += algorithm_->iterations();
+  // Sleeping contact pairs are checked once the step converged: one that would carry force in
+  // the converged state is woken and the step is redone with it.
+  auto sleep = AnalysisModel::SleepCheck::Unchanged;
+  if (ok(s)) sleep = model_->checkSleepingPairs();
+  if (sleep == AnalysisModel::SleepCheck::RedoStep) {
+    domain_.revertToLastCommit();
+    integrator_->revertToLastStep();
+    model_->applyLoad(domain_.committedTime());
+    rebuildPattern();
+    ++stats_.redoneSteps;
+    return analyzeStep(dt);
+  }
   if (ok(s)) s = integrator_->commit(*system_);
+  if (ok(s) && sleep == AnalysisModel::SleepCheck::PatternChange) rebuildPattern();
   if (!ok(s)) {
     domain_.revertToLastCommit();
     integrator_->revertToLastStep();
@@ -181,7 +196,7 @@ int AnalysisBuilder::analyze(int numSteps, double dt) {
     throw InputError("dt", "must be positive for a transient analysis");
   if (algorithm_->needsTest() && !test_) throw InputError("test", "is not defined");
   ensureModel();
-  const long factorizationsBefore = system_->factorizations();
+  const long factorizationsBefore = factorizationsSoFar();
   const long elementUpdatesBefore = model_->elementUpdates();
   const long materialUpdatesBefore = domain_.materialUpdates();
   int result = 0;
@@ -207,7 +222,7 @@ int AnalysisBuilder::analyze(int numSteps, double dt) {
     }
   }
   if (stepping) stats_.contactSteps += contactStepping_->contactSteps() - contactStepsBefore;
-  stats_.factorizations += system_->factorizations() - factorizationsBefore;
+  stats_.factorizations += factorizationsSoFar() - factorizationsBefore;
   stats_.elementUpdates += model_->elementUpdates() - elementUpdatesBefore;
   stats_.materialUpdates += domain_.materialUpdates() - materialUpdatesBefore;
   domain_.flushRecorders();
@@ -226,7 +241,7 @@ int AnalysisBuilder::advance(double dt, long factorizationsBefore) {
   if (!ok(s)) return code(s);
   if (noteBearingFailures()) return kBearingFailureStop;
   if (auto error = domain_.takeRecorderError()) {
-    stats_.factorizations += system_->factorizations() - factorizationsBefore;
+    stats_.factorizations += factorizationsSoFar() - factorizationsBefore;
     char when[64];
     std::snprintf(when, sizeof when, "%.10g", domain_.committedTime());
     throw InputError("", *error + "; the analysis stopped at time " + when +
@@ -243,11 +258,29 @@ int AnalysisBuilder::advance(double dt, long factorizationsBefore) {
   return 0;
 }
 
+void AnalysisBuilder::rebuildPattern() {
+  model_->applySleepChanges();
+  factorizationsCarried_ += system_->factorizations();  // the new solvers count from zero
+  system_->patternChanged();
+  ++stats_.patternChanges;
+}
+
+long AnalysisBuilder::factorizationsSoFar() const {
+  return factorizationsCarried_ + (system_ ? system_->factorizations() : 0);
+}
+
 bool AnalysisBuilder::noteBearingFailures() {
   using elements::YoshidaBearing3d;
   bool stop = false;
-  for (const auto& [tag, e] : domain_.elements()) {
-    if (e->typeName() != "yoshidaBearing") continue;
+  // The bearings of the model, found once per model (a string test per element per step costs
+  // as much as a far contact pair's check).
+  if (bearingsOf_ != model_.get()) {
+    bearings_.clear();
+    for (const auto& [tag, e] : domain_.elements())
+      if (e->typeName() == "yoshidaBearing") bearings_.emplace_back(tag, e.get());
+    bearingsOf_ = model_.get();
+  }
+  for (const auto& [tag, e] : bearings_) {
     const auto& b = static_cast<const YoshidaBearing3d&>(*e);
     if (!b.committedState().failed) {
       failedBearings_.erase(tag);  // back to start (reset): a new failure is reported again

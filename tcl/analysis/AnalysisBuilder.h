@@ -5,6 +5,8 @@
 #include <memory>
 #include <set>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "tcl/analysis/AnalysisModel.h"
 #include "tcl/analysis/ContactStepping.h"
@@ -29,6 +31,8 @@ struct AnalysisStatistics {
   long materialUpdates = 0;   ///< section material (fiber) state determinations
   long failedBearings = 0;    ///< yoshidaBearing elements that reached their failure shear strain
   long contactSteps = 0;      ///< steps shortened by contact stepping (shorter than analyze's dt)
+  long patternChanges = 0;    ///< matrix patterns rebuilt as contact pairs woke or fell asleep
+  long redoneSteps = 0;       ///< steps redone because a sleeping contact pair would carry force
 };
 
 /// Code `analyze` returns when a bearing with `-afterFailure stop` reached its failure strain: the
@@ -97,6 +101,10 @@ class AnalysisBuilder {
   /// One step of analyze (sub-stepped on failure), with the checks that follow it; 0 or the code
   /// analyze returns.
   int advance(double dt, long factorizationsBefore);
+  /// New matrix pattern after contact pairs woke or fell asleep (AnalysisModel::applySleepChanges).
+  void rebuildPattern();
+  /// Factorisations of this model's systems, across pattern changes.
+  long factorizationsSoFar() const;
   /// Notes bearings that failed in the step just committed (statistics, one log line each); true
   /// when one of them asks to stop the analysis.
   bool noteBearingFailures();
@@ -123,6 +131,9 @@ class AnalysisBuilder {
   std::set<int> failedBearings_;  ///< bearings already reported
   std::unique_ptr<ContactStepping> contactStepping_;
   bool inAfterStep_ = false;
+  long factorizationsCarried_ = 0;
+  std::vector<std::pair<int, const elements::Element*>> bearings_;  ///< yoshidaBearing elements
+  const AnalysisModel* bearingsOf_ = nullptr;                        ///< the model bearings_ is of
 };
 
 }  // namespace dabs::analysis

@@ -233,7 +233,10 @@ void pounding(Runtime& rt, ArgReader& args) {
 
 /// Turns event-located contact stepping of transient analyses on (with the options given; the
 /// defaults are those of ContactSteppingParams) or off (-off). Without arguments it returns
-/// its state as a dict: on, maxStep, lookAhead, overshoot, pairs, contactSteps. The -eachStep
+/// its state as a dict: on, maxStep, lookAhead, overshoot, pairs (when on), and since the last
+/// wipeAnalysis contactSteps, patternChanges (matrix patterns rebuilt as far contact pairs
+/// fell asleep or woke, AnalysisModel's sleeping pairs) and redoneSteps (steps redone because a
+/// sleeping pair would have carried force). The -eachStep
 /// script runs at global level after every committed step while stepping is on (a script that
 /// follows peaks between analyze's output steps); an error in it stops the analysis with that
 /// error. Set after `wipeAnalysis`, which turns stepping off.
@@ -248,7 +251,9 @@ void contactSteppingCmd(Runtime& rt, ArgReader& args) {
                     cs->params().maxStep, cs->params().lookAhead, cs->params().overshoot, cs->pairs());
       text += buf;
     }
-    text += " contactSteps " + std::to_string(analysis.statistics().contactSteps);
+    text += " contactSteps " + std::to_string(analysis.statistics().contactSteps) + " patternChanges " +
+            std::to_string(analysis.statistics().patternChanges) + " redoneSteps " +
+            std::to_string(analysis.statistics().redoneSteps);
     setResult(rt, text);
     return;
   }
