@@ -78,7 +78,8 @@ class AnalysisBuilder {
   /// turns it off. Forgotten by wipe().
   void setContactStepping(const std::optional<ContactSteppingParams>& params);
   const ContactStepping* contactStepping() const noexcept { return contactStepping_.get(); }
-  /// Called after every committed step of a transient analysis (sub-steps included); a non-zero
+  /// Called after every step of a transient analysis (contact stepping's steps each; a failed step
+  /// recovered by sub-stepping once, after its sub-steps); a non-zero
   /// return stops the analysis with that code. Thrown exceptions leave analyze.
   std::function<int()> afterStep;
 
