@@ -9,10 +9,40 @@ double ContactSearch::distanceLowerBound(const Eigen::Vector3d& contactor,
   return (contactor - s.center).norm() - s.radius;
 }
 
+double ContactSearch::distanceLowerBound(const Eigen::Vector3d& contactor,
+                                         const std::array<Eigen::Vector3d, 4>& quad,
+                                         const Eigen::Vector3d& n) noexcept {
+  const double zk = n.dot(contactor);
+  double zMax = n.dot(quad[0]);
+  for (std::size_t i = 1; i < 4; ++i) {
+    const double z = n.dot(quad[i]);
+    zMax = z > zMax ? z : zMax;
+  }
+  // One-sided: only the outward side counts (behind the face is penetration, never far).
+  const double slab = zk - zMax;
+  const double sphere = distanceLowerBound(contactor, quad);
+  return slab > sphere ? slab : sphere;
+}
+
 bool ContactSearch::isFar(const Eigen::Vector3d& contactor,
-                          const std::array<Eigen::Vector3d, 4>& quad, double& bound) const noexcept {
+                          const std::array<Eigen::Vector3d, 4>& quad, const Eigen::Vector3d& n,
+                          double& bound) const noexcept {
   if (!enabled()) return false;
-  bound = distanceLowerBound(contactor, quad);
+  // The slab alone first: it settles most far pairs (faces across a gap) without the sphere.
+  const double zk = n.dot(contactor);
+  double zMax = n.dot(quad[0]);
+  for (std::size_t i = 1; i < 4; ++i) {
+    const double z = n.dot(quad[i]);
+    zMax = z > zMax ? z : zMax;
+  }
+  // One-sided: only the outward side counts (behind the face is penetration, never far).
+  const double slab = zk - zMax;
+  if (slab > distance_) {
+    bound = slab;
+    return true;
+  }
+  const double sphere = distanceLowerBound(contactor, quad);
+  bound = slab > sphere ? slab : sphere;
   return bound > distance_;
 }
 

@@ -10,10 +10,17 @@
 namespace dabs::contact {
 
 /// Decides whether a contactor is near enough to its target quad to be worth evaluating ("only
-/// what the scene needs"). The test is one bounding-sphere distance per update: a pair is
-/// far when |x_k - c| - r > distance, where c and r are the centre and radius of the quad's
-/// current bounding sphere. A far pair adds no force and no stiffness; its element still owns its
-/// place in the sparse matrix pattern, so nothing is re-analysed when it closes.
+/// what the scene needs"). The test is a lower bound of the distance from the contactor to the
+/// quad, the larger of two: the bounding sphere, |x_k - c| - r with c and r the centre and radius
+/// of the quad's current bounding sphere; and the height above the face along its reference
+/// (outward) normal n, z_k - max z_i with z = n.x (the bilinear quad lies in the convex hull of
+/// its corners, so below their largest height along any fixed direction; only the outward side
+/// counts, since behind the face is penetration). The
+/// slab is what tells two parallel faces apart across a narrow gap, where the sphere of a wide
+/// face reaches past the other face's corners. A pair is far when the bound exceeds the
+/// distance; a far pair adds no force and no stiffness. (The analysis leaves far pairs out of
+/// the matrix pattern and out of the iterations, checking them once per step:
+/// AnalysisModel's sleeping pairs.)
 class ContactSearch {
  public:
   /// `distance` >= 0; infinity (the default) evaluates the pair at every update.
@@ -27,11 +34,16 @@ class ContactSearch {
   /// negative inside it).
   static double distanceLowerBound(const Eigen::Vector3d& contactor,
                                    const std::array<Eigen::Vector3d, 4>& quad) noexcept;
+  /// The same, the larger of the sphere bound and the slab bound along the unit vector n.
+  static double distanceLowerBound(const Eigen::Vector3d& contactor,
+                                   const std::array<Eigen::Vector3d, 4>& quad,
+                                   const Eigen::Vector3d& n) noexcept;
 
   /// True when the pair is farther apart than the search distance (and so may be skipped).
-  /// Writes the distance lower bound to `bound` when the test was made.
+  /// Writes the distance lower bound to `bound` when the test was made: the slab bound when that
+  /// alone shows the pair far, else the larger of the slab and sphere bounds.
   bool isFar(const Eigen::Vector3d& contactor, const std::array<Eigen::Vector3d, 4>& quad,
-             double& bound) const noexcept;
+             const Eigen::Vector3d& n, double& bound) const noexcept;
 
  private:
   double distance_;

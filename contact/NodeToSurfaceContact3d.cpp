@@ -121,9 +121,11 @@ Status NodeToSurfaceContact3d<Ndf>::update(const elements::Kinematics& kin) {
     trial_ = t;
   };
 
-  // Search: one bounding-sphere distance when the pair is far.
+  // Search: a distance bound when the pair is far (ContactSearch); never in the step after a
+  // closed state, whose release force (below) ends the contact however far the step carries the
+  // faces apart.
   double bound = 0.0;
-  if (search_.isFar(x[0], quad, bound)) {
+  if (!closedAtCommit() && search_.isFar(x[0], quad, frame_.n, bound)) {
     finishOpen(bound, false);
     finishAccumulators();
     return Status::Ok;
@@ -324,6 +326,39 @@ std::string NodeToSurfaceContact3d<Ndf>::describe() const {
       << " Ct " << friction_.damping() << " search " << params_.search << " normal ("
       << frame_.n.transpose() << ")";
   return out.str();
+}
+
+template <int Ndf>
+bool NodeToSurfaceContact3d<Ndf>::updateIfFar(const std::array<Eigen::Vector3d, 5>& u, double dt) {
+  if (!search_.enabled() || closedAtCommit()) return false;
+  std::array<Eigen::Vector3d, 5> x;
+  for (int j = 0; j < 5; ++j) x[j] = X_[j] + u[j];
+  const std::array<Eigen::Vector3d, 4> quad{x[1], x[2], x[3], x[4]};
+  double bound = 0.0;
+  if (!x[0].allFinite() || !search_.isFar(x[0], quad, frame_.n, bound)) return false;
+  // What update() does for a far pair: open, no force, accumulators over the step. From a far
+  // committed state (no force, no dashpot power) that is the committed state with the new bound,
+  // and the trial state already equals the committed one but for the gap (commit and revert copy
+  // the whole state; only update() and this function write it).
+  if (forcesZero_ && committed_.status == ContactStatus::Open && !committed_.projValid &&
+      committed_.force.isZero(0.0) && committed_.dashpotPower == 0.0 && trial_.status == ContactStatus::Open &&
+      !trial_.projValid && trial_.force.isZero(0.0) && trial_.impulse == committed_.impulse &&
+      trial_.dampingEnergy == committed_.dampingEnergy) {
+    trial_.gap = bound;
+    return true;
+  }
+  NodeToSurfaceState t = committed_;
+  t.force.setZero();
+  t.dashpotPower = 0.0;
+  t.status = ContactStatus::Open;
+  t.stickValid = false;
+  t.projValid = false;
+  t.gap = bound;
+  clearForces();
+  t.impulse = committed_.impulse + 0.5 * dt * (committed_.force + t.force);
+  t.dampingEnergy = committed_.dampingEnergy + 0.5 * dt * (committed_.dashpotPower + t.dashpotPower);
+  trial_ = t;
+  return true;
 }
 
 template class NodeToSurfaceContact3d<3>;

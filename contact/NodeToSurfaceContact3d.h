@@ -76,7 +76,8 @@ struct NodeToSurfaceState {
 ///   state, so the first trial already has tangential stiffness.
 /// - Only translations carry contact forces (dofs 1-3 of each node); with ndf 6 the rotations get
 ///   zero force and stiffness.
-/// - Beyond the search distance the update costs one bounding-sphere test and adds nothing.
+/// - Beyond the search distance (ContactSearch's bound) the update costs the distance test and adds
+///   nothing, except in the step after a closed state (a release step is always evaluated).
 /// - Release step (closed at the last commit, open in the trial): the normal force is
 ///   N = -N_r g / (g - g_n), N_r = min(N_n, K delta_n), so that the step's trapezoid work is the
 ///   energy of linear unloading, 0.5 N_r delta_n; without it a large step on a stiff contact gains
@@ -115,6 +116,28 @@ class NodeToSurfaceContact3d : public elements::FixedSizeElement<5, Ndf> {
   /// dissipatedEnergy (total, friction, dashpots) | impulse (N, t1, t2).
   std::optional<Eigen::VectorXd> response(std::span<const std::string> args) const override;
   std::string describe() const override;
+
+  /// Far-pair shortcut for the analysis (sleeping pairs): with the nodes' translations `u` (k, a,
+  /// b, c, d), when the pair has a search distance and is far by its bound, sets the trial state
+  /// update() would set (open, no force, the bound as gap) without the rest of update()'s work and
+  /// returns true; otherwise changes nothing and returns false (then call update()).
+  bool updateIfFar(const std::array<Eigen::Vector3d, 5>& u, double dt);
+  /// True when the pair was far (beyond its search distance) in the last committed state.
+  bool committedFar() const noexcept {
+    return search_.enabled() && committed_.status == ContactStatus::Open && !committed_.projValid &&
+           committed_.gap > search_.distance();
+  }
+  /// True when the trial state is farther than `factor` x the search distance.
+  bool trialFarBeyond(double factor) const noexcept {
+    return search_.enabled() && trial_.status == ContactStatus::Open && !trial_.projValid &&
+           trial_.gap > factor * search_.distance();
+  }
+  bool hasSearch() const noexcept { return search_.enabled(); }
+  /// True when the last committed state carried a compressive normal force (the next step may be
+  /// a release step, which the far test must not skip).
+  bool closedAtCommit() const noexcept {
+    return committed_.status != ContactStatus::Open && committed_.force(0) > 0.0;
+  }
 
   const NodeToSurfaceState& trialState() const noexcept { return trial_; }
   const NodeToSurfaceState& committedState() const noexcept { return committed_; }

@@ -378,11 +378,67 @@ TEST(NodeToSurfaceContact3dTest, FarPairCostsOnlyADistanceCheck) {
   ASSERT_TRUE(ok(e->update(s.kinematics())));
   EXPECT_EQ(e->resistingForce().norm(), 0.0);
   EXPECT_FALSE(e->trialState().projValid);
-  EXPECT_NEAR(e->trialState().gap, 10 - std::sqrt(2.0), kTol);  // bounding-sphere lower bound
+  // lower bound: the larger of the sphere's 10 - sqrt(2) and the slab's 10 (the height above the
+  // plane z = 0 of the quad, here the distance itself)
+  EXPECT_NEAR(e->trialState().gap, 10.0, kTol);
   // Brought within the search distance and through the surface, the pair acts again.
   setU(s, 0, {0, 0, -10.05});
   ASSERT_TRUE(ok(e->update(s.kinematics())));
   EXPECT_NEAR(e->trialState().force(0), kK * 0.05, kTol * kK);
+}
+
+// Across a narrow gap of two parallel faces the bounding sphere of the 2 x 2 face reaches past a
+// contactor over its corner ((0,0,0.2): sphere bound sqrt(1 + 1 + 0.04) - sqrt(2) = 0.0142 < 0.05);
+// the slab along n gives the gap 0.2 itself, so the pair is far.
+TEST(NodeToSurfaceContact3dTest, ParallelFacesAcrossAGapAreFarByTheSlab) {
+  NodeToSurfaceParams p = params();
+  p.search = 0.05;
+  auto e = make(p, {0.0, 0.0, 0.2});
+  TrialState s = zeroState(15);
+  ASSERT_TRUE(ok(e->update(s.kinematics())));
+  EXPECT_FALSE(e->trialState().projValid);
+  EXPECT_NEAR(e->trialState().gap, 0.2, kTol);
+  EXPECT_NEAR(ContactSearch::distanceLowerBound(Eigen::Vector3d(0, 0, 0.2), {Eigen::Vector3d(0, 0, 0),
+                  Eigen::Vector3d(2, 0, 0), Eigen::Vector3d(2, 2, 0), Eigen::Vector3d(0, 2, 0)}),
+              std::sqrt(2.04) - std::sqrt(2.0), kTol);
+  // Behind the face (penetrated 0.3 m, more than the search distance) is contact, never far.
+  auto deep = make(p, {1.0, 1.0, 0.1});
+  setU(s, 0, {0.0, 0.0, -0.4});
+  ASSERT_TRUE(ok(deep->update(s.kinematics())));
+  EXPECT_TRUE(deep->trialState().projValid);
+  EXPECT_NEAR(deep->trialState().gap, -0.3, kTol);
+  EXPECT_NEAR(deep->trialState().force(0), kK * 0.3, kTol * kK);
+  // A warped face: corners at heights 0, 0.1, 0, -0.1; the slab is bounded by the highest, 0.1.
+  std::array<Eigen::Vector3d, 4> warped{Eigen::Vector3d(0, 0, 0), Eigen::Vector3d(2, 0, 0.1),
+                                        Eigen::Vector3d(2, 2, 0), Eigen::Vector3d(0, 2, -0.1)};
+  EXPECT_NEAR(ContactSearch::distanceLowerBound(Eigen::Vector3d(1, 1, 0.5), warped, Eigen::Vector3d(0, 0, 1)),
+              0.4, kTol);
+}
+
+// updateIfFar gives the state update() gives for a far pair, and declines a near one.
+TEST(NodeToSurfaceContact3dTest, FarShortcutMatchesUpdate) {
+  NodeToSurfaceParams p = params(0.5, 0.4);
+  p.search = 0.05;
+  auto a = make(p, {0.5, 0.8, 0.1});
+  auto b = make(p, {0.5, 0.8, 0.1});
+  TrialState s = zeroState(15);
+  setU(s, 0, {0.01, -0.02, 0.3});
+  setU(s, 2, {0.0, 0.0, -0.01});
+  ASSERT_TRUE(ok(a->update(s.kinematics())));
+  std::array<Eigen::Vector3d, 5> u;
+  for (int j = 0; j < 5; ++j) u[static_cast<std::size_t>(j)] = s.u.segment<3>(3 * j);
+  ASSERT_TRUE(b->updateIfFar(u, s.kinematics().dt));
+  EXPECT_EQ(a->trialState().gap, b->trialState().gap);
+  EXPECT_EQ(a->trialState().status, b->trialState().status);
+  EXPECT_EQ(a->trialState().projValid, b->trialState().projValid);
+  EXPECT_EQ(b->resistingForce().norm(), 0.0);
+  EXPECT_FALSE(b->isActive());
+  // Near (gap 0.1 - 0.08 = 0.02 < 0.05): declined, state untouched.
+  setU(s, 0, {0.0, 0.0, -0.08});
+  for (int j = 0; j < 5; ++j) u[static_cast<std::size_t>(j)] = s.u.segment<3>(3 * j);
+  const double before = b->trialState().gap;
+  EXPECT_FALSE(b->updateIfFar(u, 0.01));
+  EXPECT_EQ(b->trialState().gap, before);
 }
 
 TEST(NodeToSurfaceContact3dTest, ContactorOnTheWrongSideIsAnInputError) {

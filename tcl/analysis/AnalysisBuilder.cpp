@@ -86,6 +86,19 @@ void AnalysisBuilder::wipe() {
   numSubSteps_ = 10;
   integratorSeeded_ = false;
   stats_ = {};
+  contactStepping_.reset();
+  afterStep = nullptr;
+  bearingsOf_ = nullptr;
+}
+
+void AnalysisBuilder::setContactStepping(const std::optional<ContactSteppingParams>& params) {
+  if (!params) {
+    contactStepping_.reset();
+    return;
+  }
+  params->validate();
+  contactStepping_ = std::make_unique<ContactStepping>(*params);
+  contactStepping_->attach(domain_);
 }
 
 void AnalysisBuilder::ensureModel() {
@@ -95,10 +108,12 @@ void AnalysisBuilder::ensureModel() {
     model->build();  // throws InputError for constraints it cannot enforce; nothing changed yet
     model->setThreads(threads_);
     model_ = std::move(model);
+    bearingsOf_ = nullptr;  // a new model may sit where the old one was
     system_ = std::make_unique<LinearSystem>(*model_, solver_);
     system_->patternChanged();
     integratorSeeded_ = false;
     refreshModalDamping();
+    if (contactStepping_) contactStepping_->attach(domain_);  // the pairs of the new model
   }
   if (integrator_ && !integratorSeeded_) {
     model_->applyLoad(domain_.committedTime());
@@ -135,7 +150,20 @@ Status AnalysisBuilder::analyzeStep(double dt) {
   Status s = integrator_->newStep(*system_, dt);
   if (ok(s)) s = algorithm_->solveCurrentStep(*system_, *integrator_, test_.get());
   stats_.iterations += algorithm_->iterations();
+  // Sleeping contact pairs are checked once the step converged: one that would carry force in
+  // the converged state is woken and the step is redone with it.
+  auto sleep = AnalysisModel::SleepCheck::Unchanged;
+  if (ok(s)) sleep = model_->checkSleepingPairs();
+  if (sleep == AnalysisModel::SleepCheck::RedoStep) {
+    domain_.revertToLastCommit();
+    integrator_->revertToLastStep();
+    model_->applyLoad(domain_.committedTime());
+    rebuildPattern();
+    ++stats_.redoneSteps;
+    return analyzeStep(dt);
+  }
   if (ok(s)) s = integrator_->commit(*system_);
+  if (ok(s) && sleep == AnalysisModel::SleepCheck::PatternChange) rebuildPattern();
   if (!ok(s)) {
     domain_.revertToLastCommit();
     integrator_->revertToLastStep();
@@ -163,13 +191,14 @@ Status AnalysisBuilder::analyzeSubLevel(int level, double dt) {
 }
 
 int AnalysisBuilder::analyze(int numSteps, double dt) {
+  if (inAfterStep_) throw InputError("analyze", "cannot be called from the script run after each step");
   if (kind_ == Kind::None)
     throw InputError("analysis", "is not defined; give `analysis Static` or `analysis Transient` first");
   if (kind_ == Kind::Transient && !(dt > 0.0))
     throw InputError("dt", "must be positive for a transient analysis");
   if (algorithm_->needsTest() && !test_) throw InputError("test", "is not defined");
   ensureModel();
-  const long factorizationsBefore = system_->factorizations();
+  const long factorizationsBefore = factorizationsSoFar();
   const long elementUpdatesBefore = model_->elementUpdates();
   const long materialUpdatesBefore = domain_.materialUpdates();
   int result = 0;
@@ -177,43 +206,83 @@ int AnalysisBuilder::analyze(int numSteps, double dt) {
     StepLoopGuard() { StopRequest::stepLoopRunning = 1; }
     ~StepLoopGuard() { StopRequest::stepLoopRunning = 0; }
   } guard;
-  for (int step = 0; step < numSteps && StopRequest::signal == 0; ++step) {
-    Status s = analyzeStep(dt);
-    if (!ok(s) && kind_ == Kind::Transient && numSubLevels_ > 0) {
-      ++stats_.failedSteps;
-      s = analyzeSubLevel(1, dt);
-      if (ok(s)) ++stats_.subSteppedSteps;
-    } else if (!ok(s)) {
-      ++stats_.failedSteps;
+  const bool stepping = kind_ == Kind::Transient && contactStepping_ != nullptr;
+  const double t0 = domain_.committedTime();
+  const long contactStepsBefore = stepping ? contactStepping_->contactSteps() : 0;
+  for (int step = 0; step < numSteps && StopRequest::signal == 0 && result == 0; ++step) {
+    if (!stepping) {
+      result = advance(dt, factorizationsBefore);
+      continue;
     }
-    if (!ok(s)) {
-      result = code(s);
-      break;
-    }
-    if (noteBearingFailures()) {
-      result = kBearingFailureStop;
-      break;
-    }
-    if (auto error = domain_.takeRecorderError()) {
-      stats_.factorizations += system_->factorizations() - factorizationsBefore;
-      char when[64];
-      std::snprintf(when, sizeof when, "%.10g", domain_.committedTime());
-      throw InputError("", *error + "; the analysis stopped at time " + when +
-                               " (the other recorders hold every step up to it)");
+    // Steps of the lengths contact stepping chooses up to the end of this output step (times
+    // from the start of analyze, so round-off does not accumulate from step to step).
+    const double tEnd = t0 + (step + 1) * dt;
+    while (result == 0 && StopRequest::signal == 0) {
+      const double remaining = tEnd - domain_.committedTime();
+      if (remaining <= 1e-9 * dt) break;
+      result = advance(contactStepping_->nextStep(remaining, dt), factorizationsBefore);
     }
   }
-  stats_.factorizations += system_->factorizations() - factorizationsBefore;
+  if (stepping) stats_.contactSteps += contactStepping_->contactSteps() - contactStepsBefore;
+  stats_.factorizations += factorizationsSoFar() - factorizationsBefore;
   stats_.elementUpdates += model_->elementUpdates() - elementUpdatesBefore;
   stats_.materialUpdates += domain_.materialUpdates() - materialUpdatesBefore;
   domain_.flushRecorders();
   return result;
 }
 
+int AnalysisBuilder::advance(double dt, long factorizationsBefore) {
+  Status s = analyzeStep(dt);
+  if (!ok(s) && kind_ == Kind::Transient && numSubLevels_ > 0) {
+    ++stats_.failedSteps;
+    s = analyzeSubLevel(1, dt);
+    if (ok(s)) ++stats_.subSteppedSteps;
+  } else if (!ok(s)) {
+    ++stats_.failedSteps;
+  }
+  if (!ok(s)) return code(s);
+  if (noteBearingFailures()) return kBearingFailureStop;
+  if (auto error = domain_.takeRecorderError()) {
+    stats_.factorizations += factorizationsSoFar() - factorizationsBefore;
+    char when[64];
+    std::snprintf(when, sizeof when, "%.10g", domain_.committedTime());
+    throw InputError("", *error + "; the analysis stopped at time " + when +
+                             " (the other recorders hold every step up to it)");
+  }
+  if (afterStep && kind_ == Kind::Transient) {
+    struct Flag {
+      bool& f;
+      explicit Flag(bool& flag) : f(flag) { f = true; }
+      ~Flag() { f = false; }
+    } flag(inAfterStep_);
+    return afterStep();
+  }
+  return 0;
+}
+
+void AnalysisBuilder::rebuildPattern() {
+  model_->applySleepChanges();
+  factorizationsCarried_ += system_->factorizations();  // the new solvers count from zero
+  system_->patternChanged();
+  ++stats_.patternChanges;
+}
+
+long AnalysisBuilder::factorizationsSoFar() const {
+  return factorizationsCarried_ + (system_ ? system_->factorizations() : 0);
+}
+
 bool AnalysisBuilder::noteBearingFailures() {
   using elements::YoshidaBearing3d;
   bool stop = false;
-  for (const auto& [tag, e] : domain_.elements()) {
-    if (e->typeName() != "yoshidaBearing") continue;
+  // The bearings of the model, found once per model (a string test per element per step costs
+  // as much as a far contact pair's check).
+  if (bearingsOf_ != model_.get()) {
+    bearings_.clear();
+    for (const auto& [tag, e] : domain_.elements())
+      if (e->typeName() == "yoshidaBearing") bearings_.emplace_back(tag, e.get());
+    bearingsOf_ = model_.get();
+  }
+  for (const auto& [tag, e] : bearings_) {
     const auto& b = static_cast<const YoshidaBearing3d&>(*e);
     if (!b.committedState().failed) {
       failedBearings_.erase(tag);  // back to start (reset): a new failure is reported again

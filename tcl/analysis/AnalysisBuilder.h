@@ -5,8 +5,11 @@
 #include <memory>
 #include <set>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "tcl/analysis/AnalysisModel.h"
+#include "tcl/analysis/ContactStepping.h"
 #include "tcl/analysis/ConvergenceTest.h"
 #include "tcl/analysis/EigenSolver.h"
 #include "tcl/analysis/Integrator.h"
@@ -27,6 +30,9 @@ struct AnalysisStatistics {
   long elementUpdates = 0;    ///< element state determinations
   long materialUpdates = 0;   ///< section material (fiber) state determinations
   long failedBearings = 0;    ///< yoshidaBearing elements that reached their failure shear strain
+  long contactSteps = 0;      ///< steps shortened by contact stepping (shorter than analyze's dt)
+  long patternChanges = 0;    ///< matrix patterns rebuilt as contact pairs woke or fell asleep
+  long redoneSteps = 0;       ///< steps redone because a sleeping contact pair would carry force
 };
 
 /// Code `analyze` returns when a bearing with `-afterFailure stop` reached its failure strain: the
@@ -72,6 +78,16 @@ class AnalysisBuilder {
   /// Forces renumbering at the next analyze (after wipe, reset, domain changes).
   void invalidate() noexcept { model_.reset(); }
 
+  /// Event-located contact stepping of transient analyses (the `contactStepping` command): each
+  /// of analyze's steps is then made of steps of the lengths ContactStepping chooses; nullopt
+  /// turns it off. Forgotten by wipe().
+  void setContactStepping(const std::optional<ContactSteppingParams>& params);
+  const ContactStepping* contactStepping() const noexcept { return contactStepping_.get(); }
+  /// Called after every step of a transient analysis (contact stepping's steps each; a failed step
+  /// recovered by sub-stepping once, after its sub-steps); a non-zero
+  /// return stops the analysis with that code. Thrown exceptions leave analyze.
+  std::function<int()> afterStep;
+
   const AnalysisStatistics& statistics() const noexcept { return stats_; }
   /// Threads for element state determination (`threads n`); results do not depend on it.
   void setThreads(int threads) {
@@ -88,6 +104,13 @@ class AnalysisBuilder {
   void refreshModalDamping();
   [[nodiscard]] Status analyzeStep(double dt);
   [[nodiscard]] Status analyzeSubLevel(int level, double dt);
+  /// One step of analyze (sub-stepped on failure), with the checks that follow it; 0 or the code
+  /// analyze returns.
+  int advance(double dt, long factorizationsBefore);
+  /// New matrix pattern after contact pairs woke or fell asleep (AnalysisModel::applySleepChanges).
+  void rebuildPattern();
+  /// Factorisations of this model's systems, across pattern changes.
+  long factorizationsSoFar() const;
   /// Notes bearings that failed in the step just committed (statistics, one log line each); true
   /// when one of them asks to stop the analysis.
   bool noteBearingFailures();
@@ -113,6 +136,11 @@ class AnalysisBuilder {
   bool integratorSeeded_ = false;
   AnalysisStatistics stats_;
   std::set<int> failedBearings_;  ///< bearings already reported
+  std::unique_ptr<ContactStepping> contactStepping_;
+  bool inAfterStep_ = false;
+  long factorizationsCarried_ = 0;
+  std::vector<std::pair<int, const elements::Element*>> bearings_;  ///< yoshidaBearing elements
+  const AnalysisModel* bearingsOf_ = nullptr;                        ///< the model bearings_ is of
 };
 
 }  // namespace dabs::analysis

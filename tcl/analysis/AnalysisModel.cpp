@@ -27,7 +27,7 @@ bool AnalysisModel::nonSymmetric() const {
 
 bool AnalysisModel::nonSymmetricNow() const {
   return std::any_of(elements_.begin(), elements_.end(), [](const ElementLink& l) {
-    return l.element->isActive() && l.element->hasNonSymmetricTangent();
+    return !l.asleep && l.element->isActive() && l.element->hasNonSymmetricTangent();
   });
 }
 
@@ -246,6 +246,8 @@ void AnalysisModel::buildScatter() {
   elements_.clear();
   std::vector<std::vector<std::pair<int, double>>> localEqs;
   std::vector<std::pair<int, double>> scratch;
+  sleeping_ = 0;
+  pairLinks_.clear();
   for (const auto& [etag, e] : domain_.elements()) {
     ElementLink link;
     link.element = e.get();
@@ -254,6 +256,15 @@ void AnalysisModel::buildScatter() {
     const int n = e->numDof();
     link.u = link.v = link.a = link.force = Eigen::VectorXd::Zero(n);
     link.work = Eigen::MatrixXd::Zero(n, n);
+    if (e->typeName() == "nodeToSurface") {
+      link.pair3 = dynamic_cast<contact::NodeToSurfaceContact3d<3>*>(e.get());
+      link.pair6 = dynamic_cast<contact::NodeToSurfaceContact3d<6>*>(e.get());
+      if ((link.pair3 && !link.pair3->hasSearch()) || (link.pair6 && !link.pair6->hasSearch()))
+        link.pair3 = nullptr, link.pair6 = nullptr;
+    }
+    link.asleep = wantsSleep(link);
+    if (link.asleep) ++sleeping_;
+    if (link.pair3 || link.pair6) pairLinks_.push_back(elements_.size());
     localEqs.assign(static_cast<std::size_t>(n), {});
     int local = 0;
     for (int nt : e->nodeTags()) {
@@ -265,7 +276,7 @@ void AnalysisModel::buildScatter() {
         for (auto [eq, c] : scratch) link.vec.push_back(VecEntry{local, eq, c});
       }
     }
-    for (int i = 0; i < n; ++i)
+    for (int i = 0; i < n && !link.asleep; ++i)
       for (auto [ea, ca] : localEqs[static_cast<std::size_t>(i)])
         for (int j = 0; j < n; ++j)
           for (auto [eb, cb] : localEqs[static_cast<std::size_t>(j)]) {
@@ -322,6 +333,50 @@ void AnalysisModel::buildScatter() {
   P_ = Eigen::VectorXd::Zero(neq_);
   influence_.clear();
   elementStatus_.assign(elements_.size(), Status::Ok);
+  sleepWanted_.clear();
+}
+
+bool AnalysisModel::wantsSleep(const ElementLink& l) const {
+  if (!l.pair3 && !l.pair6) return false;
+  const auto it = sleepWanted_.find(l.element);
+  if (it != sleepWanted_.end()) return it->second;
+  return l.pair3 ? l.pair3->committedFar() : l.pair6->committedFar();
+}
+
+bool AnalysisModel::sleeperStaysFar(ElementLink& l, double dt) const {
+  std::array<Eigen::Vector3d, 5> u;
+  for (std::size_t j = 0; j < 5; ++j) u[j] = l.nodes[j]->disp.head<3>();
+  return l.pair3 ? l.pair3->updateIfFar(u, dt) : l.pair6->updateIfFar(u, dt);
+}
+
+AnalysisModel::SleepCheck AnalysisModel::checkSleepingPairs() {
+  SleepCheck result = SleepCheck::Unchanged;
+  const double dt = time_ - domain_.committedTime();
+  for (const std::size_t k : pairLinks_) {
+    ElementLink& l = elements_[k];
+    if (l.asleep) {
+      if (sleeperStaysFar(l, dt)) continue;
+      // Near: its full update for this trial state; with force the step missed it.
+      const Status st = updateElement(l, dt);
+      ++elementUpdates_;
+      sleepWanted_[l.element] = false;
+      if (!ok(st) || l.element->isActive()) return SleepCheck::RedoStep;
+      result = SleepCheck::PatternChange;
+    } else if (l.pair3 ? l.pair3->trialFarBeyond(2.0) : l.pair6->trialFarBeyond(2.0)) {
+      sleepWanted_[l.element] = true;
+      if (result == SleepCheck::Unchanged) result = SleepCheck::PatternChange;
+    }
+  }
+  return result;
+}
+
+void AnalysisModel::applySleepChanges() {
+  const Eigen::VectorXd P = P_;  // the external load of the current time stays
+  for (const ElementLink& l : elements_)  // pairs without a change keep their state
+    if (l.pair3 || l.pair6) sleepWanted_.emplace(l.element, l.asleep);
+  buildScatter();
+  buildConstantDynamics();
+  P_ = P;
 }
 
 double AnalysisModel::termValue(const std::vector<Term>& terms, const Eigen::VectorXd& x,
@@ -467,15 +522,20 @@ Status AnalysisModel::updateElements() {
   // element starts its next update from its own) is the same whatever the order and the number of
   // threads: elements share nothing, read only their nodes, and the assembly stays serial, so
   // results are bit-identical at any thread count.
+  // Sleeping contact pairs (far apart) are skipped: checkSleepingPairs looks at them once a step.
   if (threads_ > 1 && count > 1) {
 #pragma omp parallel for schedule(dynamic, 4) num_threads(threads_)
-    for (std::ptrdiff_t k = 0; k < count; ++k)
-      elementStatus_[static_cast<std::size_t>(k)] = updateElement(elements_[static_cast<std::size_t>(k)], dt);
+    for (std::ptrdiff_t k = 0; k < count; ++k) {
+      ElementLink& l = elements_[static_cast<std::size_t>(k)];
+      if (!l.asleep) elementStatus_[static_cast<std::size_t>(k)] = updateElement(l, dt);
+    }
   } else {
-    for (std::ptrdiff_t k = 0; k < count; ++k)
-      elementStatus_[static_cast<std::size_t>(k)] = updateElement(elements_[static_cast<std::size_t>(k)], dt);
+    for (std::ptrdiff_t k = 0; k < count; ++k) {
+      ElementLink& l = elements_[static_cast<std::size_t>(k)];
+      if (!l.asleep) elementStatus_[static_cast<std::size_t>(k)] = updateElement(l, dt);
+    }
   }
-  elementUpdates_ += count;
+  elementUpdates_ += count - sleeping_;
   for (const Status s : elementStatus_)
     if (!ok(s)) return s;
   return Status::Ok;
@@ -530,7 +590,7 @@ void AnalysisModel::formResidual(const AssemblyCoefficients& c, Eigen::VectorXd&
   for (std::size_t k = 0; k < elements_.size(); ++k) {
     const ElementLink& l = elements_[k];
     const elements::Element& e = *l.element;
-    if (!e.isActive()) continue;
+    if (l.asleep || !e.isActive()) continue;
     if (global) {
       if (rayleighLeft_[k] == 0) {
         const auto f = e.resistingForce();
@@ -623,7 +683,7 @@ const Eigen::SparseMatrix<double>& AnalysisModel::formTangent(const AssemblyCoef
   if (!constantFor_ || !constantFor_->sameMatrix(c)) {
     std::fill(values, values + nnz, 0.0);
     for (ElementLink& l : elements_)
-      if (l.element->isLinear() && l.element->isActive()) addElementTangent(values, l, c);
+      if (!l.asleep && l.element->isLinear() && l.element->isActive()) addElementTangent(values, l, c);
     if (c.cM != 0.0 || c.cC != 0.0) {
       for (NodeLink& nl : nodes_) {
         const double f = c.cM + c.cC * nl.alphaM;
@@ -642,7 +702,7 @@ const Eigen::SparseMatrix<double>& AnalysisModel::formTangent(const AssemblyCoef
     std::copy(constantValues_.begin(), constantValues_.end(), values);
   }
   for (ElementLink& l : elements_)
-    if (!l.element->isLinear() && l.element->isActive()) addElementTangent(values, l, c);
+    if (!l.asleep && !l.element->isLinear() && l.element->isActive()) addElementTangent(values, l, c);
   return A_;
 }
 

@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "contact/NodeToSurfaceContact3d.h"
 #include "materials/Status.h"
 #include "tcl/domain/Domain.h"
 
@@ -106,6 +107,24 @@ class AnalysisModel {
 
   domain::Domain& domain() noexcept { return domain_; }
 
+  // --- sleeping contact pairs -------------------------------------------------------------
+  // A nodeToSurface pair with a search distance that is far apart "sleeps": it is left out of the
+  // matrix pattern (no fill in the factorisation) and out of the iterations' element updates, and
+  // is checked once per converged step by its distance bound alone (a few flops on its nodes'
+  // displacements). A sleeper found near is woken: the pattern is rebuilt before the next step,
+  // and when it would already carry force the step is redone with it awake. An awake pair falls
+  // asleep when it is beyond twice its search distance (hysteresis, so that a pair hovering at
+  // the distance does not rebuild the pattern step after step).
+  /// Outcome of checkSleepingPairs.
+  enum class SleepCheck { Unchanged, PatternChange, RedoStep };
+  /// After a step converged (trial state): brings sleepers' trial states up to date, notes pairs
+  /// to wake or to put to sleep. RedoStep when a sleeper would carry force in this trial state.
+  SleepCheck checkSleepingPairs();
+  /// Rebuilds the pattern and scatter with the noted pairs woken or asleep (equations unchanged);
+  /// the linear system must then analyse the new pattern.
+  void applySleepChanges();
+  long sleepingPairs() const noexcept { return sleeping_; }
+
  private:
   struct Term {
     int index;    // >= 0: equation; < 0: prescribed slot -index-1
@@ -136,6 +155,9 @@ class AnalysisModel {
     Eigen::VectorXd u, v, a;          // gather buffers
     mutable Eigen::VectorXd force;    // residual work buffer
     Eigen::MatrixXd work;             // tangent work buffer
+    contact::NodeToSurfaceContact3d<3>* pair3 = nullptr;  // a contact pair that may sleep
+    contact::NodeToSurfaceContact3d<6>* pair6 = nullptr;
+    bool asleep = false;              // left out of the pattern and the iterations
   };
   struct NodeLink {
     domain::Node* node;
@@ -153,6 +175,10 @@ class AnalysisModel {
   };
 
   void numberEquations();
+  /// Whether the pair of link l sleeps in the next pattern (sleepWanted_, else its committed state).
+  bool wantsSleep(const ElementLink& l) const;
+  /// Sleeper's far test on its nodes' trial translations (true: still far, trial state set).
+  bool sleeperStaysFar(ElementLink& l, double dt) const;
   void buildScatter();
   void buildConstantDynamics();
   [[nodiscard]] Status updateElement(ElementLink& l, double dt) const;
@@ -192,6 +218,9 @@ class AnalysisModel {
   std::vector<double> constantValues_;
   std::optional<AssemblyCoefficients> constantFor_;
   long elementUpdates_ = 0;
+  std::map<const elements::Element*, bool> sleepWanted_;  // pairs to wake (false) or put to sleep
+  long sleeping_ = 0;
+  std::vector<std::size_t> pairLinks_;  // elements_ indices of the pairs that may sleep
   int threads_ = 1;
   std::vector<Status> elementStatus_;  // per element, of the last updateElements
   mutable Eigen::VectorXd eqVel_, eqAcc_;

@@ -5,6 +5,7 @@
 #include <tcl.h>
 
 #include <array>
+#include <cstdio>
 #include <memory>
 #include <optional>
 #include <string>
@@ -14,7 +15,9 @@
 #include "contact/NodeToSurfaceContact3d.h"
 #include "materials/GapSpring.h"
 #include "materials/InputError.h"
+#include "tcl/analysis/AnalysisBuilder.h"
 #include "tcl/commands/Registry.h"
+#include "tcl/commands/TclResult.h"
 
 namespace dabs::tcl {
 
@@ -227,6 +230,68 @@ void pounding(Runtime& rt, ArgReader& args) {
   Tcl_SetObjResult(rt.interp, result);
 }
 
+// --- contactStepping ?-maxStep h? ?-lookAhead n? ?-overshoot f? ?-eachStep script? | -off -----
+
+/// Turns event-located contact stepping of transient analyses on (with the options given; the
+/// defaults are those of ContactSteppingParams) or off (-off). Without arguments it returns
+/// its state as a dict: on, maxStep, lookAhead, overshoot, pairs (when on), and since the last
+/// wipeAnalysis contactSteps, patternChanges (matrix patterns rebuilt as far contact pairs
+/// fell asleep or woke, AnalysisModel's sleeping pairs) and redoneSteps (steps redone because a
+/// sleeping pair would have carried force). The -eachStep
+/// script runs at global level after every committed step while stepping is on (a script that
+/// follows peaks between analyze's output steps); an error in it stops the analysis with that
+/// error. Set after `wipeAnalysis`, which turns stepping off.
+void contactSteppingCmd(Runtime& rt, ArgReader& args) {
+  auto& analysis = *rt.analysis;
+  if (!args.hasMore()) {
+    const analysis::ContactStepping* cs = analysis.contactStepping();
+    std::string text = "on " + std::string(cs ? "1" : "0");
+    if (cs) {
+      char buf[160];
+      std::snprintf(buf, sizeof buf, " maxStep %.17g lookAhead %.17g overshoot %.17g pairs %zu",
+                    cs->params().maxStep, cs->params().lookAhead, cs->params().overshoot, cs->pairs());
+      text += buf;
+    }
+    text += " contactSteps " + std::to_string(analysis.statistics().contactSteps) + " patternChanges " +
+            std::to_string(analysis.statistics().patternChanges) + " redoneSteps " +
+            std::to_string(analysis.statistics().redoneSteps);
+    setResult(rt, text);
+    return;
+  }
+  if (args.flag("-off")) {
+    args.finish();
+    analysis.setContactStepping(std::nullopt);
+    analysis.afterStep = nullptr;
+    return;
+  }
+  analysis::ContactSteppingParams p;
+  p.maxStep = args.option("-maxStep", p.maxStep);
+  p.lookAhead = args.option("-lookAhead", p.lookAhead);
+  p.overshoot = args.option("-overshoot", p.overshoot);
+  const auto each = args.optionalWordOption("-eachStep");
+  args.finish();
+  try {
+    p.validate();
+  } catch (const InputError& e) {
+    args.fail("-" + e.field() + " " + e.reason());
+  }
+  analysis.setContactStepping(p);
+  analysis.afterStep = nullptr;
+  if (each && !each->empty()) {
+    // The script object lives as long as the hook (shared by its copies).
+    std::shared_ptr<Tcl_Obj> script(Tcl_NewStringObj(each->c_str(), static_cast<int>(each->size())),
+                                    [](Tcl_Obj* o) { Tcl_DecrRefCount(o); });
+    Tcl_IncrRefCount(script.get());
+    Tcl_Interp* interp = rt.interp;
+    analysis.afterStep = [interp, script]() -> int {
+      if (Tcl_EvalObjEx(interp, script.get(), TCL_EVAL_GLOBAL) != TCL_OK)
+        throw InputError("contactStepping -eachStep", Tcl_GetStringResult(interp));
+      Tcl_ResetResult(interp);
+      return 0;
+    };
+  }
+}
+
 constexpr const char* kContactOptions =
     "-K K | -EAL E A L ?-e e? ?-et et? ?-mu_s mus? ?-mu_k muk? ?-masses M1 M2? ?-search dist?";
 
@@ -239,7 +304,12 @@ const std::string kPoundingUsage =
 }  // namespace
 
 std::span<const CommandEntry> contactCommands() {
-  static const CommandEntry kRows[] = {{"pounding", kPoundingUsage, pounding}};
+  static const CommandEntry kRows[] = {
+      {"pounding", kPoundingUsage, pounding},
+      {"contactStepping",
+       "contactStepping ?-maxStep h? ?-lookAhead n? ?-overshoot f? ?-eachStep script? | -off",
+       contactSteppingCmd},
+  };
   return kRows;
 }
 

@@ -3,7 +3,7 @@
 # of DABS. A readable model that a user can copy and change: every dimension, material and
 # device is a variable at the top, with its unit.
 #
-#   dabs verification/bridge/bridge.tcl ?case? ?scale? ?dt? ?integrator? ?tol? ?motion? ?outDir?
+#   dabs verification/bridge/bridge.tcl ?case? ?scale? ?dt? ?integrator? ?tol? ?motion? ?outDir? ?nSpans?
 #
 #   case        all (default: the three cases and the report) | nopound | pound | countermeasure
 #   scale       factor on the ground motion (default 1.0)
@@ -13,15 +13,16 @@
 #   motion      auto (default: the Takatori record if found, else the fitted pulse) | record |
 #               pulse | path/to/file.AT2
 #   outDir      where the report, the CSV histories and the plots go (default ./bridge-out)
+#   nSpans      number of spans (default 3, the paper's bridge; pier heights repeat as a pattern)
 #
 # Units: kN, m, s, t (tonne = kN s^2/m), kPa. Axes: X along the bridge, Y transverse, Z up.
 #
 # The model (see README "The bridge case study" and report.md for the results):
-#   PC1 ... PC4  RC piers on pile-group foundations (springs + dashpots derived below), a fiber
+#   PC1 ... PC4  (PC(n+1) for n spans) RC piers on pile-group foundations (springs + dashpots derived below), a fiber
 #                forceBeamColumn plastic-hinge segment at the base, elastic segments above, a cap
-#   G1 G2 G3     simply supported steel girders, elastic 3D beams with mass, each on two Yoshida
+#   G1 G2 G3     (G1 ... Gn) simply supported steel girders, elastic 3D beams with mass, each on two Yoshida
 #                high-damping-rubber bearings (fitted set (a) of verification/bearing/fitted-parameters.md)
-#   joints       expansion joints over PC2 and PC3: point-to-surface pounding both ways between the
+#   joints       expansion joints over PC2 and PC3 (every inner pier): point-to-surface pounding both ways between the
 #                girder end faces (4-node faces rigidly tied to the girder end); countermeasure:
 #                cable restrainers (tension) and rubber bumpers (compression) between the girder ends,
 #                longitudinal and transverse
@@ -29,7 +30,7 @@
 #                contact and the restrainers decline Rayleigh damping; foundation dashpots
 #   motion       one horizontal component applied at angle $motionAngle to the bridge axis
 #   stepping     dt, shortened to at most $contactDt while a joint is closed or closing and cut at
-#                each predicted first contact (nextStepLength)
+#                each predicted first contact (the driver's contactStepping)
 
 # ---------------------------------------------------------------------------------------------
 # Parameters
@@ -38,12 +39,14 @@ set g 9.81                  ;# m/s^2
 set pi [expr {acos(-1.0)}]
 
 # Layout
-set nSpans 3
+set nSpans 3                ;# simply supported spans (a viaduct of any length: one joint per inner pier)
 set spanLength 40.0         ;# m, pier axis to pier axis
 set pierHeights {10.0 14.0 8.0 12.0} ;# m, PC1..PC4, top of footing to top of cap (bearing seat);
                             ;# the ground is uneven, the deck level: the piers differ, and so do
-                            ;# the periods of the spans, which is what makes adjacent girders pound
-set jointGap 0.05           ;# m, expansion-joint gap between girder end faces over PC2 and PC3
+                            ;# the periods of the spans, which is what makes adjacent girders pound.
+                            ;# nSpans + 1 heights, or a shorter list repeated as a pattern along
+                            ;# the viaduct (pierHeight)
+set jointGap 0.05           ;# m, expansion-joint gap between girder end faces over the inner piers
 set bearingOffset 0.60      ;# m, bearing axis from the pier axis along X
 set bearingHeight 0.30      ;# m, bottom to top plate of a bearing (rubber + steel plates)
 
@@ -138,7 +141,7 @@ set serviceMaxResidual $jointGap  ;# m, largest residual longitudinal or transve
 set defaultDt 0.01
 set defaultTol 1.0e-4
 set defaultIntegrator Newmark
-set contactDt 0.0005        ;# s, longest step while a joint is closed or closing (nextStepLength)
+set contactDt 0.0005        ;# s, longest step while a joint is closed or closing (contactStepping -maxStep)
 set contactLookahead 2.0    ;# steps: sub-step when the gap would close within this many steps
 set contactOvershoot 1.2    ;# a step cut at a predicted first contact ends at 1.2 x that time
 # The parameters above, which buildModel reads (a script that sources this file keeps its own
@@ -148,19 +151,43 @@ set parameterNames [info globals]
 # ---------------------------------------------------------------------------------------------
 # Model
 # ---------------------------------------------------------------------------------------------
-# Node numbers: pier p: 1000p + {1 ground, 2 base, 3 top of hinge, 4 mid, 5 top}, bearing
-# bottoms 1000p + {11 left, 12 right}; girder s: 10000s + {1 .. n} along the axis, bearing tops
-# 10000s + {51 start, 52 end}, face corners 10000s + {61..64 start, 71..74 end}, contactor points
-# 10000s + {65..68 start, 75..78 end}, device nodes 10000s + {81 start, 82 end}. Element
-# numbers: pier p 1000p + {1 foundation, 2 hinge, 3, 4}, bearings 1000p + {11, 12}, girder s
-# 10000s + i, pounding 50000 + 100j, devices 60000 + 10j.
+# Node numbers: pier p: P(p) + {1 ground, 2 base, 3 top of hinge, 4 mid, 5 top}, bearing
+# bottoms P(p) + {11 left, 12 right}; girder s: G(s) + {1 .. n} along the axis, bearing tops
+# G(s) + {51 start, 52 end}, face corners G(s) + {61..64 start, 71..74 end}, contactor points
+# G(s) + {65..68 start, 75..78 end}, device nodes G(s) + {81 start, 82 end}. Element
+# numbers: pier p P(p) + {1 foundation, 2 hinge, 3, 4}, bearings P(p) + {11, 12}, girder s
+# G(s) + i, pounding (8 pairs) from C(j), devices D(j) for joint j (over pier j + 1).
+# Indices up to 9 keep the short numbers of the three-span study, P = 1000p, G = 10000s,
+# C = 50000 + 100j, D = 60000 + 10j; from 10 on each kind has its own range (P = 10^7 + 100p,
+# G = 2 10^7 + 100s, C = 3 10^7 + 100j, D = 4 10^7 + 10j), so no two numbers meet at any length.
+proc pierBase {p} { return [expr {$p <= 9 ? 1000 * $p : 10000000 + 100 * $p}] }
+proc girderBase {s} { return [expr {$s <= 9 ? 10000 * $s : 20000000 + 100 * $s}] }
+proc poundingBase {j} { return [expr {$j <= 9 ? 50000 + 100 * $j : 30000000 + 100 * $j}] }
+proc deviceTag {j} { return [expr {$j <= 9 ? 60000 + 10 * $j : 40000000 + 10 * $j}] }
 
 proc pierX {p} { return [expr {($p - 1) * $::spanLength}] }
+# Height of pier p: the list pierHeights, repeated as a pattern when it is shorter than the piers.
+proc pierHeight {p} { return [lindex $::pierHeights [expr {($p - 1) % [llength $::pierHeights]}]] }
 # Bearing element tags, one per girder end, along the bridge: 1012 (PC1), 2011, 2012, ... (PC4).
 proc bearingTags {} {
   set tags {}
-  for {set s 1} {$s <= $::nSpans} {incr s} { lappend tags [expr {1000 * $s + 12}] [expr {1000 * ($s + 1) + 11}] }
+  for {set s 1} {$s <= $::nSpans} {incr s} { lappend tags [bearingTag $s 12] [bearingTag [expr {$s + 1}] 11] }
   return $tags
+}
+# Bearing on pier p: side 11 carries the girder to its left (its end), 12 the one to its right.
+proc bearingTag {p side} { return [expr {[pierBase $p] + $side}] }
+# {pier side} of a bearing tag.
+proc bearingPlace {bt} {
+  for {set p 1} {$p <= $::nSpans + 1} {incr p} {
+    set side [expr {$bt - [pierBase $p]}]
+    if {$side == 11 || $side == 12} { return [list $p $side] }
+  }
+  error "bearing $bt is not a bearing of the $::nSpans-span model"
+}
+# Name of a bridge of nSpans spans in titles.
+proc bridgeName {} {
+  set words {1 One 2 Two 3 Three 4 Four 5 Five}
+  return [expr {[dict exists $words $::nSpans] ? "[dict get $words $::nSpans]-span bridge" : "$::nSpans-span viaduct"}]
 }
 # Mass moments of inertia about X, Y, Z of a solid block of mass m and sides {a b c} along X, Y, Z.
 proc blockInertia {m sides} {
@@ -222,7 +249,7 @@ proc buildModel {case} {
   # Damping targets: piers at their cantilever period (cap + a quarter of the pier mass on
   # 3 E Ieff / H^3), girders at their first vertical mode (pi^2/L^2 sqrt(EI/m)).
   set hMean 0.0
-  foreach h $pierHeights { set hMean [expr {$hMean + $h / [llength $pierHeights]}] }
+  for {set p 1} {$p <= $nSpans + 1} {incr p} { set hMean [expr {$hMean + [pierHeight $p] / ($nSpans + 1)}] }
   set kPier [expr {3.0 * $concreteE * $crackedFactor * $Ig / pow($hMean, 3)}]
   set wPier [expr {sqrt($kPier / ($capMass + 0.24 * $pierMass * $hMean))}]
   set wGirder [expr {$pi * $pi / ($spanLength * $spanLength) * sqrt($steelE * $girderIvert / $girderMass)}]
@@ -249,12 +276,14 @@ proc buildModel {case} {
   biaxialMaterial Yoshida 1 $Y0 $U0 $n $a0 $b $q $gm
 
   # --- piers ---
-  set zTop [tcl::mathfunc::max {*}$pierHeights]   ;# bearing seats; the highest footing at Z = 0
+  set heights {}
+  for {set p 1} {$p <= $nSpans + 1} {incr p} { lappend heights [pierHeight $p] }
+  set zTop [tcl::mathfunc::max {*}$heights]   ;# bearing seats; the highest footing at Z = 0
   set pierEles {}
   for {set p 1} {$p <= $nSpans + 1} {incr p} {
     set x [pierX $p]
-    set b [expr {1000 * $p}]
-    set H [lindex $pierHeights [expr {$p - 1}]]
+    set b [pierBase $p]
+    set H [pierHeight $p]
     set z0 [expr {$zTop - $H}]
     # Pier mass lumped at the nodes, half of each segment to its end nodes (what a lumped element
     # mass gives), so that every mass is a nodal mass: the dead load, the ground-motion input -M r
@@ -298,7 +327,7 @@ proc buildModel {case} {
   set girderEles {}
   set ::girderEndNodes {}
   for {set s 1} {$s <= $nSpans} {incr s} {
-    set b [expr {10000 * $s}]
+    set b [girderBase $s]
     set x0 [pierX $s]; set x1 [pierX [expr {$s + 1}]]
     # end faces: at the joints half a gap from the pier axis; at the abutment-side ends (PC1,
     # PC4) the girder ends at the same overhang
@@ -340,8 +369,8 @@ proc buildModel {case} {
     node [expr {$b + 52}] $xb1 0.0 [expr {$zTop + $bearingHeight}]
     rigidLink beam [expr {$b + 2}] [expr {$b + 51}]
     rigidLink beam [expr {$b + $nNodes - 1}] [expr {$b + 52}]
-    set bs [expr {1000 * $s + 12}]
-    set be [expr {1000 * ($s + 1) + 11}]
+    set bs [bearingTag $s 12]
+    set be [bearingTag [expr {$s + 1}] 11]
     element yoshidaBearing $bs $bs [expr {$b + 51}] 1 -Tr $bearingTr -Kv $bearingKv -Kt $bearingKt -Kr $bearingKroll $bearingKbend
     element yoshidaBearing $be $be [expr {$b + 52}] 1 -Tr $bearingTr -Kv $bearingKv -Kt $bearingKt -Kr $bearingKroll $bearingKbend
     # end faces: corners (y, z) counter-clockwise seen from +X
@@ -370,8 +399,8 @@ proc buildModel {case} {
   set ::poundingEles {}
   set K [expr {$steelE * $girderA / $spanLength / 8.0}]
   for {set j 1} {$j < $nSpans} {incr j} {
-    set left [expr {10000 * $j}]
-    set right [expr {10000 * ($j + 1)}]
+    set left [girderBase $j]
+    set right [girderBase [expr {$j + 1}]]
     set list {}
     if {$case ne "nopound"} {
       # The left girder's end face has outward normal +X and the right girder's start face -X:
@@ -380,7 +409,7 @@ proc buildModel {case} {
       set faceR [list [expr {$right + 61}] [expr {$right + 64}] [expr {$right + 63}] [expr {$right + 62}]]
       set pointsL [list [expr {$left + 75}] [expr {$left + 76}] [expr {$left + 77}] [expr {$left + 78}]]
       set pointsR [list [expr {$right + 65}] [expr {$right + 66}] [expr {$right + 67}] [expr {$right + 68}]]
-      set list [pounding [expr {50000 + 100 * $j}] -side1 $pointsL $faceL -side2 $pointsR $faceR \
+      set list [pounding [poundingBase $j] -side1 $pointsL $faceL -side2 $pointsR $faceR \
           -K $K -e $restitution -mu_s $frictionS -mu_k $frictionK \
           -masses $spanMass $spanMass -search $contactSearch]
     }
@@ -399,7 +428,7 @@ proc buildModel {case} {
       uniaxialMaterial Restrainer [expr {$m + 4}] $restrainerK $transverseSlack -Fy $restrainerFy -b $restrainerB
       uniaxialMaterial Bumper [expr {$m + 5}] $bumperK $transverseSlack
       uniaxialMaterial Parallel [expr {$m + 6}] [expr {$m + 4}] [expr {$m + 5}]
-      element zeroLength [expr {60000 + 10 * $j}] $nL $nR -mat [expr {$m + 3}] [expr {$m + 6}] -dir 1 2
+      element zeroLength [deviceTag $j] $nL $nR -mat [expr {$m + 3}] [expr {$m + 6}] -dir 1 2
     }
   }
 
@@ -462,42 +491,141 @@ proc setIntegrator {integrator} {
   }
 }
 
-# Length of the next analysis step, at most $remaining (the rest of the current output step).
-# Impacts last a few hundredths of a second and start with a jump of the dashpot force, so while a
-# pair is closed or, from its gap and gap rate over the last step, would close within
-# $contactLookahead steps, the step is at most $contactDt; and a step in which a pair is predicted
-# to close is cut to end just past that instant, so the jump falls on a step boundary (event
-# location; without it the impacts' error is of order dt whatever the step).
-proc nextStepLength {remaining} {
-  upvar #0 contactGapLast last contactStepLast lastH
-  set h $remaining
-  set near 0
-  set hMin [expr {0.01 * $::contactDt}]
-  foreach list $::poundingEles {
-    foreach e $list {
-      set gap [eleResponse $e gap]
-      if {$gap < 0.0 || [eleResponse $e status] != 0} { set near 1 }
-      if {[info exists last($e)] && $lastH > 0.0 && $gap > 0.0 && $gap < $last($e)} {
-        set tClose [expr {$gap * $lastH / ($last($e) - $gap)}]
-        if {$tClose <= $::contactLookahead * $remaining} { set near 1 }
-        # (1.2 tClose may pass the end of the output step by a fraction of a contact step; the
-        # row is then written at that time and the next output step is that much shorter)
-        if {$tClose < $h} { set h [expr {max($::contactOvershoot * $tClose, $hMin)}] }
-      }
-      set last($e) $gap
-    }
-  }
-  if {$near} { set h [expr {min($h, $::contactDt)}] }
-  if {$remaining - $h < $hMin} { set h $remaining }
-  set lastH $h
-  return $h
-}
-
 # ---------------------------------------------------------------------------------------------
 # One run: returns a dict of results; writes the time histories to $csv (if not empty). perStep,
 # if given, is a command prefix evaluated once before the first step and after every converged
 # step (energy.tcl follows the energy balance with it).
 # ---------------------------------------------------------------------------------------------
+# The quantities followed, for any number of spans: every joint (over PC2 ... PCn: peak and
+# residual gaps in x, y, z, largest opening and closing, pounding force and impacts), every
+# bearing (peak and residual displacements, peak shear strain, damage at the end), every girder
+# (mid-span longitudinal displacement and rotation about the vertical) and the middle girder's
+# deck and bearings (the histories of the three-span study: G2). Sets, in namespace run, joints,
+# jointBearing (array), allBearings, midBearings, mids, midGirder, peak, last, impacts, closed
+# and the CSV header columns.
+namespace eval run {}
+proc monitorSetup {} {
+  foreach v {joints jointBearing allBearings midBearings mids midGirder peak last impacts closed columns} { variable ::run::$v }
+  set nJ [expr {$::nSpans - 1}]
+  set joints {}
+  array unset jointBearing
+  for {set j 1} {$j <= $nJ} {incr j} {
+    lappend joints [list [lindex $::girderEndNodes [expr {2 * $j - 1}]] [lindex $::girderEndNodes [expr {2 * $j}]]]
+    set jointBearing([bearingTag [expr {$j + 1}] 11]) 1   ;# the bearings at the joints
+    set jointBearing([bearingTag [expr {$j + 1}] 12]) 1
+  }
+  set allBearings [bearingTags]        ;# every girder end, PC1 ... PC(n+1)
+  set midGirder [expr {$::nSpans / 2 + 1}]
+  set midBearings [list [bearingTag $midGirder 12] [bearingTag [expr {$midGirder + 1}] 11]]
+  set mids {}
+  for {set s 1} {$s <= $::nSpans} {incr s} { lappend mids [dict get $::girderMid $s] }
+  set peak [dict create]
+  for {set j 1} {$j <= $nJ} {incr j} { foreach d {x y z} { dict set peak gap$j$d 0.0 } }
+  foreach key {open close force} { for {set j 1} {$j <= $nJ} {incr j} { dict set peak $key$j 0.0 } }
+  for {set s 1} {$s <= $::nSpans} {incr s} { dict set peak rot$s 0.0 }
+  dict set peak deckx 0.0; dict set peak decky 0.0
+  for {set s 1} {$s <= $::nSpans} {incr s} { dict set peak g${s}x 0.0 }
+  foreach bt $allBearings { dict set peak strain$bt 0.0; dict set peak bx$bt 0.0; dict set peak by$bt 0.0 }
+  set last [dict create]
+  set impacts [lrepeat $nJ 0]
+  set closed [lrepeat $nJ 0]
+  # CSV columns, in the order monitorStep writes them (the three-span study's columns for 3 spans)
+  set columns {t}
+  for {set j 1} {$j <= $nJ} {incr j} { lappend columns gap${j}x gap${j}y }
+  foreach bt $allBearings { if {[info exists jointBearing($bt)]} { lappend columns strain$bt } }
+  foreach bt $midBearings { lappend columns bx$bt by$bt }
+  for {set j 1} {$j <= $nJ} {incr j} { lappend columns force$j }
+  for {set s 1} {$s <= $::nSpans} {incr s} { lappend columns rot$s }
+  lappend columns deck${midGirder}x deck${midGirder}y
+  for {set s 1} {$s <= $::nSpans} {incr s} { lappend columns g${s}x }
+  for {set j 1} {$j <= $nJ} {incr j} { lappend columns gap${j}z }
+  foreach bt $allBearings { if {![info exists jointBearing($bt)]} { lappend columns strain$bt } }
+}
+
+# After a converged step: updates the peaks, the residuals (last), the impacts; returns the CSV row.
+proc monitorStep {} {
+  foreach v {joints jointBearing allBearings midBearings mids midGirder peak last impacts closed} { variable ::run::$v }
+  set row [list [getTime]]
+  set j 0
+  foreach pair $joints {
+    incr j
+    lassign $pair a b
+    set gx [expr {[nodeDisp $b 1] - [nodeDisp $a 1]}]
+    set gy [expr {[nodeDisp $b 2] - [nodeDisp $a 2]}]
+    lappend row $gx $gy
+    if {abs($gx) > abs([dict get $peak gap${j}x])} { dict set peak gap${j}x $gx }
+    if {$gx > [dict get $peak open$j]} { dict set peak open$j $gx }    ;# largest opening
+    if {$gx < [dict get $peak close$j]} { dict set peak close$j $gx }  ;# largest closing (< 0)
+    if {abs($gy) > abs([dict get $peak gap${j}y])} { dict set peak gap${j}y $gy }
+    dict set last gap${j}x $gx
+    dict set last gap${j}y $gy
+  }
+  set disps {}
+  set gz {}
+  set j 0
+  foreach pair $joints {
+    incr j
+    lassign $pair a b
+    set z [expr {[nodeDisp $b 3] - [nodeDisp $a 3]}]
+    lappend gz $z
+    if {abs($z) > abs([dict get $peak gap${j}z])} { dict set peak gap${j}z $z }
+    dict set last gap${j}z $z
+  }
+  set endStrains {}
+  foreach bt $allBearings {
+    set e [eleResponse $bt shearStrain]
+    if {[info exists jointBearing($bt)]} { lappend row $e } else { lappend endStrains $e }
+    if {$e > [dict get $peak strain$bt]} { dict set peak strain$bt $e }
+    lassign [eleResponse $bt deformation] d0 d1 d2
+    if {abs($d1) > abs([dict get $peak bx$bt])} { dict set peak bx$bt $d1 }
+    if {abs($d2) > abs([dict get $peak by$bt])} { dict set peak by$bt $d2 }
+    dict set last bx$bt $d1
+    dict set last by$bt $d2
+    if {$bt in $midBearings} { lappend disps $d1 $d2 }
+  }
+  lappend row {*}$disps
+  set j 0
+  foreach list $::poundingEles {
+    incr j
+    set f 0.0
+    foreach e $list { set f [expr {$f + [lindex [eleResponse $e contactForce] 0]}] }
+    lappend row $f
+    if {$f > [dict get $peak force$j]} { dict set peak force$j $f }
+    set isClosed [expr {$f > 0.0}]
+    if {$isClosed && ![lindex $closed [expr {$j - 1}]]} { lset impacts [expr {$j - 1}] [expr {[lindex $impacts [expr {$j - 1}]] + 1}] }
+    lset closed [expr {$j - 1}] $isClosed
+  }
+  set s 0
+  foreach m $mids {
+    incr s
+    set r [nodeDisp $m 6]
+    lappend row $r
+    if {abs($r) > abs([dict get $peak rot$s])} { dict set peak rot$s $r }
+  }
+  set dx [nodeDisp [lindex $mids [expr {$midGirder - 1}]] 1]; set dy [nodeDisp [lindex $mids [expr {$midGirder - 1}]] 2]
+  lappend row $dx $dy
+  set s 0
+  foreach m $mids {
+    incr s
+    set x [nodeDisp $m 1]
+    lappend row $x
+    if {abs($x) > abs([dict get $peak g${s}x])} { dict set peak g${s}x $x }
+  }
+  lappend row {*}$gz {*}$endStrains
+  if {abs($dx) > abs([dict get $peak deckx])} { dict set peak deckx $dx }
+  if {abs($dy) > abs([dict get $peak decky])} { dict set peak decky $dy }
+  return $row
+}
+
+# Run by the driver after every converged step (contactStepping -eachStep): follows the
+# quantities, writes the CSV row at the end of each output step (run::tEnd), calls perStep.
+proc run::afterStep {} {
+  variable fh; variable tEnd; variable dt; variable perStep
+  set row [monitorStep]
+  if {$fh ne "" && $tEnd - [getTime] <= 1e-9 * $dt} { puts $fh [join $row ,] }
+  if {$perStep ne ""} { uplevel #0 $perStep }
+}
+
 proc runCase {case scale dt integrator tol motion {csv ""} {perStep ""}} {
   global duration
   set wall0 [clock microseconds]
@@ -513,17 +641,8 @@ proc runCase {case scale dt integrator tol motion {csv ""} {perStep ""}} {
   setIntegrator $integrator
   analysis Transient -numSubLevels 4 -numSubSteps 4
 
-  # Quantities followed
-  lassign $::girderEndNodes g1s g1e g2s g2e g3s g3e
-  set joints [list [list $g1e $g2s] [list $g2e $g3s]]
-  set bearings {2011 2012 3011 3012}   ;# PC2 left/right, PC3 left/right (the joints)
-  set allBearings [bearingTags]        ;# every girder end, PC1 ... PC4
-  set mids [list [dict get $::girderMid 1] [dict get $::girderMid 2] [dict get $::girderMid 3]]
-  set peak [dict create]
-  foreach key {gap1x gap1y gap1z gap2x gap2y gap2z open1 open2 close1 close2 force1 force2 rot1 rot2 rot3 deckx decky g1x g2x g3x} { dict set peak $key 0.0 }
-  foreach bt $allBearings { dict set peak strain$bt 0.0; dict set peak bx$bt 0.0; dict set peak by$bt 0.0 }
-  set impacts {0 0}
-  set closed {0 0}
+  monitorSetup
+  foreach v {joints allBearings midBearings midGirder columns} { set $v [set ::run::$v] }
   set fh ""
   if {$csv ne ""} {
     # The animated page of this case: the bridge with its members' real sizes, bearings coloured
@@ -532,128 +651,68 @@ proc runCase {case scale dt integrator tol motion {csv ""} {perStep ""}} {
     foreach bt $allBearings { lappend pads $bt }
     set caps {}; set footings {}; set elasticPier {}
     for {set p 1} {$p <= $::nSpans + 1} {incr p} {
-      lappend caps [expr {1000 * $p + 5}]; lappend footings [expr {1000 * $p + 2}]
-      lappend elasticPier [expr {1000 * $p + 3}] [expr {1000 * $p + 4}]
+      set b [pierBase $p]
+      lappend caps [expr {$b + 5}]; lappend footings [expr {$b + 2}]
+      lappend elasticPier [expr {$b + 3}] [expr {$b + 4}]
     }
     set padSide [expr {sqrt($::bearingArea)}]
-    recorder Viewer -file "[file rootname $csv].html" -dT $::viewerDt -title "Three-span bridge: $case" \
-      -plots [list [list "girder G2 left end, longitudinal (m)" node $g2s 1 disp] \
-                   [list "PC3 bearing of G2, shear strain" ele 3011 shearStrain 1] \
-                   [list "PC2 bearing of G2, shear strain" ele 2012 shearStrain 1]] \
+    set gaps {}
+    set j 0
+    foreach pair $joints { lappend gaps [list Gap[incr j] {*}$pair] }
+    set mg G$midGirder
+    recorder Viewer -file "[file rootname $csv].html" -dT $::viewerDt -title "[bridgeName]: $case" \
+      -plots [list [list "girder $mg left end, longitudinal (m)" node [lindex $::girderEndNodes [expr {2 * $midGirder - 2}]] 1 disp] \
+                   [list "PC[expr {$midGirder + 1}] bearing of $mg, shear strain" ele [lindex $midBearings 1] shearStrain 1] \
+                   [list "PC$midGirder bearing of $mg, shear strain" ele [lindex $midBearings 0] shearStrain 1]] \
       -beamSection [list [list rect $::girderWidth $::girderDepth {*}$::girderEles] \
                          [list circle $::pierD {*}$elasticPier]] \
       -bearingPad [list [list $padSide $padSide {*}$pads]] \
       -block [list [list {*}$::capSize -dz [expr {-0.5 * [lindex $::capSize 2]}] {*}$caps] \
                    [list {*}$::footingSize -dz [expr {-0.5 * [lindex $::footingSize 2]}] {*}$footings]] \
-      -gaps [list [list Gap1 $g1e $g2s] [list Gap2 $g2e $g3s]]
+      -gaps $gaps
     set fh [open $csv w]
-    # columns 1-20 as before; 21-23 longitudinal displacement of the girders' mid-span nodes (to
-    # the ground), 24-25 vertical offset at the joints, 26-27 strains of the end bearings
-    puts $fh "t,gap1x,gap1y,gap2x,gap2y,strain2011,strain2012,strain3011,strain3012,bx2012,by2012,bx3011,by3011,force1,force2,rot1,rot2,rot3,deck2x,deck2y,g1x,g2x,g3x,gap1z,gap2z,strain1012,strain[lindex $allBearings end]"
+    # per joint gaps x y, strains of the joint bearings, the middle girder's bearing
+    # displacements, pounding force per joint, girder rotations, the middle girder's deck, girder
+    # mid-span longitudinal displacements (to the ground), vertical offsets at the joints, strains
+    # of the end bearings (monitorSetup)
+    puts $fh [join $columns ,]
   }
   set nSteps [expr {int(round($duration / $dt))}]
   set failed 0
   set loosened 0
-  set contactSubsteps 0
-  array unset ::contactGapLast
-  set ::contactStepLast 0.0
+  # Event-located contact steps by the driver: at most contactDt while a joint is closed or
+  # closing, a step cut at each predicted first contact (README "Contact stepping"); every
+  # converged step, output step or shorter, goes through run::afterStep.
+  set ::run::fh $fh; set ::run::dt $dt; set ::run::perStep $perStep; set ::run::tEnd 0.0
+  contactStepping -maxStep $::contactDt -lookAhead $::contactLookahead -overshoot $::contactOvershoot \
+      -eachStep run::afterStep
   set wall1 [clock microseconds]
   if {$perStep ne ""} { {*}$perStep }
   for {set step 1} {$step <= $nSteps && !$failed} {incr step} {
     set tEnd [expr {$step * $dt}]
-    while {!$failed} {
-      set remaining [expr {$tEnd - [getTime]}]
-      if {$remaining <= 1e-9 * $dt} { break }
-      set h [nextStepLength $remaining]
-      if {[analyze 1 $h] != 0} {
-        # the driver already sub-stepped; try line search, then Krylov-Newton, with more
-        # iterations, and last a tolerance 100 times looser for this step (contact stick-slip
-        # chattering can make Newton cycle at the 1e-4 m level); such steps are counted as
-        # "loosened"
-        set rc -1
-        foreach alg {NewtonLineSearch KrylovNewton Newton} t [list $tol $tol [expr {100.0 * $tol}]] {
-          algorithm $alg
-          test NormDispIncr $t 100
-          set rc [analyze 1 $h]
-          if {$rc == 0} { if {$t != $tol} { incr loosened }; break }
-        }
-        algorithm Newton
-        test NormDispIncr $tol 30
-        if {$rc != 0} { incr failed; break }
+    set ::run::tEnd $tEnd
+    set remaining [expr {$tEnd - [getTime]}]
+    if {$remaining <= 1e-9 * $dt} { continue }
+    if {[analyze 1 $remaining] != 0} {
+      # the driver already sub-stepped the failed step; try the rest of the output step with line
+      # search, then Krylov-Newton, with more iterations, and last a tolerance 100 times looser
+      # (contact stick-slip chattering can make Newton cycle at the 1e-4 m level); such output
+      # steps are counted as "loosened"
+      set rc -1
+      foreach alg {NewtonLineSearch KrylovNewton Newton} t [list $tol $tol [expr {100.0 * $tol}]] {
+        algorithm $alg
+        test NormDispIncr $t 100
+        set rc [analyze 1 [expr {$tEnd - [getTime]}]]
+        if {$rc == 0} { if {$t != $tol} { incr loosened }; break }
       }
-      if {$h < 0.999 * $dt} { incr contactSubsteps }
-      set row [list [getTime]]
-      set j 0
-      foreach pair $joints {
-        incr j
-        lassign $pair a b
-        set gx [expr {[nodeDisp $b 1] - [nodeDisp $a 1]}]
-        set gy [expr {[nodeDisp $b 2] - [nodeDisp $a 2]}]
-        lappend row $gx $gy
-        if {abs($gx) > abs([dict get $peak gap${j}x])} { dict set peak gap${j}x $gx }
-        if {$gx > [dict get $peak open$j]} { dict set peak open$j $gx }    ;# largest opening
-        if {$gx < [dict get $peak close$j]} { dict set peak close$j $gx }  ;# largest closing (< 0)
-        if {abs($gy) > abs([dict get $peak gap${j}y])} { dict set peak gap${j}y $gy }
-        dict set last gap${j}x $gx
-        dict set last gap${j}y $gy
-      }
-      set disps {}
-      set gz {}
-      foreach pair $joints j {1 2} {
-        lassign $pair a b
-        set z [expr {[nodeDisp $b 3] - [nodeDisp $a 3]}]
-        lappend gz $z
-        if {abs($z) > abs([dict get $peak gap${j}z])} { dict set peak gap${j}z $z }
-        dict set last gap${j}z $z
-      }
-      set endStrains {}
-      foreach bt $allBearings {
-        set e [eleResponse $bt shearStrain]
-        if {$bt in $bearings} { lappend row $e } else { lappend endStrains $e }
-        if {$e > [dict get $peak strain$bt]} { dict set peak strain$bt $e }
-        lassign [eleResponse $bt deformation] d0 d1 d2
-        if {abs($d1) > abs([dict get $peak bx$bt])} { dict set peak bx$bt $d1 }
-        if {abs($d2) > abs([dict get $peak by$bt])} { dict set peak by$bt $d2 }
-        dict set last bx$bt $d1
-        dict set last by$bt $d2
-        if {$bt == 2012 || $bt == 3011} { lappend disps $d1 $d2 }
-      }
-      lappend row {*}$disps
-      set j 0
-      foreach list $::poundingEles {
-        incr j
-        set f 0.0
-        foreach e $list { set f [expr {$f + [lindex [eleResponse $e contactForce] 0]}] }
-        lappend row $f
-        if {$f > [dict get $peak force$j]} { dict set peak force$j $f }
-        set isClosed [expr {$f > 0.0}]
-        if {$isClosed && ![lindex $closed [expr {$j - 1}]]} { lset impacts [expr {$j - 1}] [expr {[lindex $impacts [expr {$j - 1}]] + 1}] }
-        lset closed [expr {$j - 1}] $isClosed
-      }
-      if {[llength $::poundingEles] < 2} { lappend row 0.0 0.0 }
-      set s 0
-      foreach m $mids {
-        incr s
-        set r [nodeDisp $m 6]
-        lappend row $r
-        if {abs($r) > abs([dict get $peak rot$s])} { dict set peak rot$s $r }
-      }
-      set dx [nodeDisp [lindex $mids 1] 1]; set dy [nodeDisp [lindex $mids 1] 2]
-      lappend row $dx $dy
-      set s 0
-      foreach m $mids {
-        incr s
-        set x [nodeDisp $m 1]
-        lappend row $x
-        if {abs($x) > abs([dict get $peak g${s}x])} { dict set peak g${s}x $x }
-      }
-      lappend row {*}$gz {*}$endStrains
-      if {abs($dx) > abs([dict get $peak deckx])} { dict set peak deckx $dx }
-      if {abs($dy) > abs([dict get $peak decky])} { dict set peak decky $dy }
-      if {$fh ne "" && $tEnd - [getTime] <= 1e-9 * $dt} { puts $fh [join $row ,] }
-      if {$perStep ne ""} { {*}$perStep }
+      algorithm Newton
+      test NormDispIncr $tol 30
+      if {$rc != 0} { incr failed }
     }
   }
+  set contactSubsteps [dict get [contactStepping] contactSteps]
+  contactStepping -off
+  foreach v {peak last impacts} { set $v [set ::run::$v] }
   set wall2 [clock microseconds]
   if {$fh ne ""} { close $fh }
   set damage {}
@@ -679,6 +738,10 @@ set integrator [expr {$argc > 3 ? [lindex $argv 3] : $defaultIntegrator}]
 set tol        [expr {$argc > 4 ? [lindex $argv 4] : $defaultTol}]
 set motion     [expr {$argc > 5 ? [lindex $argv 5] : "auto"}]
 set outDir     [expr {$argc > 6 ? [lindex $argv 6] : "bridge-out"}]
+if {$argc > 7} {
+  set nSpans [lindex $argv 7]
+  if {![string is integer -strict $nSpans] || $nSpans < 1} { error "nSpans must be a positive integer, got \"$nSpans\"" }
+}
 file mkdir $outDir
 set cases [expr {$case eq "all" ? {nopound pound countermeasure} : [list $case]}]
 # Runs one case and prints its statistics; csv "" writes no histories and no page.

@@ -37,16 +37,18 @@ set motion     [expr {$argc > 0 ? [lindex $argv 0] : "auto"}]
 set dt         [expr {$argc > 1 ? [lindex $argv 1] : $defaultDt}]
 set integrator [expr {$argc > 2 ? [lindex $argv 2] : $defaultIntegrator}]
 
-# Element groups of the bridge (tags as numbered in bridge.tcl).
+# Element groups of the bridge, from the tags bridge.tcl gave them (any number of spans).
 proc groupOf {e} {
-  if {$e >= 60000} { return devices }
-  if {$e >= 50000} { return contact }
-  if {$e >= 10000} { return girders }
-  set local [expr {$e % 1000}]
-  if {$local == 1} { return foundation }
-  if {$local == 2} { return hinges }
-  if {$local >= 11} { return bearings }
-  return piers
+  if {![info exists ::groupTable]} {
+    foreach g $::girderEles { set ::groupTable($g) girders }
+    foreach list $::poundingEles { foreach c $list { set ::groupTable($c) contact } }
+    for {set j 1} {$j < $::nSpans} {incr j} { set ::groupTable([deviceTag $j]) devices }
+    foreach b [bearingTags] { set ::groupTable($b) bearings }
+    for {set p 1} {$p <= $::nSpans + 1} {incr p} {
+      foreach k {1 2 3 4} g {foundation hinges piers piers} { set ::groupTable([expr {[pierBase $p] + $k}]) $g }
+    }
+  }
+  return $::groupTable($e)
 }
 set ::groups {foundation hinges piers bearings girders contact devices}
 
@@ -121,6 +123,7 @@ proc energyStep {} {
 proc energyStart {} {
   upvar #0 E E
   array unset E
+  array unset ::groupTable   ;# a new model for each case
   set E(nodes) [getNodeTags]
   set E(elements) [getEleTags]
   set E(massNodes) {}

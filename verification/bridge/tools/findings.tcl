@@ -40,16 +40,32 @@ proc findings::bearingTagsOf {r} {
   foreach k [dict keys [dict get $r peak] strain*] { lappend tags [string range $k 6 end] }
   return [lsort -integer $tags]
 }
+# Pier of a bearing tag: bridge.tcl's numbering when it is loaded, else the three-span one.
+proc findings::pierOf {bt} {
+  if {[info commands ::bearingPlace] ne ""} { return [lindex [::bearingPlace $bt] 0] }
+  return [expr {$bt / 1000}]
+}
+# Joint numbers 1 ... n-1 and girder numbers 1 ... n of a run (any number of spans).
+proc findings::jointsOf {r} {
+  set js {}
+  for {set j 1} {[dict exists $r peak gap${j}x]} {incr j} { lappend js $j }
+  return $js
+}
+proc findings::girdersOf {r} {
+  set ss {}
+  for {set s 1} {[dict exists $r peak rot$s]} {incr s} { lappend ss $s }
+  return $ss
+}
 # Largest longitudinal bearing displacement (top minus bottom) over every bearing, m.
 proc findings::bearingLong {r} {
   set m 0.0
   foreach bt [bearingTagsOf $r] { set m [expr {max($m, abs([dict get $r peak bx$bt]))}] }
   return $m
 }
-# Largest |gap| of the two joints in direction x, y or z; which = peak or last (residual).
+# Largest |gap| of the joints in direction x, y or z; which = peak or last (residual).
 proc findings::gapMax {r dir {which peak}} {
   set m 0.0
-  foreach j {1 2} {
+  foreach j [jointsOf $r] {
     if {[dict exists $r $which gap$j$dir]} { set m [expr {max($m, abs([dict get $r $which gap$j$dir]))}] }
   }
   return $m
@@ -60,15 +76,15 @@ proc findings::gapMax {r dir {which peak}} {
 proc findings::openingMax {r} {
   set m 0.0
   foreach which {peak last} {
-    foreach j {1 2} { set m [expr {max($m, [dict get $r $which gap${j}x])}] }
+    foreach j [jointsOf $r] { set m [expr {max($m, [dict get $r $which gap${j}x])}] }
   }
-  foreach j {1 2} { if {[dict exists $r peak open$j]} { set m [expr {max($m, [dict get $r peak open$j])}] } }
+  foreach j [jointsOf $r] { if {[dict exists $r peak open$j]} { set m [expr {max($m, [dict get $r peak open$j])}] } }
   return $m
 }
 # Largest closing (magnitude of the most negative longitudinal gap) of the two joints, m.
 proc findings::closingMax {r} {
   set m 0.0
-  foreach j {1 2} {
+  foreach j [jointsOf $r] {
     set c [expr {[dict exists $r peak close$j] ? [dict get $r peak close$j] : min([dict get $r peak gap${j}x], 0.0)}]
     set m [expr {max($m, -$c)}]
   }
@@ -84,7 +100,7 @@ proc findings::bearingLongTag {r} {
 }
 proc findings::rotMax {r} {
   set m 0.0
-  foreach s {1 2 3} { set m [expr {max($m, abs([dict get $r peak rot$s]))}] }
+  foreach s [girdersOf $r] { set m [expr {max($m, abs([dict get $r peak rot$s]))}] }
   return $m
 }
 proc findings::strainMax {r} {
@@ -302,7 +318,7 @@ proc findings::whereLargest {motions} {
     set tags [bearingTagsOf $rp]
     set bt [bearingLongTag $rp]
     set where [expr {$bt == [lindex $tags 0] || $bt == [lindex $tags end] ? "an end of the bridge, where the model has no neighbour (no abutment) to pound on" : "a joint"}]
-    lappend parts "[motionName $runs]: with pounding the largest longitudinal bearing displacement is at bearing $bt (PC[expr {$bt / 1000}]), [format %.3f [expr {abs([dict get $rp peak bx$bt])}]] m, at $where"
+    lappend parts "[motionName $runs]: with pounding the largest longitudinal bearing displacement is at bearing $bt (PC[findings::pierOf $bt]), [format %.3f [expr {abs([dict get $rp peak bx$bt])}]] m, at $where"
   }
   return "[join $parts {; }]."
 }

@@ -22,7 +22,7 @@ proc writeReport {results outDir {other {}} {ladder {}}} {
   foreach r $results { lappend names [dict get $r case] }
   set r0 [lindex $results 0]
   set md [open [file join $outDir report.md] w]
-  puts $md "# Three-span isolated bridge under a near-fault motion\n"
+  puts $md "# [string map {{ bridge} { isolated bridge} { viaduct} { isolated viaduct}} [bridgeName]] under a near-fault motion\n"
   # The findings first: what a reader takes from the study.
   if {$names eq {nopound pound countermeasure}} {
     set motions [list $results]
@@ -86,52 +86,89 @@ proc runsTable {md results} {
   puts $md $header
   puts $md $rule
   proc row {md label unit values} { puts $md "| $label | $unit | [join $values { | }] |" }
-  foreach {key label} {gap1x "Gap1 (PC2) longitudinal" gap1y "Gap1 (PC2) transverse" gap1z "Gap1 (PC2) vertical offset"
-                       gap2x "Gap2 (PC3) longitudinal" gap2y "Gap2 (PC3) transverse" gap2z "Gap2 (PC3) vertical offset"} {
-    set peaks {}; set residuals {}
-    foreach r $results {
-      lappend peaks [fmt [dict get $r peak $key]]
-      lappend residuals [fmt [dict get $r last $key]]
+  set r0 [lindex $results 0]
+  set joints [findings::jointsOf $r0]
+  set girders [findings::girdersOf $r0]
+  set bearings [bearingTags]
+  # Up to three spans every joint, bearing and girder has its rows here; a longer viaduct gets
+  # the largest values here and one table per joint and per bearing after this one.
+  set every [expr {[llength $girders] <= 3}]
+  if {$every} {
+    foreach j $joints {
+      foreach {d what} {x longitudinal y transverse z "vertical offset"} {
+        set peaks {}; set residuals {}
+        foreach r $results {
+          lappend peaks [fmt [dict get $r peak gap$j$d]]
+          lappend residuals [fmt [dict get $r last gap$j$d]]
+        }
+        row $md "Gap$j (PC[expr {$j + 1}]) $what, peak" m $peaks
+        row $md "Gap$j (PC[expr {$j + 1}]) $what, residual" m $residuals
+      }
     }
-    row $md "$label, peak" m $peaks
-    row $md "$label, residual" m $residuals
-  }
-  foreach {bt label} {1012 "PC1 bearing of G1" 2011 "PC2 bearing of G1" 2012 "PC2 bearing of G2" 3011 "PC3 bearing of G2" 3012 "PC3 bearing of G3" 4011 "PC4 bearing of G3"} {
-    if {![dict exists [lindex $results 0] peak strain$bt]} { continue }
-    set vals {}; set res {}; set strains {}; set states {}
-    foreach r $results {
-      lappend vals "[fmt [dict get $r peak bx$bt]] / [fmt [dict get $r peak by$bt]]"
-      lappend res "[fmt [dict get $r last bx$bt]] / [fmt [dict get $r last by$bt]]"
-      set e [dict get $r peak strain$bt]
-      lappend strains "[format %.0f [expr {100 * $e}]]%"
-      lappend states [damageWord $e]
+    foreach bt $bearings {
+      lassign [bearingPlace $bt] p side
+      set label "PC$p bearing of G[expr {$side == 11 ? $p - 1 : $p}]"
+      set vals {}; set res {}; set strains {}; set states {}
+      foreach r $results {
+        lappend vals "[fmt [dict get $r peak bx$bt]] / [fmt [dict get $r peak by$bt]]"
+        lappend res "[fmt [dict get $r last bx$bt]] / [fmt [dict get $r last by$bt]]"
+        set e [dict get $r peak strain$bt]
+        lappend strains "[format %.0f [expr {100 * $e}]]%"
+        lappend states [damageWord $e]
+      }
+      row $md "$label: displacement long / trans, peak" m $vals
+      row $md "$label: displacement long / trans, residual" m $res
+      row $md "$label: peak shear strain" - $strains
+      row $md "$label: damage state" - $states
     }
-    row $md "$label: displacement long / trans, peak" m $vals
-    row $md "$label: displacement long / trans, residual" m $res
-    row $md "$label: peak shear strain" - $strains
-    row $md "$label: damage state" - $states
-  }
-  foreach j {1 2} pc {PC2 PC3} {
-    set f {}; set n {}
-    foreach r $results {
-      lappend f [format %.0f [dict get $r peak force$j]]
-      lappend n [lindex [dict get $r impacts] [expr {$j - 1}]]
+    foreach j $joints {
+      set f {}; set n {}
+      foreach r $results {
+        lappend f [format %.0f [dict get $r peak force$j]]
+        lappend n [lindex [dict get $r impacts] [expr {$j - 1}]]
+      }
+      row $md "pounding force at PC[expr {$j + 1}], peak" kN $f
+      row $md "impacts at PC[expr {$j + 1}]" - $n
     }
-    row $md "pounding force at $pc, peak" kN $f
-    row $md "impacts at $pc" - $n
+    foreach s $girders {
+      set v {}
+      foreach r $results { lappend v [format %.4f [dict get $r peak rot$s]] }
+      row $md "G$s rotation about the vertical, peak" rad $v
+    }
+    foreach s $girders {
+      set v {}
+      foreach r $results { lappend v [fmt [dict get $r peak g${s}x]] }
+      row $md "G$s mid-span longitudinal displacement (to the ground), peak" m $v
+    }
+  } else {
+    foreach {d what} {x longitudinal y transverse z "vertical offset"} {
+      set peaks {}; set residuals {}
+      foreach r $results {
+        lappend peaks [fmt [findings::gapMax $r $d peak]]
+        lappend residuals [fmt [findings::gapMax $r $d last]]
+      }
+      row $md "largest $what gap over the joints, peak (magnitude)" m $peaks
+      row $md "largest $what gap over the joints, residual (magnitude)" m $residuals
+    }
+    set v {}; set f {}; set n {}; set st {}
+    foreach r $results {
+      lappend v [fmt [findings::bearingLong $r]]
+      lappend st "[format %.0f [expr {100 * [findings::strainMax $r]}]]% ([findings::failedCount $r] failed)"
+      set fm 0.0; set ni 0
+      foreach j $joints { set fm [expr {max($fm, [dict get $r peak force$j])}] }
+      foreach k [dict get $r impacts] { incr ni $k }
+      lappend f [format %.0f $fm]; lappend n $ni
+    }
+    row $md "largest longitudinal bearing displacement, peak" m $v
+    row $md "largest bearing shear strain (bearings past 300 %)" - $st
+    row $md "pounding force, peak over the joints" kN $f
+    row $md "impacts, all joints" - $n
+    set v {}; foreach r $results { lappend v [format %.4f [findings::rotMax $r]] }
+    row $md "largest girder rotation about the vertical, peak" rad $v
   }
-  foreach s {1 2 3} {
-    set v {}
-    foreach r $results { lappend v [format %.4f [dict get $r peak rot$s]] }
-    row $md "G$s rotation about the vertical, peak" rad $v
-  }
-  foreach s {1 2 3} {
-    set v {}
-    foreach r $results { lappend v [fmt [dict get $r peak g${s}x]] }
-    row $md "G$s mid-span longitudinal displacement (to the ground), peak" m $v
-  }
+  set mg [expr {[llength $girders] / 2 + 1}]
   set v {}; foreach r $results { lappend v "[fmt [dict get $r peak deckx]] / [fmt [dict get $r peak decky]]" }
-  row $md "G2 deck displacement X / Y (to the ground), peak" m $v
+  row $md "G$mg deck displacement X / Y (to the ground), peak" m $v
   foreach {key label unit} {wall "wall time" s} {
     set v {}; foreach r $results { lappend v [format %.1f [dict get $r $key]] }
     row $md $label $unit $v
@@ -147,6 +184,40 @@ proc runsTable {md results} {
   row $md "steps accepted at 100x the tolerance (last resort)" - $v
   set v {}; foreach r $results { lappend v [expr {[dict get $r completed] ? "yes" : "NO"}] }
   row $md "completed" - $v
+  if {!$every} { jointTables $md $results }
+}
+
+# One row per joint and one per bearing, each case's values side by side (viaducts).
+proc jointTables {md results} {
+  set names {}
+  foreach r $results { lappend names [dict get $r case] }
+  set r0 [lindex $results 0]
+  puts $md "\n### Joints\n"
+  puts $md "Per case: longitudinal gap peak / residual, transverse gap peak / residual, vertical offset peak (m); pounding force peak (kN), impacts.\n"
+  set header "| joint |"; set rule "|---|"
+  foreach n $names { append header " $n: long | trans | vert | force, impacts |"; append rule "---:|---:|---:|---:|" }
+  puts $md $header; puts $md $rule
+  foreach j [findings::jointsOf $r0] {
+    set line "| Gap$j (PC[expr {$j + 1}]) |"
+    foreach r $results {
+      append line " [fmt [dict get $r peak gap${j}x]] / [fmt [dict get $r last gap${j}x]] | [fmt [dict get $r peak gap${j}y]] / [fmt [dict get $r last gap${j}y]] | [fmt [dict get $r peak gap${j}z]] | [format %.0f [dict get $r peak force$j]], [lindex [dict get $r impacts] [expr {$j - 1}]] |"
+    }
+    puts $md $line
+  }
+  puts $md "\n### Bearings\n"
+  puts $md "Per case: displacement long / trans, peak (m); peak shear strain and damage state at the end.\n"
+  set header "| bearing |"; set rule "|---|"
+  foreach n $names { append header " $n: displacement | strain, damage |"; append rule "---:|---|" }
+  puts $md $header; puts $md $rule
+  foreach bt [bearingTags] {
+    lassign [bearingPlace $bt] p side
+    set line "| $bt: PC$p, G[expr {$side == 11 ? $p - 1 : $p}] |"
+    foreach r $results {
+      set e [dict get $r peak strain$bt]
+      append line " [fmt [dict get $r peak bx$bt]] / [fmt [dict get $r peak by$bt]] | [format %.0f [expr {100 * $e}]]%, [damageWord $e] |"
+    }
+    puts $md $line
+  }
 }
 
 # The scale ladder: no pounding against pounding at several scales of the record.
@@ -157,7 +228,8 @@ proc ladderTable {ladder} {
     lassign $pn s ln; lassign $pp sp lp
     if {$s != $sp} { continue }
     set rn [dict create peak [dict get $ln peak]]; set rp [dict create peak [dict get $lp peak]]
-    set force [expr {max([dict get $lp peak force1], [dict get $lp peak force2])}]
+    set force 0.0
+    foreach j [findings::jointsOf $lp] { set force [expr {max($force, [dict get $lp peak force$j])}] }
     append out "| $s | [findings::compare [findings::bearingLong $rn] [findings::bearingLong $rp] m] | [findings::pct [findings::strainMax $rn]] / [findings::pct [findings::strainMax $rp]] | [findings::failedCount $rn] / [findings::failedCount $rp] | [format %.0f $force] |\n"
   }
   return $out
@@ -201,20 +273,46 @@ proc makePlots {names outDir {results {}}} {
     }
     return [join $parts ", "]
   }
+  # Columns by name from the first history's header (runCase writes the same for every case): the
+  # first two joints, their bearings and the first three girders (all of the three-span bridge).
+  set fh [open [file join $outDir [lindex $names 0].csv]]
+  set header [split [gets $fh] ,]
+  close $fh
+  set col [dict create]
+  set i 0
+  foreach name $header { dict set col $name [incr i] }
+  set jointCols {}; set bearingCols {}; set forceCols {}; set girderCols {}; set rotCols {}
+  set jointTitles {}; set bearingTitles {}; set forceTitles {}; set girderTitles {}
+  foreach j {1 2} {
+    if {![dict exists $col gap${j}x]} { continue }
+    set pc PC[expr {$j + 1}]
+    lappend jointCols [dict get $col gap${j}x] [dict get $col gap${j}y]
+    lappend jointTitles "Gap$j longitudinal (m)" "Gap$j transverse (m)"
+    foreach side {11 12} g [list $j [expr {$j + 1}]] {
+      lappend bearingCols [dict get $col strain[bearingTag [expr {$j + 1}] $side]]
+      lappend bearingTitles "$pc, bearing of G$g"
+    }
+    lappend forceCols [dict get $col force$j]
+    lappend forceTitles "joint over $pc"
+  }
+  foreach s {1 2 3} {
+    if {![dict exists $col g${s}x]} { continue }
+    lappend girderCols [dict get $col g${s}x]; lappend rotCols [dict get $col rot$s]; lappend girderTitles G$s
+  }
   set gp [open [file join $outDir plots.gp] w]
   puts $gp "set terminal $term"
   puts $gp "set datafile separator ','"
   puts $gp "set grid; set key top right; set xlabel 't (s)'"
   puts $gp "set output '[file join $outDir gaps.png]'"
   puts $gp "set multiplot layout 2,2 title 'Joint gaps (right girder end minus left girder end)'"
-  foreach col {2 3 4 5} title {"Gap1 longitudinal (m)" "Gap1 transverse (m)" "Gap2 longitudinal (m)" "Gap2 transverse (m)"} {
+  foreach col $jointCols title $jointTitles {
     puts $gp "set title '$title'; set ylabel 'm'"
     puts $gp "plot [plotLines $names $outDir $col $colors]"
   }
   puts $gp "unset multiplot"
   puts $gp "set output '[file join $outDir bearings.png]'"
-  puts $gp "set multiplot layout 2,2 title 'Bearing shear strain on PC2 and PC3 (design 250%, failure 300%)'"
-  foreach col {6 7 8 9} title {"PC2, bearing of G1" "PC2, bearing of G2" "PC3, bearing of G2" "PC3, bearing of G3"} {
+  puts $gp "set multiplot layout 2,2 title 'Bearing shear strain on [join [lsort -unique [lmap t $bearingTitles {lindex [split $t ,] 0}]] { and }] (design 250%, failure 300%)'"
+  foreach col $bearingCols title $bearingTitles {
     puts $gp "set title '$title'; set ylabel 'shear strain'"
     puts $gp "plot [plotLines $names $outDir $col $colors], 2.5 with lines dt 2 lc rgb 'gray' title '250%', 3.0 with lines dt 3 lc rgb 'black' title '300%'"
   }
@@ -223,11 +321,11 @@ proc makePlots {names outDir {results {}}} {
   # vertical, for the three cases
   puts $gp "set output '[file join $outDir girders.png]'"
   puts $gp "set multiplot layout 2,3 title 'Girder mid-span: longitudinal displacement to the ground (top) and rotation about the vertical (bottom)'"
-  foreach col {21 22 23} title {G1 G2 G3} {
+  foreach col $girderCols title $girderTitles {
     puts $gp "set title '$title, longitudinal'; set ylabel 'm'"
     puts $gp "plot [plotLines $names $outDir $col $colors]"
   }
-  foreach col {16 17 18} title {G1 G2 G3} {
+  foreach col $rotCols title $girderTitles {
     puts $gp "set title '$title, rotation about the vertical'; set ylabel 'rad'"
     puts $gp "plot [plotLines $names $outDir $col $colors]"
   }
@@ -235,8 +333,13 @@ proc makePlots {names outDir {results {}}} {
   # Plan view: each bearing (one element per girder end stands for the pair at +-bearingRollArm)
   # coloured by its damage state, one panel per case
   if {[llength $results] > 0} {
+    # true scale up to five spans; a longer viaduct is drawn wider (30 px a span) with the width of
+    # the deck stretched, and its bearings unlabelled past ten spans
+    set trueScale [expr {$::nSpans <= 5}]
+    set labels [expr {$::nSpans <= 10}]
     set height [expr {250 * [llength $results] + 60}]
-    puts $gp "set terminal [lindex $term 0] size 1100,$height [lrange $term 3 end]"
+    set width [expr {max(1100, 30 * $::nSpans + 200)}]
+    puts $gp "set terminal [lindex $term 0] size $width,$height [lrange $term 3 end]"
     puts $gp "set output '[file join $outDir plan.png]'"
     puts $gp "set multiplot layout [llength $results],1 title 'Plan: bearings by damage state (sound < 250 % <= past design < 300 % <= failed)'"
     set xmax [expr {$::nSpans * $::spanLength}]
@@ -251,19 +354,19 @@ proc makePlots {names outDir {results {}}} {
         lappend objs "set object [incr obj] rect from $x0,-$hw to $x1,$hw fc rgb '#dde3ea' fs solid border lc rgb '#8a9bb0' back"
       }
       foreach bt [findings::bearingTagsOf $r] {
-        set p [expr {$bt / 1000}]
-        set x [expr {[pierX $p] + ($bt % 1000 == 11 ? -1.0 : 1.0) * $::bearingOffset}]
+        lassign [bearingPlace $bt] p side
+        set x [expr {[pierX $p] + ($side == 11 ? -1.0 : 1.0) * $::bearingOffset}]
         set e [dict get $r peak strain$bt]
         set color [expr {$e >= 3.0 ? "#d62728" : ($e >= 2.5 ? "#f2c81e" : "#2ca02c")}]
         foreach y [list -$::bearingRollArm $::bearingRollArm] {
           lappend objs "set object [incr obj] rect from [expr {$x - $pad}],[expr {$y - $pad}] to [expr {$x + $pad}],[expr {$y + $pad}] fc rgb '$color' fs solid border lc rgb 'black' front"
         }
         # the two bearings of a pier are 2 x bearingOffset apart: left one's label to the left
-        set left [expr {$bt % 1000 == 11}]
-        lappend objs "set label [incr obj] '[format %.0f [expr {100 * $e}]]%' at [expr {$x + ($left ? -0.8 : 0.8)}],[expr {$hw + 1.8}] [expr {$left ? "right" : "left"}] front"
+        set left [expr {$side == 11}]
+        if {$labels} { lappend objs "set label [incr obj] '[format %.0f [expr {100 * $e}]]%' at [expr {$x + ($left ? -0.8 : 0.8)}],[expr {$hw + 1.8}] [expr {$left ? "right" : "left"}] front" }
       }
       puts $gp "set title '[dict get $r case] (labels: peak shear strain)'; set xlabel 'x along the bridge (m)'; set ylabel 'y (m)'; set key outside right top"
-      puts $gp "set xrange \[-3:[expr {$xmax + 3}]\]; set yrange \[[expr {-$hw - 3}]:[expr {$hw + 3}]\]; set size ratio -1"
+      puts $gp "set xrange \[-3:[expr {$xmax + 3}]\]; set yrange \[[expr {-$hw - 3}]:[expr {$hw + 3}]\]; set size ratio [expr {$trueScale ? -1 : 0.2}]"
       puts $gp [join $objs "\n"]
       puts $gp "plot NaN notitle, NaN with boxes fc rgb '#2ca02c' fs solid title 'sound', NaN with boxes fc rgb '#f2c81e' fs solid title 'past 250 %', NaN with boxes fc rgb '#d62728' fs solid title 'failed (300 %)'"
       puts $gp "unset object; unset label"
@@ -275,7 +378,7 @@ proc makePlots {names outDir {results {}}} {
   if {[llength $pn] > 0} {
     puts $gp "set output '[file join $outDir pounding.png]'"
     puts $gp "set multiplot layout 2,1 title 'Pounding force (sum over the contact pairs of a joint)'"
-    foreach col {14 15} title {"joint over PC2" "joint over PC3"} {
+    foreach col $forceCols title $forceTitles {
       puts $gp "set title '$title'; set ylabel 'kN'"
       puts $gp "plot [plotLines $pn $outDir $col $colors]"
     }

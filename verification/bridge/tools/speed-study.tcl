@@ -86,7 +86,7 @@ close $csv
 set md [open [file join $outDir speed.md] w]
 puts $md "# Speed against error ($case case, reference: Newmark, dt 0.0005 s, tol 1e-6)\n"
 puts $md "Every run steps at most $::contactDt s while a joint is closed or closing, with the step cut at"
-puts $md "each predicted first contact (bridge.tcl, nextStepLength). Wall times of one run, one after"
+puts $md "each predicted first contact (the driver's contactStepping, see the README). Wall times of one run, one after"
 puts $md "another on the same machine; errors are the largest relative difference from the reference over"
 puts $md "the peak and residual gaps (both joints, both directions; residuals relative to the peak) and"
 puts $md "the peak bearing strains. The reference's own error, from a run at half its step (and contact"

@@ -1,0 +1,59 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include <limits>
+#include <vector>
+
+#include "contact/NodeToSurfaceContact3d.h"
+#include "tcl/domain/Domain.h"
+
+namespace dabs::analysis {
+
+/// Parameters of event-located contact stepping (the `contactStepping` command).
+struct ContactSteppingParams {
+  double maxStep = 0.0005;  ///< longest step while a pair is closed or about to close, s (> 0)
+  double lookAhead = 2.0;   ///< a pair "about to close" closes within lookAhead x the rest of the step (>= 0)
+  double overshoot = 1.2;   ///< a step cut at a predicted first contact ends at overshoot x that time (>= 1)
+  /// Throws InputError{field, reason} (fields maxStep, lookAhead, overshoot).
+  void validate() const;
+};
+
+/// Length of the next transient step for models with nodeToSurface pairs. Impacts last a few
+/// hundredths of a second and start with a jump of the dashpot force, so:
+/// - while a pair is closed (or open but predicted, from its gap and gap rate over the last
+///   step, to close within lookAhead x the rest of the output step) the step is at most maxStep;
+/// - a step in which a pair is predicted to close is cut to end at overshoot x that instant, so
+///   the jump falls on a step boundary (event location: without it the impact's error is of the
+///   order of the step whatever the step).
+/// The prediction is linear in time: t_close = g h_last / (g_last - g) for a gap g that shrank
+/// from g_last over the last step h_last. Every pair's cut counts (the shortest wins).
+///
+/// The pairs are read from their committed states (between steps), one pass over the pairs per
+/// step; the class owns the gaps of the last step.
+class ContactStepping {
+ public:
+  explicit ContactStepping(const ContactSteppingParams& params) : params_(params) {}
+
+  const ContactSteppingParams& params() const noexcept { return params_; }
+  /// Finds the domain's nodeToSurface pairs and forgets the gap history (a new model or a new
+  /// analysis).
+  void attach(const domain::Domain& domain);
+  /// Forgets the gap history (the next step predicts nothing).
+  void reset();
+  std::size_t pairs() const noexcept { return states_.size(); }
+
+  /// Length of the next step, at most `remaining` (the rest of the output step) unless a cut at a
+  /// predicted contact ends just past it; `dt` is the output step, to count contact steps.
+  double nextStep(double remaining, double dt);
+  /// Steps shorter than the output step that this object chose (for statistics).
+  long contactSteps() const noexcept { return contactSteps_; }
+
+ private:
+  ContactSteppingParams params_;
+  std::vector<const contact::NodeToSurfaceState*> states_;  ///< committed states of the pairs
+  std::vector<double> lastGap_;
+  double lastStep_ = 0.0;
+  long contactSteps_ = 0;
+};
+
+}  // namespace dabs::analysis

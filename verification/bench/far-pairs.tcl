@@ -1,0 +1,90 @@
+# SPDX-License-Identifier: MIT
+# Cost of contact pairs that are far apart: a row of J joints, each two 2 x 1 m girder-end faces
+# of 4 nodes on elastic springs 0.2 m apart, shaken along the row (a sine of 0.5 s period); the
+# same model is run without contact, with `pounding` pairs (8 per joint) given a search distance
+# of 0.05 m (so they are far: they sleep), and with the pairs but no search distance (every pair
+# evaluated at every iteration, none touching). Times are the process's CPU time (user + system,
+# from /proc/self/stat, 10 ms ticks), the smallest of `repeat` runs, so other processes on the
+# machine matter less; the counts (iterations, element updates, pattern changes) are exact.
+#
+#   dabs verification/bench/far-pairs.tcl ?joints? ?steps? ?repeat? ?csv?
+set J      [expr {$argc > 0 ? [lindex $argv 0] : 100}]
+set steps  [expr {$argc > 1 ? [lindex $argv 1] : 1000}]
+set repeat [expr {$argc > 2 ? [lindex $argv 2] : 3}]
+set csv    [expr {$argc > 3 ? [lindex $argv 3] : ""}]
+
+proc cpuSeconds {} {
+  set f [open /proc/self/stat]
+  set fields [split [read $f]]
+  close $f
+  # after the command name in parentheses: utime and stime are fields 14 and 15 (1-based)
+  return [expr {([lindex $fields 13] + [lindex $fields 14]) / 100.0}]
+}
+
+proc build {J mode} {
+  wipe
+  model basic -ndm 3 -ndf 3
+  uniaxialMaterial Elastic 1 1.0e5
+  set ele 0
+  for {set j 0} {$j < $J} {incr j} {
+    set x0 [expr {10.0 * $j}]
+    foreach side {0 1} {
+      set x [expr {$x0 + 0.2 * $side}]
+      set i 0
+      foreach {y z} {-1 -0.5  1 -0.5  1 0.5  -1 0.5} {
+        incr i
+        set n [expr {1000 * $j + 100 * $side + $i}]
+        node $n $x $y $z
+        node [expr {$n + 50}] $x $y $z
+        fix [expr {$n + 50}] 1 1 1
+        mass $n 1.0 1.0 1.0
+        element zeroLength [incr ele] [expr {$n + 50}] $n -mat 1 1 1 -dir 1 2 3
+      }
+    }
+    if {$mode ne "none"} {
+      set a [expr {1000 * $j}]; set b [expr {1000 * $j + 100}]
+      set opts [list -K 1.0e7 -mu_s 0.3]
+      if {$mode eq "far"} { lappend opts -search 0.05 }
+      pounding [expr {100000 + 8 * $j}] \
+          -side1 [list [expr {$a+1}] [expr {$a+2}] [expr {$a+3}] [expr {$a+4}]] [list [expr {$a+1}] [expr {$a+2}] [expr {$a+3}] [expr {$a+4}]] \
+          -side2 [list [expr {$b+1}] [expr {$b+2}] [expr {$b+3}] [expr {$b+4}]] [list [expr {$b+1}] [expr {$b+4}] [expr {$b+3}] [expr {$b+2}]] {*}$opts
+    }
+  }
+  timeSeries Trig 1 0.0 100.0 0.5 -factor 0.5
+  pattern UniformExcitation 1 1 -accel 1
+  constraints Plain; numberer RCM; system UmfPack
+  test NormDispIncr 1e-8 20; algorithm Newton
+  integrator Newmark 0.5 0.25; analysis Transient
+}
+
+set rows {}
+puts [format "%-9s %6s %6s %9s %10s %12s %8s %8s %12s" mode pairs steps cpu_s us/step iterations elemUpd patterns peak_disp]
+foreach mode {none far evaluated} {
+  set best 1e30
+  for {set r 0} {$r < $repeat} {incr r} {
+    build $J $mode
+    set t0 [cpuSeconds]
+    set rc [analyze $steps 0.005]
+    set t [expr {[cpuSeconds] - $t0}]
+    if {$rc != 0} { error "$mode: analyze returned $rc" }
+    set best [expr {min($best, $t)}]
+  }
+  set st [analysisStatistics]
+  set pairs [expr {$mode eq "none" ? 0 : 8 * $J}]
+  set d [nodeDisp 1 1]
+  set line [format "%-9s %6d %6d %9.2f %10.1f %12d %8d %8s %12.6e" $mode $pairs $steps $best [expr {1e6 * $best / $steps}] \
+      [dict get $st iterations] [dict get $st elementUpdates] [dict get [contactStepping] patternChanges] $d]
+  puts $line
+  lappend rows [list $mode $pairs $steps $best [dict get $st iterations] [dict get $st elementUpdates] $d]
+}
+set base [lindex $rows 0 3]
+foreach r [lrange $rows 1 end] {
+  puts [format "%s: %+.1f %% CPU time against no pairs; same displacement of node 1: %s" [lindex $r 0] \
+      [expr {100.0 * ([lindex $r 3] - $base) / $base}] [expr {[lindex $r 6] == [lindex $rows 0 6] ? "yes" : "no ([lindex $r 6])"}]]
+}
+if {$csv ne ""} {
+  set f [open $csv w]
+  puts $f "mode,pairs,steps,cpu_s,iterations,element_updates,disp_node1"
+  foreach r $rows { puts $f [join $r ,] }
+  close $f
+}
