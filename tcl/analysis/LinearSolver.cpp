@@ -46,10 +46,12 @@ class SparseLdltSolver final : public LinearSolver {
 };
 
 /// Sparse LU by KLU (SuiteSparse; Davis & Palamadai Natarajan 2010, ACM TOMS 37(3) 36): the
-/// ordering once per pattern, a factorisation with partial pivoting, and then refactorisations
-/// that reuse its pivot sequence (no search, no symbolic work) as long as they stay well
-/// conditioned. Newton's tangents change their numbers, not their pattern, from one iteration to
-/// the next, so most factorisations are refactorisations.
+/// fill-reducing ordering once per pattern, then a numeric factorisation with partial pivoting
+/// for every new matrix. KLU's refactorisation (the previous pivot order, no search) would be
+/// cheaper still, but it makes the round-off depend on which matrix chose the pivots, so the same
+/// steps taken in one `analyze` call or in several would give results that differ in the last
+/// digits, and impacts amplify such differences; a fresh pivot search keeps every solution a
+/// function of its matrix alone.
 class KluSolver final : public LinearSolver {
  public:
   KluSolver() {
@@ -77,20 +79,12 @@ class KluSolver final : public LinearSolver {
     int* ap = const_cast<int*>(c.outerIndexPtr());
     int* ai = const_cast<int*>(c.innerIndexPtr());
     double* ax = const_cast<double*>(c.valuePtr());
-    if (numeric_ != nullptr && klu_refactor(ap, ai, ax, symbolic_, numeric_, &common_) &&
-        common_.status == KLU_OK && klu_rcond(symbolic_, numeric_, &common_) &&
-        common_.rcond >= kRefactorConditionLoss * rcondAtPivoting_ &&
-        common_.rcond > kRelativePivotTolerance) {
-      return Status::Ok;
-    }
-    // First factorisation, or the old pivot sequence has become a poor one: choose pivots anew.
     if (numeric_ != nullptr) klu_free_numeric(&numeric_, &common_);
     numeric_ = klu_factor(ap, ai, ax, symbolic_, &common_);
     if (numeric_ == nullptr || common_.status != KLU_OK) return Status::Singular;
     // rcond here is min |U_ii| / max |U_ii|: the same relative pivot test as the LDL^T's.
     if (!klu_rcond(symbolic_, numeric_, &common_) || !(common_.rcond > kRelativePivotTolerance))
       return Status::Singular;
-    rcondAtPivoting_ = common_.rcond;
     return Status::Ok;
   }
   Status solve(const Eigen::VectorXd& b, Eigen::VectorXd& x) override {
@@ -102,11 +96,6 @@ class KluSolver final : public LinearSolver {
   }
 
  private:
-  /// A refactorisation whose pivot ratio min|U_ii|/max|U_ii| has fallen below this fraction of the
-  /// ratio at the last pivot search is redone with a new search (the tangent has changed enough
-  /// that the old pivot order may lose accuracy).
-  static constexpr double kRefactorConditionLoss = 1e-3;
-
   const Eigen::SparseMatrix<double>& compressed(const Eigen::SparseMatrix<double>& A) {
     if (A.isCompressed()) return A;
     copy_ = A;
@@ -122,7 +111,6 @@ class KluSolver final : public LinearSolver {
   klu_symbolic* symbolic_ = nullptr;
   klu_numeric* numeric_ = nullptr;
   int n_ = 0;
-  double rcondAtPivoting_ = 0.0;
   Eigen::SparseMatrix<double> copy_;
 };
 

@@ -545,7 +545,7 @@ proc monitorSetup {} {
 # After a converged step: updates the peaks, the residuals (last), the impacts; returns the CSV row.
 proc monitorStep {} {
   foreach v {joints jointBearing allBearings midBearings mids midGirder peak last impacts closed} { variable ::run::$v }
-  set row [list [getTime]]
+  set row [list [getTime %.17g]]
   set j 0
   foreach pair $joints {
     incr j
@@ -622,7 +622,7 @@ proc monitorStep {} {
 proc run::afterStep {} {
   variable fh; variable tEnd; variable dt; variable perStep
   set row [monitorStep]
-  if {$fh ne "" && $tEnd - [getTime] <= 1e-9 * $dt} { puts $fh [join $row ,] }
+  if {$fh ne "" && $tEnd - [getTime %.17g] <= 1e-9 * $dt} { puts $fh [join $row ,] }
   if {$perStep ne ""} { uplevel #0 $perStep }
 }
 
@@ -691,7 +691,7 @@ proc runCase {case scale dt integrator tol motion {csv ""} {perStep ""}} {
   for {set step 1} {$step <= $nSteps && !$failed} {incr step} {
     set tEnd [expr {$step * $dt}]
     set ::run::tEnd $tEnd
-    set remaining [expr {$tEnd - [getTime]}]
+    set remaining [expr {$tEnd - [getTime %.17g]}]
     if {$remaining <= 1e-9 * $dt} { continue }
     if {[analyze 1 $remaining] != 0} {
       # the driver already sub-stepped the failed step; try the rest of the output step with line
@@ -702,7 +702,7 @@ proc runCase {case scale dt integrator tol motion {csv ""} {perStep ""}} {
       foreach alg {NewtonLineSearch KrylovNewton Newton} t [list $tol $tol [expr {100.0 * $tol}]] {
         algorithm $alg
         test NormDispIncr $t 100
-        set rc [analyze 1 [expr {$tEnd - [getTime]}]]
+        set rc [analyze 1 [expr {$tEnd - [getTime %.17g]}]]
         if {$rc == 0} { if {$t != $tol} { incr loosened }; break }
       }
       algorithm Newton
@@ -723,7 +723,7 @@ proc runCase {case scale dt integrator tol motion {csv ""} {perStep ""}} {
       completed [expr {$failed == 0}] loosened $loosened contactSubsteps $contactSubsteps peak $peak last $last impacts $impacts stats $stats \
       nodes [llength [getNodeTags]] elements [llength [getEleTags]] \
       wall [expr {($wall2 - $wall0) * 1e-6}] wallSteps [expr {($wall2 - $wall1) * 1e-6}] \
-      endTime [getTime]]
+      endTime [getTime %.17g]]
 }
 
 # ---------------------------------------------------------------------------------------------

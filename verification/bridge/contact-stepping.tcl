@@ -62,7 +62,7 @@ proc sample {} {
   lassign $::girderEndNodes g1s g1e g2s g2e
   set f 0.0
   foreach e [lindex $::poundingEles 0] { set f [expr {$f + [lindex [eleResponse $e contactForce] 0]}] }
-  lappend ::rows [list [getTime] [expr {[nodeDisp $g2s 1] - [nodeDisp $g1e 1]}] $f [eleResponse [bearingTag 2 12] shearStrain]]
+  lappend ::rows [list [getTime %.17g] [expr {[nodeDisp $g2s 1] - [nodeDisp $g1e 1]}] $f [eleResponse [bearingTag 2 12] shearStrain]]
 }
 
 # Run 1: the procedure
@@ -75,7 +75,7 @@ set rc 0
 for {set step 1} {$step <= $nSteps && $rc == 0} {incr step} {
   set tEnd [expr {$step * $dt}]
   while {$rc == 0} {
-    set remaining [expr {$tEnd - [getTime]}]
+    set remaining [expr {$tEnd - [getTime %.17g]}]
     if {$remaining <= 1e-9 * $dt} { break }
     set rc [analyze 1 [nextStepLength $remaining]]
     if {$rc == 0} { sample }

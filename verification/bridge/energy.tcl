@@ -62,7 +62,7 @@ proc vdot {a b} {
 proc energyStep {} {
   global g
   upvar #0 E E
-  set t [getTime]
+  set t [getTime %.17g]
   set ag [list [getLoadFactor 11] [getLoadFactor 12]]
   set disp [dict create]
   foreach n $E(nodes) { dict set disp $n [nodeDisp $n] }

@@ -31,7 +31,7 @@ proc runSeparately {after steps} {
   set f [open failure-$after.tcl w]
   puts $f [string map [list {$after} $after] $model]
   puts $f "set code \[analyze $steps\]"
-  puts $f {puts "RESULT $code [getTime] [eleResponse 1 maxShearStrain] [dict get [analysisStatistics] failedBearings]"}
+  puts $f {puts "RESULT $code [getTime %.17g] [eleResponse 1 maxShearStrain] [dict get [analysisStatistics] failedBearings]"}
   close $f
   set out [exec [info nameofexecutable] failure-$after.tcl 2>@1]
   set result [lrange [lindex [regexp -all -inline {RESULT [^\n]*} $out] 0] 1 end]

@@ -61,7 +61,7 @@ set P1 [expr {0.8 * $Py}]
 integrator LoadControl [expr {$P1 / 4.0}]
 analysis Static
 checkTrue "LoadControl elastic steps converge" [expr {[analyze 4] == 0}]
-check "Popov 3-bar elastic: load factor" [getTime] $P1 $TOL
+check "Popov 3-bar elastic: load factor" [getTime %.17g] $P1 $TOL
 check "Popov 3-bar elastic: delta = P L/(E A (1+2c^3))" [defl] [expr {$P1 / $K}] $TOL
 check "Popov 3-bar elastic: N_mid = P/(1+2c^3)" [axial 2] [expr {$P1 / (1.0 + 2.0 * $c ** 3)}] $TOL
 check "Popov 3-bar elastic: N_out = P c^2/(1+2c^3) (bar 1)" [axial 1] [expr {$P1 * $c * $c / (1.0 + 2.0 * $c ** 3)}] $TOL
@@ -77,11 +77,11 @@ integrator DisplacementControl 4 2 [expr {-($dMid - [defl]) / $n}]
 analysis Static
 checkTrue "DisplacementControl through first yield converges" [expr {[analyze $n] == 0}]
 check "Popov 3-bar contained plastic: delta" [defl] $dMid $TOL
-check "Popov 3-bar contained plastic: P = sy A + 2 E A c^3 delta/L" [getTime] \
+check "Popov 3-bar contained plastic: P = sy A + 2 E A c^3 delta/L" [getTime %.17g] \
   [expr {$sy * $A + 2.0 * $E * $A * $c ** 3 * $dMid / $L}] $TOL
 check "Popov 3-bar contained plastic: N_mid = sy A" [axial 2] [expr {$sy * $A}] $TOL
 check "Popov 3-bar contained plastic: N_out = E A c^2 delta/L" [axial 1] [expr {$E * $A * $c * $c * $dMid / $L}] $TOL
-checkTrue "Popov 3-bar: first yield load P_y lies below the current load" [expr {$Py < [getTime]}]
+checkTrue "Popov 3-bar: first yield load P_y lies below the current load" [expr {$Py < [getTime %.17g]}]
 
 # --- limit load: push on to delta_1 = (1 - 1e-6) delta_L, just short of the state where the outer
 #     bars yield and the truss becomes a mechanism (there every bar has zero tangent; like
@@ -93,8 +93,8 @@ analysis Static
 checkTrue "DisplacementControl to delta_1 converges" [expr {[analyze $n] == 0}]
 check "Popov 3-bar: delta_1 reached" [defl] $d1 $TOL
 set P1 [expr {$sy * $A + 2.0 * $E * $A * $c ** 3 * $d1 / $L}]
-check "Popov 3-bar at delta_1: P = sy A + 2 E A c^3 delta/L" [getTime] $P1 $TOL
-check "Popov 3-bar limit load P_L = sy A (1 + 2 cos alpha) approached at delta_L" [getTime] $PL 1e-5
+check "Popov 3-bar at delta_1: P = sy A + 2 E A c^3 delta/L" [getTime %.17g] $P1 $TOL
+check "Popov 3-bar limit load P_L = sy A (1 + 2 cos alpha) approached at delta_L" [getTime %.17g] $PL 1e-5
 check "Popov 3-bar at limit: N_mid = sy A" [axial 2] [expr {$sy * $A}] $TOL
 check "Popov 3-bar at limit: N_out -> sy A" [axial 3] [expr {$sy * $A}] 1e-5
 
@@ -103,7 +103,7 @@ set Delta [expr {$P1 / $K}]
 integrator LoadControl [expr {-$P1 / $n}]
 analysis Static
 checkTrue "LoadControl unloading converges" [expr {[analyze $n] == 0}]
-checkAbs "Popov 3-bar unloaded: load factor 0 (in units of P_L)" [expr {[getTime] / $PL}] 0.0 $TOL
+checkAbs "Popov 3-bar unloaded: load factor 0 (in units of P_L)" [expr {[getTime %.17g] / $PL}] 0.0 $TOL
 check "Popov 3-bar residual deflection delta_1 - P_1/K" [defl] [expr {$d1 - $Delta}] $TOL
 check "Popov 3-bar residual N_mid = sy A - E A Delta/L" [axial 2] [expr {$sy * $A - $E * $A * $Delta / $L}] $TOL
 check "Popov 3-bar residual N_out = E A c^2 (delta_1 - Delta)/L" [axial 1] [expr {$E * $A * $c * $c * ($d1 - $Delta) / $L}] $TOL

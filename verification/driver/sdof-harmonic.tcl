@@ -80,7 +80,7 @@ proc run {zeta dt {damping viscous}} {
   set worst 0.0; set peak 0.0
   for {set i 1} {$i <= $n} {incr i} {
     if {[analyze 1 $dt] != 0} { error "analyze failed at step $i" }
-    set e [exact $zeta [getTime]]
+    set e [exact $zeta [getTime %.17g]]
     set peak [expr {max($peak, abs($e))}]
     set worst [expr {max($worst, abs([nodeDisp 2 1] - $e))}]
   }

@@ -63,7 +63,7 @@ analysis Static
 set worst 0.0
 for {set i 1} {$i <= $n} {incr i} {
   if {[analyze 1] != 0} { error "LoadControl loading failed at step $i" }
-  set worst [expr {max($worst, abs([nodeDisp 2 1] - [virginDisp [getTime]]))}]
+  set worst [expr {max($worst, abs([nodeDisp 2 1] - [virginDisp [getTime %.17g]]))}]
 }
 checkAbs "LoadControl loading: u(lambda) on the closed-form virgin branch, max err" $worst 0.0 $TOL
 check "LoadControl loading: u at P1 = (P1 - fy1 - fy2)/k3" [nodeDisp 2 1] [expr {($P1 - $fy1 - $fy2) / $k3}] $TOL
@@ -77,7 +77,7 @@ algorithm Newton -initial
 integrator LoadControl [expr {-$P1 / $n}]
 analysis Static
 if {[analyze $n] != 0} { error "LoadControl unloading failed" }
-checkAbs "LoadControl unloading: load factor back to 0" [getTime] 0.0 1e-12
+checkAbs "LoadControl unloading: load factor back to 0" [getTime %.17g] 0.0 1e-12
 set uRes [expr {($P1 - $fy1 - $fy2) / $k3 - $P1 / ($k1 + $k2 + $k3)}]
 check "LoadControl unloading: residual u = u1 - P1/(k1+k2+k3)" [nodeDisp 2 1] $uRes $TOL
 checkAbs "closed form is self-consistent: force(u_res) = 0" [force $uRes] 0.0 1e-12
@@ -92,12 +92,12 @@ foreach {target steps} {-0.4 25 0.1 20} {
   set worst 0.0
   for {set i 1} {$i <= $steps} {incr i} {
     if {[analyze 1] != 0} { error "DisplacementControl to $target failed at step $i" }
-    set worst [expr {max($worst, abs([getTime] - [force [nodeDisp 2 1]]))}]
+    set worst [expr {max($worst, abs([getTime %.17g] - [force [nodeDisp 2 1]]))}]
   }
   check "DisplacementControl to $target: u reached" [nodeDisp 2 1] $target $TOL
   checkAbs "DisplacementControl to $target: lambda(u) vs closed form, max err" $worst 0.0 [expr {$TOL * 100.0}]
 }
-check "DisplacementControl at u=0.1: lambda = closed form" [getTime] [force 0.1] $TOL
+check "DisplacementControl at u=0.1: lambda = closed form" [getTime %.17g] [force 0.1] $TOL
 wipe
 
 # --- failure past the limit load: EPP spring alone, LoadControl ---
@@ -116,11 +116,11 @@ integrator LoadControl 2.0
 analysis Static
 checkTrue "EPP spring: 2 load steps below fy converge" [expr {[analyze 2] == 0}]
 set uBefore [nodeDisp 2 1]
-set tBefore [getTime]
+set tBefore [getTime %.17g]
 set rc [catch {analyze 1} result]
 checkTrue "EPP spring past fy: analyze gives no Tcl error" [expr {$rc == 0}]
 checkTrue "EPP spring past fy: analyze returns a negative code (got $result)" [expr {$rc == 0 && $result < 0}]
-check "EPP spring past fy: time stays at the last converged step" [getTime] $tBefore 1e-12
+check "EPP spring past fy: time stays at the last converged step" [getTime %.17g] $tBefore 1e-12
 check "EPP spring past fy: displacement stays at the last converged step" [nodeDisp 2 1] $uBefore 1e-12
 check "EPP spring: last converged u = 4/k1" $uBefore [expr {4.0 / $k1}] $TOL
 wipe

@@ -55,7 +55,7 @@ proc oscillator {job} {
     set u [nodeDisp 2 1]
     if {abs($u) > abs($peak)} { set peak $u }
   }
-  return [list code $code peak $peak residual [nodeDisp 2 1] time [getTime]]
+  return [list code $code peak $peak residual [nodeDisp 2 1] time [getTime %.17g]]
 }
 
 # Job i: steps from 100 to 1000 (a 10x spread, in an order that mixes long and short jobs).

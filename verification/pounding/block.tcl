@@ -41,12 +41,12 @@ timeSeries Linear 2
 pattern Plain 2 2 { load 5 $r 0 0 }
 set ts -1
 set failed [runUntil $dt 0.8 {
-  if {$::ts < 0 && [eleResponse 1 status] == 2} { set ::ts [getTime] }
+  if {$::ts < 0 && [eleResponse 1 status] == 2} { set ::ts [getTime %.17g] }
   expr 0
 }]
 checkTrue "ramp: every step converged" [expr {$failed == 0}]
 checkAbs "ramp: sliding starts at P = mu_s W" [expr {$r*$ts}] [expr {$muS*$W}] [expr {2*$r*$dt}]
-set t [getTime]
+set t [getTime %.17g]
 set t0 [expr {$muS*$W/$r}]
 set v [expr {($r*($t*$t - $t0*$t0)/2 - $muK*$W*($t - $t0))/$m}]
 check "ramp: v(t) from a = (P - mu_k W)/m" [nodeVel 5 1] $v 1e-2

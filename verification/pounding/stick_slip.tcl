@@ -40,7 +40,7 @@ remove loadPattern 2
 # Record the extremes of x (turning points: the velocity changes sign).
 set extremes {}
 set vPrev [nodeVel 5 1]
-while {[getTime] < 5.0} {
+while {[getTime %.17g] < 5.0} {
   if {[analyze 1 $dt] != 0} { incr failed; break }
   set v [nodeVel 5 1]
   if {$v*$vPrev < 0} { lappend extremes [nodeDisp 5 1] }

@@ -70,5 +70,5 @@ algorithm Newton
 integrator Newmark 0.5 0.25
 analysis Transient
 set ok [analyze 300 0.01]
-if {$ok != 0} { error "analysis failed at t = [getTime]" }
-puts "viewer test bridge: 300 steps to t = [getTime]"
+if {$ok != 0} { error "analysis failed at t = [getTime %.17g]" }
+puts "viewer test bridge: 300 steps to t = [getTime %.17g]"

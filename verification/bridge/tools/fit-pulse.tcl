@@ -138,7 +138,7 @@ algorithm Linear; integrator LoadControl 0.02; analysis Static
 set worst 0.0; set pulsePgv 0.0
 foreach t $ts {
   analyze 1
-  set f [expr {$Vp * [shape [getTime] $Tp $gamma $nu $t0]}]
+  set f [expr {$Vp * [shape [getTime %.17g] $Tp $gamma $nu $t0]}]
   set worst [expr {max($worst, abs([nodeDisp 2 1] - $f))}]
   set pulsePgv [expr {max($pulsePgv, abs($f))}]
 }

@@ -25,7 +25,7 @@ proc effectiveRestitution {xi} {
 # number of failed steps (0 when all converged).
 proc runUntil {dt tEnd {stop {expr 0}}} {
   set failed 0
-  while {[getTime] < $tEnd - 0.5*$dt} {
+  while {[getTime %.17g] < $tEnd - 0.5*$dt} {
     if {[analyze 1 $dt] != 0} { incr failed; break }
     if {[uplevel #0 $stop]} { break }
   }
