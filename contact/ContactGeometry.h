@@ -22,7 +22,8 @@ namespace dabs::contact {
 ///   N_a = (1-xi)(1-eta)/4, N_b = (1+xi)(1-eta)/4, N_c = (1+xi)(1+eta)/4, N_d = (1-xi)(1+eta)/4,
 /// (xi along a->b, eta along a->d). The projection p of k is the surface point with the same
 /// in-plane coordinates as k (projection along n), found by Newton's method on
-/// S(xi) = sum N_i s_i = s_k. The gap is g = z_k - sum N_i(xi_p) z_i: g > 0 open, g < 0 penetration.
+/// S(xi) = sum N_i s_i = s_k. The gap is g = z_k - sum N_i(xi_p) z_i: g > 0 open, g < 0
+/// penetration.
 struct SurfaceFrame {
   Eigen::Vector3d n = Eigen::Vector3d::UnitZ();   ///< unit outward normal
   Eigen::Vector3d t1 = Eigen::Vector3d::UnitX();  ///< first unit tangent (along a->b)

@@ -13,8 +13,10 @@ void CoulombFriction::Params::validate() const {
   if (!(muK >= 0.0) || !std::isfinite(muK)) throw InputError("mu_k", "must be zero or positive");
   if (muK > muS) throw InputError("mu_k", "must not exceed mu_s");
   if (et < 1.0) {
-    if (!(M1 > 0.0) || !std::isfinite(M1)) throw InputError("M1", "must be positive when et < 1 (-masses M1 M2)");
-    if (!(M2 > 0.0) || !std::isfinite(M2)) throw InputError("M2", "must be positive when et < 1 (-masses M1 M2)");
+    if (!(M1 > 0.0) || !std::isfinite(M1))
+      throw InputError("M1", "must be positive when et < 1 (-masses M1 M2)");
+    if (!(M2 > 0.0) || !std::isfinite(M2))
+      throw InputError("M2", "must be positive when et < 1 (-masses M1 M2)");
   }
 }
 

@@ -51,10 +51,11 @@ class CoulombFriction {
 
   template <class T>
   struct Result {
-    std::array<T, 2> force;        ///< tangential force on the contactor (in-plane frame)
-    bool sliding;                  ///< true when the cone was exceeded
-    Eigen::Vector2d elasticAfter;  ///< elastic displacement d after the return (places the stick point)
-    double plasticSlip;            ///< |d_trial - d_after| (length)
+    std::array<T, 2> force;  ///< tangential force on the contactor (in-plane frame)
+    bool sliding;            ///< true when the cone was exceeded
+    Eigen::Vector2d
+        elasticAfter;    ///< elastic displacement d after the return (places the stick point)
+    double plasticSlip;  ///< |d_trial - d_after| (length)
   };
 
   /// Return map for trial elastic displacement d, normal force N >= 0 and relative tangential

@@ -232,8 +232,7 @@ Status NodeToSurfaceContact3d<Ndf>::update(const elements::Kinematics& kin) {
   t.gap = g.value();
   // Dashpot power: (N - spring force) times the approach rate -gdot; when N is clipped this is
   // the released spring energy, so the energy balance stays closed.
-  t.dashpotPower =
-      (Nn.value() - normal_.stiffness() * std::max(-g.value(), 0.0)) * (-gdot.value());
+  t.dashpotPower = (Nn.value() - normal_.stiffness() * std::max(-g.value(), 0.0)) * (-gdot.value());
   if (releasing) {
     t.status = ContactStatus::Open;
     t.stickValid = false;
@@ -271,8 +270,8 @@ Status NodeToSurfaceContact3d<Ndf>::update(const elements::Kinematics& kin) {
       t.frictionEnergy += Eigen::Vector2d(Ft[0].value(), Ft[1].value()).norm() * r.plasticSlip;
     } else {
       t.stickXi = xiS;
-      t.dashpotPower += friction_.damping() * (vt[0].value() * vt[0].value() +
-                                               vt[1].value() * vt[1].value());
+      t.dashpotPower +=
+          friction_.damping() * (vt[0].value() * vt[0].value() + vt[1].value() * vt[1].value());
     }
     t.stickValid = true;
   }
@@ -310,7 +309,8 @@ std::optional<Eigen::VectorXd> NodeToSurfaceContact3d<Ndf>::response(
   if (name == "contactForce") return Eigen::VectorXd(s.force);
   if (name == "gap") return Eigen::VectorXd::Constant(1, s.gap);
   if (name == "status") return Eigen::VectorXd::Constant(1, static_cast<double>(s.status));
-  if (name == "slip") return Eigen::Vector3d(s.slipLength, s.plasticSlip(0), s.plasticSlip(1)).eval();
+  if (name == "slip")
+    return Eigen::Vector3d(s.slipLength, s.plasticSlip(0), s.plasticSlip(1)).eval();
   if (name == "dissipatedEnergy")
     return Eigen::Vector3d(s.frictionEnergy + s.dampingEnergy, s.frictionEnergy, s.dampingEnergy)
         .eval();
@@ -322,9 +322,9 @@ template <int Ndf>
 std::string NodeToSurfaceContact3d<Ndf>::describe() const {
   std::ostringstream out;
   out << Base::describe() << " K " << params_.K << " e " << params_.e << " et " << params_.et
-      << " mu_s " << params_.muS << " mu_k " << params_.muK << " C " << normal_.damping()
-      << " Ct " << friction_.damping() << " search " << params_.search << " normal ("
-      << frame_.n.transpose() << ")";
+      << " mu_s " << params_.muS << " mu_k " << params_.muK << " C " << normal_.damping() << " Ct "
+      << friction_.damping() << " search " << params_.search << " normal (" << frame_.n.transpose()
+      << ")";
   return out.str();
 }
 
@@ -341,9 +341,9 @@ bool NodeToSurfaceContact3d<Ndf>::updateIfFar(const std::array<Eigen::Vector3d, 
   // and the trial state already equals the committed one but for the gap (commit and revert copy
   // the whole state; only update() and this function write it).
   if (forcesZero_ && committed_.status == ContactStatus::Open && !committed_.projValid &&
-      committed_.force.isZero(0.0) && committed_.dashpotPower == 0.0 && trial_.status == ContactStatus::Open &&
-      !trial_.projValid && trial_.force.isZero(0.0) && trial_.impulse == committed_.impulse &&
-      trial_.dampingEnergy == committed_.dampingEnergy) {
+      committed_.force.isZero(0.0) && committed_.dashpotPower == 0.0 &&
+      trial_.status == ContactStatus::Open && !trial_.projValid && trial_.force.isZero(0.0) &&
+      trial_.impulse == committed_.impulse && trial_.dampingEnergy == committed_.dampingEnergy) {
     trial_.gap = bound;
     return true;
   }
@@ -356,7 +356,8 @@ bool NodeToSurfaceContact3d<Ndf>::updateIfFar(const std::array<Eigen::Vector3d, 
   t.gap = bound;
   clearForces();
   t.impulse = committed_.impulse + 0.5 * dt * (committed_.force + t.force);
-  t.dampingEnergy = committed_.dampingEnergy + 0.5 * dt * (committed_.dashpotPower + t.dashpotPower);
+  t.dampingEnergy =
+      committed_.dampingEnergy + 0.5 * dt * (committed_.dashpotPower + t.dashpotPower);
   trial_ = t;
   return true;
 }

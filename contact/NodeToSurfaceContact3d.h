@@ -36,20 +36,20 @@ struct NodeToSurfaceParams {
 /// Local components are in the fixed surface frame (n, t1, t2) of ContactGeometry.h.
 struct NodeToSurfaceState {
   ContactStatus status = ContactStatus::Open;
-  Eigen::Vector2d stickXi = Eigen::Vector2d::Zero();  ///< stick point, target parametric coords
-  bool stickValid = false;                            ///< stickXi holds a stick point
-  Eigen::Vector2d projXi = Eigen::Vector2d::Zero();   ///< projection of the contactor
-  bool projValid = false;                             ///< projXi computed and on the quad
+  Eigen::Vector2d stickXi = Eigen::Vector2d::Zero();     ///< stick point, target parametric coords
+  bool stickValid = false;                               ///< stickXi holds a stick point
+  Eigen::Vector2d projXi = Eigen::Vector2d::Zero();      ///< projection of the contactor
+  bool projValid = false;                                ///< projXi computed and on the quad
   double gap = std::numeric_limits<double>::infinity();  ///< g (> 0 open); beyond the search
-                                                          ///< distance: a lower bound of it
-  Eigen::Vector3d force = Eigen::Vector3d::Zero();    ///< contact force on the contactor: normal
-                                                      ///< N (compression > 0), tangential t1, t2
-  double dashpotPower = 0.0;                          ///< power dissipated by the dashpots (>= 0)
-  double frictionEnergy = 0.0;                        ///< accumulated friction work (>= 0)
-  double dampingEnergy = 0.0;                         ///< accumulated dashpot work (trapezoid rule)
+                                                         ///< distance: a lower bound of it
+  Eigen::Vector3d force = Eigen::Vector3d::Zero();       ///< contact force on the contactor: normal
+                                                         ///< N (compression > 0), tangential t1, t2
+  double dashpotPower = 0.0;    ///< power dissipated by the dashpots (>= 0)
+  double frictionEnergy = 0.0;  ///< accumulated friction work (>= 0)
+  double dampingEnergy = 0.0;   ///< accumulated dashpot work (trapezoid rule)
   Eigen::Vector2d plasticSlip = Eigen::Vector2d::Zero();  ///< accumulated slip vector (t1, t2)
-  double slipLength = 0.0;                            ///< accumulated slip path length
-  Eigen::Vector3d impulse = Eigen::Vector3d::Zero();  ///< time integral of `force` (trapezoid)
+  double slipLength = 0.0;                                ///< accumulated slip path length
+  Eigen::Vector3d impulse = Eigen::Vector3d::Zero();      ///< time integral of `force` (trapezoid)
 };
 
 /// Point-to-surface contact with friction after Zhu, Abe and Fujino (2002, "Modelling
@@ -152,7 +152,7 @@ class NodeToSurfaceContact3d : public elements::FixedSizeElement<5, Ndf> {
   CoulombFriction friction_;
   ContactSearch search_;
   SurfaceFrame frame_;
-  std::array<Eigen::Vector3d, 5> X_{};  ///< reference coordinates (k, a, b, c, d)
+  std::array<Eigen::Vector3d, 5> X_{};                ///< reference coordinates (k, a, b, c, d)
   Eigen::Vector3d origin_ = Eigen::Vector3d::Zero();  ///< reference centroid of the quad
   bool forcesZero_ = true;
   NodeToSurfaceState initial_{};  ///< state of the undeformed geometry (set by initialize)

@@ -12,8 +12,10 @@ void NormalLaw::Params::validate() const {
   if (!(K > 0.0) || !std::isfinite(K)) throw InputError("K", "must be positive and finite");
   if (!(e >= 0.0 && e <= 1.0)) throw InputError("e", "must be in [0, 1]");
   if (e < 1.0) {
-    if (!(M1 > 0.0) || !std::isfinite(M1)) throw InputError("M1", "must be positive when e < 1 (-masses M1 M2)");
-    if (!(M2 > 0.0) || !std::isfinite(M2)) throw InputError("M2", "must be positive when e < 1 (-masses M1 M2)");
+    if (!(M1 > 0.0) || !std::isfinite(M1))
+      throw InputError("M1", "must be positive when e < 1 (-masses M1 M2)");
+    if (!(M2 > 0.0) || !std::isfinite(M2))
+      throw InputError("M2", "must be positive when e < 1 (-masses M1 M2)");
   }
 }
 
@@ -31,7 +33,7 @@ double NormalLaw::effectiveRestitution(double xi) {
   if (xi >= 1.0) return 0.0;  // (over)critical: the force reaches zero with no rebound speed left
   const double r = std::sqrt(1.0 - xi * xi);
   const double phase = std::numbers::pi - std::atan2(2.0 * xi * r, 1.0 - 2.0 * xi * xi);  // wd t*
-  const double wt = phase / r;                                                        // w t*
+  const double wt = phase / r;                                                            // w t*
   return std::exp(-xi * wt) * (xi / r * std::sin(phase) - std::cos(phase));
 }
 

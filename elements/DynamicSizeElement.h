@@ -36,12 +36,12 @@ class DynamicSizeElement : public Element {
   std::vector<int> nodes_;
   int ndf_;
   bool doRayleigh_;
-  Eigen::VectorXd f_;  ///< resisting force (global)
-  Eigen::MatrixXd k_;  ///< tangent stiffness (global)
-  Eigen::MatrixXd k0_; ///< initial stiffness (global)
-  Eigen::MatrixXd kc_; ///< stiffness at the last commit
-  Eigen::MatrixXd c_;  ///< material dashpots (global)
-  Eigen::MatrixXd m_;  ///< mass (global)
+  Eigen::VectorXd f_;   ///< resisting force (global)
+  Eigen::MatrixXd k_;   ///< tangent stiffness (global)
+  Eigen::MatrixXd k0_;  ///< initial stiffness (global)
+  Eigen::MatrixXd kc_;  ///< stiffness at the last commit
+  Eigen::MatrixXd c_;   ///< material dashpots (global)
+  Eigen::MatrixXd m_;   ///< mass (global)
 };
 
 }  // namespace dabs::elements

@@ -27,8 +27,8 @@ Eigen::Ref<const Eigen::MatrixXd> Element::mass() const {
 }
 
 void Element::addLoad(const BeamLoad& /*load*/, double /*factor*/) {
-  throw InputError("", std::string(typeName()) + " element " + std::to_string(tag()) +
-                           " takes no member loads");
+  throw InputError(
+      "", std::string(typeName()) + " element " + std::to_string(tag()) + " takes no member loads");
 }
 
 std::optional<Eigen::VectorXd> Element::response(std::span<const std::string> args) const {

@@ -54,7 +54,8 @@ class Element {
   virtual int dofPerNode() const = 0;
 
   /// Called once when the element joins a domain, with its nodes' coordinates. Throws InputError
-  /// for impossible geometry (zero length, vecxz parallel to the axis) so the command can report it.
+  /// for impossible geometry (zero length, vecxz parallel to the axis) so the command can report
+  /// it.
   virtual void initialize(const NodalCoordinates& x) = 0;
   /// Sets the trial state from trial kinematics, starting from the committed state.
   [[nodiscard]] virtual Status update(const Kinematics& trial) = 0;
@@ -80,8 +81,8 @@ class Element {
   virtual bool rayleighByDefault() const { return true; }
   /// True when the element is linear, so its tangent never changes and needs no re-forming.
   virtual bool isLinear() const { return false; }
-  /// False while the element's force, stiffness, damping and mass are all zero (an open contact): the
-  /// assembly then skips it, though its place in the sparse pattern stays reserved.
+  /// False while the element's force, stiffness, damping and mass are all zero (an open contact):
+  /// the assembly then skips it, though its place in the sparse pattern stays reserved.
   virtual bool isActive() const { return true; }
   /// Material updates (setTrialStrain calls of section materials) since construction: a work count
   /// for benchmarks, not part of the state.

@@ -36,8 +36,8 @@ class FixedSizeElement : public Element {
   Matrix k0_ = Matrix::Zero();  ///< initial stiffness (global)
   /// Tangent at the last commit (global), for elements that override committedStiff() with it.
   Matrix kc_ = Matrix::Zero();
-  Matrix c_ = Matrix::Zero();   ///< element's own viscous tangent (global)
-  Matrix m_ = Matrix::Zero();   ///< mass matrix (global)
+  Matrix c_ = Matrix::Zero();  ///< element's own viscous tangent (global)
+  Matrix m_ = Matrix::Zero();  ///< mass matrix (global)
 };
 
 }  // namespace dabs::elements

@@ -127,8 +127,8 @@ inline Status Concrete01::computeTrial(const State& committed, State& trial, dou
   // Line through the committed point with the committed unloading slope. It meets the
   // envelope exactly where a reloading line rejoins it, so the evaluation order decides ties;
   // it is kept as in OpenSees (sig_c + k*eps - k*eps_c) to reproduce its branch choice.
-  const double linear = committed.stress + committed.unloadSlope * strain -
-                        committed.unloadSlope * committed.strain;
+  const double linear =
+      committed.stress + committed.unloadSlope * strain - committed.unloadSlope * committed.strain;
   if (strain < committed.strain) {
     reload(trial);
     if (linear > trial.stress) {

@@ -16,9 +16,9 @@ struct Concrete02State {
   double ecmin = 0.0;    ///< most compressive strain reached
   double dept = 0.0;     ///< largest tensile strain beyond the zero-stress strain ept
   // Functions of ecmin alone, formed when ecmin changes rather than at every update:
-  double sigMin = 0.0;   ///< envelope stress at ecmin
-  double Er = 0.0;       ///< reloading slope (EERC report eq. 2.35)
-  double ept = 0.0;      ///< zero-stress strain of the reloading line (eq. 2.36)
+  double sigMin = 0.0;  ///< envelope stress at ecmin
+  double Er = 0.0;      ///< reloading slope (EERC report eq. 2.35)
+  double ept = 0.0;     ///< zero-stress strain of the reloading line (eq. 2.36)
 };
 
 namespace concrete02 {

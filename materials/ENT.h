@@ -13,7 +13,8 @@ struct ENTState {
 };
 
 /// Elastic-no-tension law: stress = E*min(eps, 0).
-/// OpenSees: `uniaxialMaterial ENT tag E` (OpenSees/OpenSees:SRC/material/uniaxial/ENTMaterial.cpp).
+/// OpenSees: `uniaxialMaterial ENT tag E`
+/// (OpenSees/OpenSees:SRC/material/uniaxial/ENTMaterial.cpp).
 class ENT final : public StatefulUniaxial<ENT, ENTState> {
  public:
   using State = ENTState;

@@ -24,9 +24,7 @@ double Elastic::getInitialTangent() const {
   return std::max(params_.E, params_.compressionModulus());
 }
 
-Elastic::State Elastic::initialState() const {
-  return State{0.0, 0.0, 0.0, getInitialTangent()};
-}
+Elastic::State Elastic::initialState() const { return State{0.0, 0.0, 0.0, getInitialTangent()}; }
 
 Status Elastic::setTrialStrain(double strain, double strainRate) {
   const double eNeg = params_.compressionModulus();

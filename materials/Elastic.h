@@ -24,9 +24,9 @@ class Elastic final : public StatefulUniaxial<Elastic, ElasticState> {
   using State = ElasticState;
 
   struct Params {
-    double E = 0.0;               ///< modulus in tension (and compression unless Eneg is given)
-    double eta = 0.0;             ///< viscous coefficient (stress per unit strain rate), >= 0
-    std::optional<double> Eneg;   ///< modulus in compression; defaults to E
+    double E = 0.0;              ///< modulus in tension (and compression unless Eneg is given)
+    double eta = 0.0;            ///< viscous coefficient (stress per unit strain rate), >= 0
+    std::optional<double> Eneg;  ///< modulus in compression; defaults to E
     /// Throws InputError when a value is not finite or eta < 0.
     void validate() const;
     /// Modulus in compression.

@@ -24,10 +24,10 @@ class ElasticPP final : public StatefulUniaxial<ElasticPP, ElasticPPState> {
   using State = ElasticPPState;
 
   struct Params {
-    double E = 0.0;                ///< elastic modulus, > 0
-    double epsyP = 0.0;            ///< yield strain in tension, > 0
-    std::optional<double> epsyN;   ///< yield strain in compression, < 0; defaults to -epsyP
-    double eps0 = 0.0;             ///< initial strain (shifts the elastic branch)
+    double E = 0.0;               ///< elastic modulus, > 0
+    double epsyP = 0.0;           ///< yield strain in tension, > 0
+    std::optional<double> epsyN;  ///< yield strain in compression, < 0; defaults to -epsyP
+    double eps0 = 0.0;            ///< initial strain (shifts the elastic branch)
     /// Throws InputError for E <= 0, epsyP <= 0, epsyN >= 0 or non-finite values.
     void validate() const;
     double compressionYieldStrain() const { return epsyN.value_or(-epsyP); }

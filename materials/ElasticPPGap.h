@@ -26,11 +26,11 @@ class ElasticPPGap final : public StatefulUniaxial<ElasticPPGap, ElasticPPGapSta
   using State = ElasticPPGapState;
 
   struct Params {
-    double E = 0.0;        ///< modulus once closed, > 0
-    double Fy = 0.0;       ///< yield stress, nonzero; negative for a compression gap
-    double gap = 0.0;      ///< initial gap (strain), same sign as Fy for a real gap
-    double eta = 0.0;      ///< post-yield hardening ratio, < 1
-    bool damage = false;   ///< accumulate the gap (no recovery of the yield point)
+    double E = 0.0;       ///< modulus once closed, > 0
+    double Fy = 0.0;      ///< yield stress, nonzero; negative for a compression gap
+    double gap = 0.0;     ///< initial gap (strain), same sign as Fy for a real gap
+    double eta = 0.0;     ///< post-yield hardening ratio, < 1
+    bool damage = false;  ///< accumulate the gap (no recovery of the yield point)
     /// Throws InputError for E <= 0, Fy == 0, eta >= 1 or non-finite values.
     void validate() const;
   };

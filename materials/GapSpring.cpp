@@ -45,8 +45,7 @@ Status GapSpring::setTrialStrain(double strain, double /*strainRate*/) {
 double GapSpring::getInitialTangent() const { return params_.gap == 0.0 ? params_.k : 0.0; }
 
 std::optional<double> GapSpring::response(std::string_view name) const {
-  const std::string_view own =
-      engages_ == Engages::Opening ? "plasticElongation" : "plasticCrush";
+  const std::string_view own = engages_ == Engages::Opening ? "plasticElongation" : "plasticCrush";
   if (name == own) return trial_.plastic;
   return std::nullopt;
 }

@@ -11,10 +11,10 @@ namespace dabs::materials {
 /// Parameters of a one-sided gap spring (restrainer cable or bumper). Units: force and length of
 /// the model.
 struct GapSpringParams {
-  double k = 0.0;                                         ///< elastic stiffness once engaged (> 0)
-  double gap = 0.0;                                       ///< clearance before engagement (>= 0)
-  double Fy = std::numeric_limits<double>::infinity();   ///< yield force (> 0; infinite = elastic)
-  double b = 0.0;                                         ///< post-yield stiffness ratio, 0 <= b < 1
+  double k = 0.0;                                       ///< elastic stiffness once engaged (> 0)
+  double gap = 0.0;                                     ///< clearance before engagement (>= 0)
+  double Fy = std::numeric_limits<double>::infinity();  ///< yield force (> 0; infinite = elastic)
+  double b = 0.0;                                       ///< post-yield stiffness ratio, 0 <= b < 1
   /// Throws InputError{field, reason} for k <= 0, gap < 0, Fy <= 0 or b outside [0, 1).
   void validate() const;
 };
@@ -31,8 +31,8 @@ struct GapSpringState {
 
 /// One-sided bilinear gap spring between two girder ends. In its engaging direction (opening for
 /// a restrainer, closing for a bumper) it carries no force while the deformation is at most `gap`,
-/// then k (e - e_p), optionally yielding at Fy with post-yield stiffness b k; it never carries force
-/// the other way. After yielding the clearance grows by the permanent deformation e_p.
+/// then k (e - e_p), optionally yielding at Fy with post-yield stiffness b k; it never carries
+/// force the other way. After yielding the clearance grows by the permanent deformation e_p.
 ///  - Restrainer (cable or bar joining the ends): engages on opening, tension (stress >= 0).
 ///    Tcl: `uniaxialMaterial Restrainer tag k gap ?-Fy Fy -b b?`; response "plasticElongation".
 ///  - Bumper (shock absorber or stopper): engages on closing, compression (stress <= 0).
@@ -52,7 +52,8 @@ class GapSpring final : public StatefulUniaxial<GapSpring, GapSpringState> {
   }
 
   [[nodiscard]] Status setTrialStrain(double strain, double strainRate = 0.0) override;
-  /// k when the clearance is zero (engaged at the first movement in the engaging direction), else 0.
+  /// k when the clearance is zero (engaged at the first movement in the engaging direction), else
+  /// 0.
   double getInitialTangent() const override;
   /// "plasticElongation" (restrainer) or "plasticCrush" (bumper): the permanent deformation e_p.
   std::optional<double> response(std::string_view name) const override;

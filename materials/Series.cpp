@@ -21,7 +21,8 @@ void Series::Params::validate() const {
   for (const auto* c : components)
     if (c == nullptr) throw InputError("materials", "a component material is missing");
   if (maxIterations < 1) throw InputError("maxIterations", "must be at least 1");
-  if (!std::isfinite(tolerance) || tolerance <= 0.0) throw InputError("tolerance", "must be positive");
+  if (!std::isfinite(tolerance) || tolerance <= 0.0)
+    throw InputError("tolerance", "must be positive");
 }
 
 Series::Series(int tag, const Params& params)

@@ -21,18 +21,18 @@ class Series final : public UniaxialMaterial {
  public:
   struct Params {
     std::vector<const UniaxialMaterial*> components;  ///< prototypes (cloned), at least two
-    int maxIterations = 50;     ///< Newton iterations per trial, >= 1
-    double tolerance = 1e-12;   ///< stress unbalance relative to the stress level, > 0
+    int maxIterations = 50;                           ///< Newton iterations per trial, >= 1
+    double tolerance = 1e-12;  ///< stress unbalance relative to the stress level, > 0
     /// Throws InputError for fewer than two or null components, or bad iteration controls.
     void validate() const;
   };
 
   /// Trial and committed values; componentStrains has one entry per component.
   struct State {
-    double strain = 0.0;                  ///< total strain
-    double stress = 0.0;                  ///< common stress
-    double tangent = 0.0;                 ///< 1 / sum of component flexibilities
-    std::vector<double> componentStrains; ///< strain of each component
+    double strain = 0.0;                   ///< total strain
+    double stress = 0.0;                   ///< common stress
+    double tangent = 0.0;                  ///< 1 / sum of component flexibilities
+    std::vector<double> componentStrains;  ///< strain of each component
   };
 
   Series(int tag, const Params& params);

@@ -25,8 +25,9 @@ struct Steel02State {
   double sig0 = 0.0;     ///< stress at that intersection
   double epsR = 0.0;     ///< strain at the last reversal
   double sigR = 0.0;     ///< stress at the last reversal
-  int kon = 0;           ///< 0 virgin, 1 loading (towards tension), 2 towards compression, 3 virgin at sigInit
-  double R = 0.0;        ///< curvature of the current branch (a function of epsPl and eps0)
+  int kon =
+      0;  ///< 0 virgin, 1 loading (towards tension), 2 towards compression, 3 virgin at sigInit
+  double R = 0.0;  ///< curvature of the current branch (a function of epsPl and eps0)
   /// Below this |eps*| the branch is its initial line to round-off: |eps*|^R < e^-38 (below half
   /// an ulp of 1), so 1 + |eps*|^R and its power 1/R are exactly 1 (0 when R < 1).
   double linearLimit = 0.0;
@@ -45,17 +46,17 @@ class Steel02 final : public StatefulUniaxial<Steel02, Steel02State> {
   using State = Steel02State;
 
   struct Params {
-    double Fy = 0.0;      ///< yield stress, > 0
-    double E = 0.0;       ///< initial modulus, > 0
-    double b = 0.0;       ///< strain-hardening ratio, in [0, 1)
-    double R0 = 15.0;     ///< initial transition curvature, > 0
-    double cR1 = 0.925;   ///< curvature degradation, in [0, 1)
-    double cR2 = 0.15;    ///< curvature degradation, > 0
-    double a1 = 0.0;      ///< compressive isotropic hardening, >= 0
-    double a2 = 1.0;      ///< normalising strain for a1 (units of epsy), > 0
-    double a3 = 0.0;      ///< tensile isotropic hardening, >= 0
-    double a4 = 1.0;      ///< normalising strain for a3 (units of epsy), > 0
-    double sigInit = 0.0; ///< initial stress (strain offset sigInit/E), |sigInit| < Fy
+    double Fy = 0.0;       ///< yield stress, > 0
+    double E = 0.0;        ///< initial modulus, > 0
+    double b = 0.0;        ///< strain-hardening ratio, in [0, 1)
+    double R0 = 15.0;      ///< initial transition curvature, > 0
+    double cR1 = 0.925;    ///< curvature degradation, in [0, 1)
+    double cR2 = 0.15;     ///< curvature degradation, > 0
+    double a1 = 0.0;       ///< compressive isotropic hardening, >= 0
+    double a2 = 1.0;       ///< normalising strain for a1 (units of epsy), > 0
+    double a3 = 0.0;       ///< tensile isotropic hardening, >= 0
+    double a4 = 1.0;       ///< normalising strain for a3 (units of epsy), > 0
+    double sigInit = 0.0;  ///< initial stress (strain offset sigInit/E), |sigInit| < Fy
     /// Throws InputError naming the offending parameter.
     void validate() const;
   };
@@ -171,7 +172,7 @@ inline Status Steel02::computeTrial(const State& committed, State& trial, double
     trial.stress = (p.b * epsRat + (1.0 - p.b) * epsRat) * (trial.sig0 - trial.sigR) + trial.sigR;
     trial.tangent = (p.b + (1.0 - p.b)) * (trial.sig0 - trial.sigR) * trial.invSpan;
     return std::isfinite(trial.stress) && std::isfinite(trial.tangent) ? Status::Ok
-                                                                         : Status::NonFinite;
+                                                                       : Status::NonFinite;
   }
   const double t = absRat > 0.0 ? std::exp(trial.R * std::log(absRat)) : 0.0;
   const double dum1 = 1.0 + t;
@@ -187,7 +188,7 @@ inline Status Steel02::computeTrial(const State& committed, State& trial, double
   const double eStar = p.b + (1.0 - p.b) / (dum1 * dum2);
   trial.tangent = eStar * (trial.sig0 - trial.sigR) * trial.invSpan;
   return std::isfinite(trial.stress) && std::isfinite(trial.tangent) ? Status::Ok
-                                                                       : Status::NonFinite;
+                                                                     : Status::NonFinite;
 }
 
 inline Status Steel02::setTrialStrain(double strain, double /*strainRate*/) {

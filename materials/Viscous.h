@@ -7,10 +7,10 @@ namespace dabs::materials {
 
 /// State of Viscous (no history beyond the trial values).
 struct ViscousState {
-  double strain = 0.0;      ///< strain (not used by the law)
-  double strainRate = 0.0;  ///< strain rate
-  double stress = 0.0;      ///< C*|rate|^alpha*sign(rate)
-  double dampTangent = 0.0; ///< d(stress)/d(rate)
+  double strain = 0.0;       ///< strain (not used by the law)
+  double strainRate = 0.0;   ///< strain rate
+  double stress = 0.0;       ///< C*|rate|^alpha*sign(rate)
+  double dampTangent = 0.0;  ///< d(stress)/d(rate)
 };
 
 /// Nonlinear dashpot: stress = C*|rate|^alpha*sign(rate); the damping tangent
@@ -22,9 +22,9 @@ class Viscous final : public StatefulUniaxial<Viscous, ViscousState> {
   using State = ViscousState;
 
   struct Params {
-    double C = 0.0;          ///< damping coefficient (stress per rate^alpha), >= 0
-    double alpha = 1.0;      ///< velocity exponent, > 0
-    double minVel = 1e-11;   ///< floor of |rate| in the damping tangent, > 0
+    double C = 0.0;         ///< damping coefficient (stress per rate^alpha), >= 0
+    double alpha = 1.0;     ///< velocity exponent, > 0
+    double minVel = 1e-11;  ///< floor of |rate| in the damping tangent, > 0
     /// Throws InputError for C < 0, alpha <= 0, minVel <= 0 or non-finite values.
     void validate() const;
   };

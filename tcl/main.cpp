@@ -86,8 +86,9 @@ int runPipedInput(const char* argv0) {
   int size = 0;
   const char* rest = Tcl_GetStringFromObj(command, &size);
   if (size > 0 && !Tcl_CommandComplete(rest)) {
-    std::fprintf(stderr, "incomplete command at end of input (a brace, bracket or quote is not closed):\n%s",
-                 rest);
+    std::fprintf(
+        stderr, "incomplete command at end of input (a brace, bracket or quote is not closed):\n%s",
+        rest);
     failed = true;
   } else if (size > 0) {
     run();

@@ -35,7 +35,7 @@ TEST(ContactGeometryTest, InverseBilinearRecoversParametricPoint) {
   const std::array<Eigen::Vector2d, 4> s{Eigen::Vector2d(0, 0), Eigen::Vector2d(3, 0.2),
                                          Eigen::Vector2d(2.5, 2.0), Eigen::Vector2d(-0.3, 1.5)};
   for (const Eigen::Vector2d& xi : {Eigen::Vector2d(0.3, -0.7), Eigen::Vector2d(1, 1),
-                                   Eigen::Vector2d(-1, 0.25), Eigen::Vector2d(1.4, -1.2)}) {
+                                    Eigen::Vector2d(-1, 0.25), Eigen::Vector2d(1.4, -1.2)}) {
     const auto N = shapeFunctions(xi.x(), xi.y());
     const Eigen::Vector2d p = N[0] * s[0] + N[1] * s[1] + N[2] * s[2] + N[3] * s[3];
     const auto found = inverseBilinear(s, p, 1e-13);
@@ -51,7 +51,8 @@ TEST(ContactGeometryTest, ShapeFunctionsPartitionUnityAndDerivativesSumToZero) {
   for (int a = 0; a < 2; ++a) EXPECT_NEAR(dN[a][0] + dN[a][1] + dN[a][2] + dN[a][3], 0.0, kTol);
   // Central difference of N_c in xi.
   const double h = 1e-6;
-  EXPECT_NEAR(dN[0][2], (shapeFunctions(0.2 + h, -0.9)[2] - shapeFunctions(0.2 - h, -0.9)[2]) / (2 * h),
+  EXPECT_NEAR(dN[0][2],
+              (shapeFunctions(0.2 + h, -0.9)[2] - shapeFunctions(0.2 - h, -0.9)[2]) / (2 * h),
               1e-9);
 }
 

@@ -27,7 +27,7 @@ TEST(CoulombFrictionTest, SlideReturnsToKineticConeAndDissipates) {
   const auto r = f.returnMap<double>(d, N, {0.0, 0.0}, false);
   EXPECT_TRUE(r.sliding);
   EXPECT_NEAR(std::hypot(r.force[0], r.force[1]), 0.3 * N, kTol);  // |t| = mu_k N
-  EXPECT_NEAR(r.force[0] / r.force[1], 0.75, kTol);                 // along the trial force
+  EXPECT_NEAR(r.force[0] / r.force[1], 0.75, kTol);                // along the trial force
   EXPECT_NEAR(r.elasticAfter.norm(), 0.3 * N / kKt, kTol);         // spring stays on the limit
   EXPECT_NEAR(r.plasticSlip, 0.05 - 0.3 * N / kKt, kTol);
   // Work of the friction force on the plastic slip is positive.
@@ -55,7 +55,8 @@ TEST(CoulombFrictionTest, StickDashpotAndFrictionless) {
 
 TEST(CoulombFrictionTest, BadInputThrows) {
   EXPECT_THROW((CoulombFriction::Params{0.0}.validate()), InputError);
-  EXPECT_THROW((CoulombFriction::Params{1.0, 1.0, 0.2, 0.3}.validate()), InputError);  // mu_k > mu_s
+  EXPECT_THROW((CoulombFriction::Params{1.0, 1.0, 0.2, 0.3}.validate()),
+               InputError);  // mu_k > mu_s
   EXPECT_THROW((CoulombFriction::Params{1.0, 1.0, -0.2, 0.0}.validate()), InputError);
   EXPECT_THROW((CoulombFriction::Params{1.0, 0.5, 0.2, 0.1}.validate()), InputError);  // masses
 }

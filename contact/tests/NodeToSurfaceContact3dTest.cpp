@@ -25,9 +25,9 @@ using elements::testing::numericalStiffness;
 using elements::testing::relativeDifference;
 using elements::testing::TrialState;
 
-constexpr double kTol = 1e-9;          // closed forms (relative to the force scale where noted)
-constexpr double kFdTol = 1e-6;        // analytic vs central-difference tangent (relative)
-constexpr double kFdStep = 1e-7;       // perturbation for the FD tangent (length)
+constexpr double kTol = 1e-9;     // closed forms (relative to the force scale where noted)
+constexpr double kFdTol = 1e-6;   // analytic vs central-difference tangent (relative)
+constexpr double kFdStep = 1e-7;  // perturbation for the FD tangent (length)
 constexpr double kK = 1e5;
 
 // Target quad a(0,0,0) b(2,0,0) c(2,2,0) d(0,2,0): n = +z, t1 = +x, t2 = +y.
@@ -304,7 +304,8 @@ TEST(NodeToSurfaceContact3dTest, ContactorInTwoPairsOnASharedEdge) {
   // faces. Past the edge only face B carries the contactor.
   const Eigen::Vector3d k0(2, 1, 0.1);
   auto a = make(params(), k0);
-  auto b = std::make_unique<NodeToSurfaceContact3d<3>>(2, 10, std::array<int, 4>{2, 5, 6, 3}, params());
+  auto b =
+      std::make_unique<NodeToSurfaceContact3d<3>>(2, 10, std::array<int, 4>{2, 5, 6, 3}, params());
   b->initialize({k0, Eigen::Vector3d(2, 0, 0), Eigen::Vector3d(4, 0, 0), Eigen::Vector3d(4, 2, 0),
                  Eigen::Vector3d(2, 2, 0)});
   TrialState s = zeroState(15);
@@ -315,7 +316,7 @@ TEST(NodeToSurfaceContact3dTest, ContactorInTwoPairsOnASharedEdge) {
   EXPECT_NEAR(nodeForce(*a, 0).z() + nodeForce(*b, 0).z(), -2 * N, kTol * N);
   EXPECT_NEAR(nodeForce(*a, 2).z(), 0.5 * N, kTol * N);  // node b of face A = (2,0,0)
   EXPECT_NEAR(nodeForce(*b, 1).z(), 0.5 * N, kTol * N);  // node a of face B = (2,0,0)
-  setU(s, 0, {0.5, 0, -0.15});                            // x = 2.5: on face B only
+  setU(s, 0, {0.5, 0, -0.15});                           // x = 2.5: on face B only
   ASSERT_TRUE(ok(a->update(s.kinematics())));
   ASSERT_TRUE(ok(b->update(s.kinematics())));
   EXPECT_EQ(a->resistingForce().norm(), 0.0);
@@ -398,8 +399,9 @@ TEST(NodeToSurfaceContact3dTest, ParallelFacesAcrossAGapAreFarByTheSlab) {
   ASSERT_TRUE(ok(e->update(s.kinematics())));
   EXPECT_FALSE(e->trialState().projValid);
   EXPECT_NEAR(e->trialState().gap, 0.2, kTol);
-  EXPECT_NEAR(ContactSearch::distanceLowerBound(Eigen::Vector3d(0, 0, 0.2), {Eigen::Vector3d(0, 0, 0),
-                  Eigen::Vector3d(2, 0, 0), Eigen::Vector3d(2, 2, 0), Eigen::Vector3d(0, 2, 0)}),
+  EXPECT_NEAR(ContactSearch::distanceLowerBound(
+                  Eigen::Vector3d(0, 0, 0.2), {Eigen::Vector3d(0, 0, 0), Eigen::Vector3d(2, 0, 0),
+                                               Eigen::Vector3d(2, 2, 0), Eigen::Vector3d(0, 2, 0)}),
               std::sqrt(2.04) - std::sqrt(2.0), kTol);
   // Behind the face (penetrated 0.3 m, more than the search distance) is contact, never far.
   auto deep = make(p, {1.0, 1.0, 0.1});
@@ -411,7 +413,8 @@ TEST(NodeToSurfaceContact3dTest, ParallelFacesAcrossAGapAreFarByTheSlab) {
   // A warped face: corners at heights 0, 0.1, 0, -0.1; the slab is bounded by the highest, 0.1.
   std::array<Eigen::Vector3d, 4> warped{Eigen::Vector3d(0, 0, 0), Eigen::Vector3d(2, 0, 0.1),
                                         Eigen::Vector3d(2, 2, 0), Eigen::Vector3d(0, 2, -0.1)};
-  EXPECT_NEAR(ContactSearch::distanceLowerBound(Eigen::Vector3d(1, 1, 0.5), warped, Eigen::Vector3d(0, 0, 1)),
+  EXPECT_NEAR(ContactSearch::distanceLowerBound(Eigen::Vector3d(1, 1, 0.5), warped,
+                                                Eigen::Vector3d(0, 0, 1)),
               0.4, kTol);
 }
 
@@ -496,7 +499,8 @@ ImpactResult headOn(double e, double M1, double M2, double v1, double v2) {
   bool touched = false;
   for (int i = 0; i < 2000000; ++i) {
     const auto [a1, b1] = accel(u1, w1, u2, w2, 0);
-    const auto [a2, b2] = accel(u1 + 0.5 * dt * w1, w1 + 0.5 * dt * a1, u2 + 0.5 * dt * w2, w2 + 0.5 * dt * b1, 0);
+    const auto [a2, b2] =
+        accel(u1 + 0.5 * dt * w1, w1 + 0.5 * dt * a1, u2 + 0.5 * dt * w2, w2 + 0.5 * dt * b1, 0);
     const auto [a3, b3] = accel(u1 + 0.5 * dt * (w1 + 0.5 * dt * a1), w1 + 0.5 * dt * a2,
                                 u2 + 0.5 * dt * (w2 + 0.5 * dt * b1), w2 + 0.5 * dt * b2, 0);
     const auto [a4, b4] = accel(u1 + dt * (w1 + 0.5 * dt * a2), w1 + dt * a3,
@@ -609,15 +613,15 @@ TEST(NodeToSurfaceContact3dTest, BlockOnPlaneSticksUntilMuSNThenSlidesAndStops) 
   {
     auto el = make(p, {1, 1, 0.0});
     TrialState s = zeroState(15);
-    s.u(2) = -W / kK;  // static penetration
+    s.u(2) = -W / kK;          // static penetration
     const double rate = 10.0;  // ramp P = rate t
     double tSlide = -1.0;
-    explicitRun(*el, s, m, dt, 200000,
-                [&](double t) { return Eigen::Vector3d(rate * t, 0, -W); },
-                [&](double t) {
-                  if (tSlide < 0 && el->committedState().status == ContactStatus::Slide) tSlide = t;
-                  return t >= 0.8;
-                });
+    explicitRun(
+        *el, s, m, dt, 200000, [&](double t) { return Eigen::Vector3d(rate * t, 0, -W); },
+        [&](double t) {
+          if (tSlide < 0 && el->committedState().status == ContactStatus::Slide) tSlide = t;
+          return t >= 0.8;
+        });
     // Stuck until P = mu_s N (within two steps of the ramp; the inertia of the quasi-static
     // stick phase is negligible).
     EXPECT_NEAR(rate * tSlide, muS * W, rate * 2 * dt);
@@ -635,7 +639,8 @@ TEST(NodeToSurfaceContact3dTest, BlockOnPlaneSticksUntilMuSNThenSlidesAndStops) 
     s.v(0) = v0;
     explicitRun(*el, s, m, dt, 5000, [&](double) { return Eigen::Vector3d(0, 0, -W); });
     // Stops after sliding v0^2 / (2 mu_k g).
-    EXPECT_NEAR(el->committedState().slipLength, v0 * v0 / (2 * muK * g), 1e-2 * v0 * v0 / (2 * muK * g));
+    EXPECT_NEAR(el->committedState().slipLength, v0 * v0 / (2 * muK * g),
+                1e-2 * v0 * v0 / (2 * muK * g));
     EXPECT_LT(std::abs(s.v(0)), 1e-3);
   }
 }

@@ -66,9 +66,9 @@ TEST(NormalLawTest, DashpotFromReducedMassAndClippedForce) {
   const NormalLaw law({1e6, 0.6, 3.0, 6.0});
   const double xi = NormalLaw::dampingRatio(0.6);
   EXPECT_NEAR(law.damping(), 2 * xi * std::sqrt(1e6 * 2.0), 1e-9);  // M1 M2/(M1+M2) = 2
-  EXPECT_EQ(law.force(0.01, -5.0), 0.0);                             // open
-  EXPECT_NEAR(law.force(-0.002, 0.0), 2000.0, 1e-9);                 // K * penetration
-  EXPECT_EQ(law.force(-0.002, 1e6), 0.0);                            // would pull: zero
+  EXPECT_EQ(law.force(0.01, -5.0), 0.0);                            // open
+  EXPECT_NEAR(law.force(-0.002, 0.0), 2000.0, 1e-9);                // K * penetration
+  EXPECT_EQ(law.force(-0.002, 1e6), 0.0);                           // would pull: zero
 }
 
 TEST(NormalLawTest, BadInputThrows) {

@@ -28,7 +28,7 @@ void BeamMemberLoads<Nb>::clear() {
 // The axial force is the axial load between x and J (the member is held axially at I).
 template <int Nb>
 typename BeamMemberLoads<Nb>::Statics BeamMemberLoads<Nb>::statics(const BeamLoad& load,
-                                                                    double x) const {
+                                                                   double x) const {
   const double length = length_;
   const double a = load.a * length;
   const Eigen::Vector3d& w = load.w;
@@ -53,13 +53,14 @@ typename BeamMemberLoads<Nb>::Statics BeamMemberLoads<Nb>::statics(const BeamLoa
   const Eigen::Vector3d k = (w1 - w) / span;
   const Eigen::Vector3d total = 0.5 * (w + w1) * span;
   // First moment about I: int w s ds = w0 (B^2 - A^2)/2 + k ((B^3 - A^3)/3 - A (B^2 - A^2)/2).
-  const Eigen::Vector3d moment = w * 0.5 * (b * b - a * a) +
-                                 k * ((b * b * b - a * a * a) / 3.0 - a * 0.5 * (b * b - a * a));
+  const Eigen::Vector3d moment =
+      w * 0.5 * (b * b - a * a) + k * ((b * b * b - a * a * a) / 3.0 - a * 0.5 * (b * b - a * a));
   const Eigen::Vector3d rI = total - moment / length;  // reactions at I (lever rule)
   const double c = std::clamp(x, a, b);
   const double cc = c - a, xx = x - a;
   const Eigen::Vector3d loaded = w * cc + k * (0.5 * cc * cc);
-  const Eigen::Vector3d lever = w * (xx * cc - 0.5 * cc * cc) + k * (0.5 * xx * cc * cc - cc * cc * cc / 3.0);
+  const Eigen::Vector3d lever =
+      w * (xx * cc - 0.5 * cc * cc) + k * (0.5 * xx * cc * cc - cc * cc * cc / 3.0);
   s.n = total.x() - loaded.x();
   s.vy = -rI.y() + loaded.y();
   s.mz = -rI.y() * x + lever.y();

@@ -14,10 +14,10 @@ template <int Ndm>
 class DispBeamColumn final : public SectionBeamColumn<Ndm> {
  public:
   using Super = SectionBeamColumn<Ndm>;
+  using Super::Super;
   using typename Super::Basic;
   using typename Super::BasicMatrix;
   using typename Super::Vector;
-  using Super::Super;
 
   std::string_view typeName() const override { return "dispBeamColumn"; }
   void initialize(const NodalCoordinates& x) override;

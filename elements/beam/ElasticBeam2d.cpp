@@ -42,11 +42,11 @@ void ElasticBeam2d::initialize(const NodalCoordinates& x) {
 
 std::string ElasticBeam2d::describe() const {
   std::ostringstream s;
-  s << "ElasticBeam2d " << tag() << ": nodes " << nodes_[0] << " " << nodes_[1]
-    << ", A " << params_.area << ", E " << params_.modulus << ", Iz " << params_.inertiaZ
-    << ", geomTransf " << transf_->typeName() << " " << transf_->tag()
-    << ", mass/length " << params_.massPerLength << (params_.consistentMass ? " (consistent)" : "")
-    << ", basic forces " << basicForce().transpose();
+  s << "ElasticBeam2d " << tag() << ": nodes " << nodes_[0] << " " << nodes_[1] << ", A "
+    << params_.area << ", E " << params_.modulus << ", Iz " << params_.inertiaZ << ", geomTransf "
+    << transf_->typeName() << " " << transf_->tag() << ", mass/length " << params_.massPerLength
+    << (params_.consistentMass ? " (consistent)" : "") << ", basic forces "
+    << basicForce().transpose();
   return s.str();
 }
 

@@ -41,8 +41,7 @@ void ElasticBeam3d::initialize(const NodalCoordinates& x) {
   if (mass > 0.0 && !params_.consistentMass) {
     for (int d : {0, 1, 2, 6, 7, 8}) m_(d, d) = 0.5 * mass;
   } else if (mass > 0.0) {
-    m_ = transf_->globalFromLocal(
-        consistentMass3d(mass, length, params_.torsion / params_.area));
+    m_ = transf_->globalFromLocal(consistentMass3d(mass, length, params_.torsion / params_.area));
   }
   resetState();
 }
@@ -53,8 +52,8 @@ std::string ElasticBeam3d::describe() const {
     << params_.area << ", E " << params_.modulus << ", G " << params_.shearModulus << ", J "
     << params_.torsion << ", Iy " << params_.inertiaY << ", Iz " << params_.inertiaZ
     << ", geomTransf " << transf_->typeName() << " " << transf_->tag() << ", mass/length "
-    << params_.massPerLength << (params_.consistentMass ? " (consistent)" : "")
-    << ", basic forces " << basicForce().transpose();
+    << params_.massPerLength << (params_.consistentMass ? " (consistent)" : "") << ", basic forces "
+    << basicForce().transpose();
   return s.str();
 }
 

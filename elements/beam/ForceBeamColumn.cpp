@@ -163,7 +163,8 @@ template <int Ndm>
 void ForceBeamColumn<Ndm>::loadsChanged() {
   sp_.clear();
   if (this->loads_.empty()) return;
-  for (const auto& p : this->points_) sp_.push_back(this->loads_.sectionForces(p.section->type(), p.xi));
+  for (const auto& p : this->points_)
+    sp_.push_back(this->loads_.sectionForces(p.section->type(), p.xi));
 }
 
 template <int Ndm>

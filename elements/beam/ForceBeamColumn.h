@@ -33,7 +33,8 @@ class ForceBeamColumn final : public SectionBeamColumn<Ndm> {
                   std::unique_ptr<typename Super::Transf> transf, double massPerLength,
                   int maxIter = 10, double tol = 1e-12)
       : Super(tag, nodeI, nodeJ, std::move(points), std::move(transf), massPerLength),
-        maxIter_(maxIter), tol_(tol) {}
+        maxIter_(maxIter),
+        tol_(tol) {}
 
   std::string_view typeName() const override { return "forceBeamColumn"; }
   void initialize(const NodalCoordinates& x) override;
@@ -81,7 +82,7 @@ class ForceBeamColumn final : public SectionBeamColumn<Ndm> {
   /// Section forces of the member loads in the basic system, per point (empty without loads).
   std::vector<SectionVector> sp_;
   State trial_, committed_;
-  State virgin_;  ///< the state at zero deformation, formed once by initialize()
+  State virgin_;                  ///< the state at zero deformation, formed once by initialize()
   bool trialIsCommitted_ = true;  ///< trial_ equals committed_ (no update since commit/revert)
 };
 

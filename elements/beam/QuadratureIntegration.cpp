@@ -142,14 +142,18 @@ HingeRadauIntegration::HingeRadauIntegration(int tag, int secI, double lpI, int 
 std::vector<double> HingeRadauIntegration::locations(double length) const {
   const double a = 4.0 * lpI_ / length, b = 1.0 - 4.0 * lpJ_ / length;
   const double g = 0.5 / std::sqrt(3.0);
-  return {0.0, 8.0 / 3.0 * lpI_ / length, a + (b - a) * (0.5 - g), a + (b - a) * (0.5 + g),
-          1.0 - 8.0 / 3.0 * lpJ_ / length, 1.0};
+  return {0.0,
+          8.0 / 3.0 * lpI_ / length,
+          a + (b - a) * (0.5 - g),
+          a + (b - a) * (0.5 + g),
+          1.0 - 8.0 / 3.0 * lpJ_ / length,
+          1.0};
 }
 
 std::vector<double> HingeRadauIntegration::weights(double length) const {
   const double a = 4.0 * lpI_ / length, b = 1.0 - 4.0 * lpJ_ / length;
-  return {lpI_ / length, 3.0 * lpI_ / length, 0.5 * (b - a), 0.5 * (b - a), 3.0 * lpJ_ / length,
-          lpJ_ / length};
+  return {lpI_ / length, 3.0 * lpI_ / length, 0.5 * (b - a),
+          0.5 * (b - a), 3.0 * lpJ_ / length, lpJ_ / length};
 }
 
 }  // namespace dabs::elements

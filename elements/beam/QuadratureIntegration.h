@@ -40,8 +40,8 @@ class QuadratureIntegration final : public BeamIntegration {
 /// Modified Gauss-Radau plastic-hinge integration (`beamIntegration HingeRadau tag secI lpI secJ
 /// lpJ secE`; Scott & Fenves 2006, J. Struct. Eng. 132(2), eq. 21): two points in each hinge
 /// region of length 4 lp (two-point Radau: at the end and at 8/3 lp, weights lp and 3 lp, so the
-/// end section carries the hinge length lp and the point at 8/3 lp is elastic) and two-point Gauss-Legendre on the
-/// interior [4 lpI, L - 4 lpJ] with the elastic section secE.
+/// end section carries the hinge length lp and the point at 8/3 lp is elastic) and two-point
+/// Gauss-Legendre on the interior [4 lpI, L - 4 lpJ] with the elastic section secE.
 class HingeRadauIntegration final : public BeamIntegration {
  public:
   /// Throws InputError unless lpI, lpJ >= 0 and 4 (lpI + lpJ) < L is possible (checked per L).
@@ -49,7 +49,9 @@ class HingeRadauIntegration final : public BeamIntegration {
   std::string_view typeName() const override { return "HingeRadau"; }
   /// Only the end points carry the hinge sections; the second Radau point of each hinge region
   /// (at 8/3 lp) takes the elastic section, as in Scott & Fenves (2006) and OpenSees.
-  std::vector<int> sectionTags() const override { return {secI_, secE_, secE_, secE_, secE_, secJ_}; }
+  std::vector<int> sectionTags() const override {
+    return {secI_, secE_, secE_, secE_, secE_, secJ_};
+  }
   std::vector<double> locations(double length) const override;
   std::vector<double> weights(double length) const override;
   std::unique_ptr<BeamIntegration> clone() const override {

@@ -30,14 +30,16 @@ class SectionBeamColumn : public FixedSizeElement<2, BeamColumnTraits<Ndm>::kDof
   using Basic = typename Transf::Basic;
   using BasicMatrix = typename Transf::BasicMatrix;
   using Base = FixedSizeElement<2, Traits::kDofPerNode>;
-  using typename Base::Vector;
   using typename Base::Matrix;
+  using typename Base::Vector;
   static constexpr int kBasic = Traits::kBasic;
 
   /// `points` hold section clones with their locations and weights; `massPerLength` >= 0.
   SectionBeamColumn(int tag, int nodeI, int nodeJ, std::vector<BeamIntegrationPoint> points,
                     std::unique_ptr<Transf> transf, double massPerLength)
-      : Base(tag, {nodeI, nodeJ}), points_(std::move(points)), transf_(std::move(transf)),
+      : Base(tag, {nodeI, nodeJ}),
+        points_(std::move(points)),
+        transf_(std::move(transf)),
         massPerLength_(massPerLength) {}
 
   /// -cMass: consistent instead of lumped mass (cubic transverse, linear axial, no rotary or

@@ -16,8 +16,8 @@ using materials::section::SectionCode;
 template <int Ndm>
 ZeroLengthSection<Ndm>::ZeroLengthSection(
     int tag, int nodeI, int nodeJ,
-    std::unique_ptr<materials::section::SectionForceDeformation> section,
-    const Eigen::Vector3d& x, const Eigen::Vector3d& yp)
+    std::unique_ptr<materials::section::SectionForceDeformation> section, const Eigen::Vector3d& x,
+    const Eigen::Vector3d& yp)
     : Base(tag, {nodeI, nodeJ}), section_(std::move(section)) {
   assert(section_);
   const std::string who = "zeroLengthSection " + std::to_string(tag);
@@ -47,7 +47,7 @@ ZeroLengthSection<Ndm>::ZeroLengthSection(
   for (int r = 0; r < order; ++r) {
     const SectionCode c = codes[static_cast<std::size_t>(r)];
     const bool translation = c == SectionCode::P || c == SectionCode::Vy || c == SectionCode::Vz;
-    const int axis = (c == SectionCode::P || c == SectionCode::T)    ? 0
+    const int axis = (c == SectionCode::P || c == SectionCode::T)     ? 0
                      : (c == SectionCode::Vy || c == SectionCode::My) ? 1
                                                                       : 2;
     if constexpr (Ndm == 2) {
@@ -133,9 +133,8 @@ template <int Ndm>
 std::string ZeroLengthSection<Ndm>::describe() const {
   std::ostringstream s;
   s << "ZeroLengthSection " << this->tag() << ": nodes " << this->nodes_[0] << " "
-    << this->nodes_[1] << ", section " << section_->tag() << ", x "
-    << axes_.row(0) << ", y " << axes_.row(1) << ", resultants "
-    << section_->getStressResultant().transpose();
+    << this->nodes_[1] << ", section " << section_->tag() << ", x " << axes_.row(0) << ", y "
+    << axes_.row(1) << ", resultants " << section_->getStressResultant().transpose();
   return s.str();
 }
 

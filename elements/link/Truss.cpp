@@ -13,12 +13,14 @@ void Truss::Params::validate() const {
   if (!(area > 0.0)) throw InputError("A", "must be positive");
   if (rho < 0.0) throw InputError("-rho", "must not be negative");
   if (ndm < 1 || ndm > 3) throw InputError("ndm", "must be 1, 2 or 3");
-  if (ndf < ndm) throw InputError("nodes", "need at least " + std::to_string(ndm) + " dofs for a truss in " +
-                                               std::to_string(ndm) + "D");
+  if (ndf < ndm)
+    throw InputError("nodes", "need at least " + std::to_string(ndm) + " dofs for a truss in " +
+                                  std::to_string(ndm) + "D");
 }
 
 Truss::Truss(int tag, Params params, std::unique_ptr<materials::UniaxialMaterial> material)
-    : DynamicSizeElement(tag, params.nodes, params.ndf, params.doRayleigh), params_(std::move(params)),
+    : DynamicSizeElement(tag, params.nodes, params.ndf, params.doRayleigh),
+      params_(std::move(params)),
       material_(std::move(material)) {
   b_ = Eigen::VectorXd::Zero(numDof());
 }
@@ -72,8 +74,8 @@ void Truss::assemble() {
   const double nForce = params_.area * material_->getStress();
   const Eigen::Vector3d n = axis_ / l;
   const int ndm = params_.ndm, ndf = params_.ndf;
-  const Eigen::MatrixXd kg = (nForce / l) * (Eigen::MatrixXd::Identity(ndm, ndm) -
-                                             n.head(ndm) * n.head(ndm).transpose());
+  const Eigen::MatrixXd kg =
+      (nForce / l) * (Eigen::MatrixXd::Identity(ndm, ndm) - n.head(ndm) * n.head(ndm).transpose());
   k_.block(0, 0, ndm, ndm) += kg;
   k_.block(ndf, ndf, ndm, ndm) += kg;
   k_.block(0, ndf, ndm, ndm) -= kg;

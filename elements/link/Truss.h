@@ -26,7 +26,7 @@ class Truss final : public DynamicSizeElement {
     int ndm = 3;
     int ndf = 3;
     double area = 0.0;
-    double rho = 0.0;        ///< mass per unit length
+    double rho = 0.0;  ///< mass per unit length
     bool consistentMass = false;
     bool doRayleigh = false;
     bool corotational = false;  ///< corotTruss: large displacements
@@ -53,8 +53,8 @@ class Truss final : public DynamicSizeElement {
   Params params_;
   std::unique_ptr<materials::UniaxialMaterial> material_;
   double length_ = 0.0;
-  Eigen::Vector3d axis0_ = Eigen::Vector3d::Zero();  ///< x_j - x_i (undeformed)
-  Eigen::Vector3d axis_ = Eigen::Vector3d::Zero();   ///< deformed x_j - x_i (corotational)
+  Eigen::Vector3d axis0_ = Eigen::Vector3d::Zero();        ///< x_j - x_i (undeformed)
+  Eigen::Vector3d axis_ = Eigen::Vector3d::Zero();         ///< deformed x_j - x_i (corotational)
   Eigen::Vector3d duCommitted_ = Eigen::Vector3d::Zero();  ///< u_j - u_i at the last commit
   Eigen::Vector3d duTrial_ = Eigen::Vector3d::Zero();
   Eigen::VectorXd b_;  ///< d(strain)/d(u)

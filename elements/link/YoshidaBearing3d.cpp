@@ -12,7 +12,8 @@ namespace {
 
 constexpr double kCoincident = 1e-12;  // node distance (relative) below which nodes coincide
 constexpr double kParallel = 1e-8;     // |a x b| / (|a||b|) below which vectors are parallel
-constexpr double kLimitRounding = 1e-12;  // a strain within this relative distance counts as at the limit
+constexpr double kLimitRounding =
+    1e-12;  // a strain within this relative distance counts as at the limit
 
 void requireFinite(double v, const char* field) {
   if (!std::isfinite(v)) throw InputError(field, "must be a finite number");
@@ -195,8 +196,8 @@ std::optional<Eigen::VectorXd> YoshidaBearing3d::response(std::span<const std::s
 std::string YoshidaBearing3d::describe() const {
   std::ostringstream out;
   out << Element::describe() << " material " << material_->tag() << " Tr " << p_.Tr << " Kv "
-      << p_.Kv << " Kt " << p_.Kt << " Kr " << p_.Kry << " " << p_.Krz << " mass " << p_.mass << " limits "
-      << p_.designLimit << " " << p_.failureLimit << " afterFailure "
+      << p_.Kv << " Kt " << p_.Kt << " Kr " << p_.Kry << " " << p_.Krz << " mass " << p_.mass
+      << " limits " << p_.designLimit << " " << p_.failureLimit << " afterFailure "
       << (p_.afterFailure == AfterFailure::Keep      ? "keep"
           : p_.afterFailure == AfterFailure::Release ? "release"
                                                      : "stop")

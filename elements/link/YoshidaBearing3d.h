@@ -34,7 +34,8 @@ namespace dabs::elements {
 ///
 /// The element's own viscous force (the material's Maxwell part) is a function of the
 /// displacement increment over the step, so dampingTangent() is zero and the Maxwell stiffness is
-/// in tangentStiff(). Rayleigh damping does not apply by default (as for OpenSees zero-length links).
+/// in tangentStiff(). Rayleigh damping does not apply by default (as for OpenSees zero-length
+/// links).
 class YoshidaBearing3d final : public FixedSizeElement<2, 6> {
  public:
   /// What a bearing does once it reaches its failure shear strain: keep carrying load as if intact
@@ -51,9 +52,9 @@ class YoshidaBearing3d final : public FixedSizeElement<2, 6> {
     double Krz = 0.0;  ///< rocking stiffness about local z (moment/radian)
     std::optional<Eigen::Vector3d> orientX;  ///< local x (global frame), with orientY
     std::optional<Eigen::Vector3d> orientY;  ///< vector in the local x-y plane (global frame)
-    double mass = 0.0;            ///< total mass, lumped half to each node's translations
-    double designLimit = 2.5;     ///< design shear strain (250 %)
-    double failureLimit = 3.0;    ///< failure shear strain (300 %)
+    double mass = 0.0;          ///< total mass, lumped half to each node's translations
+    double designLimit = 2.5;   ///< design shear strain (250 %)
+    double failureLimit = 3.0;  ///< failure shear strain (300 %)
     AfterFailure afterFailure = AfterFailure::Keep;
 
     /// Throws InputError{field, reason} for parameters that cannot make a valid element.
@@ -63,11 +64,12 @@ class YoshidaBearing3d final : public FixedSizeElement<2, 6> {
   /// History of the element apart from the material's own state.
   struct State {
     Eigen::Matrix<double, 6, 1> deformation = Eigen::Matrix<double, 6, 1>::Zero();  ///< d0..d5
-    Eigen::Matrix<double, 6, 1> basicForce = Eigen::Matrix<double, 6, 1>::Zero();   ///< N Vy Vz T My Mz
-    double shearStrain = 0.0;     ///< |U| / Tr
-    double maxShearStrain = 0.0;  ///< largest |U| / Tr so far
-    bool failed = false;          ///< failure limit reached
-    double failureTime = -1.0;    ///< time of the step in which it was reached (-1: never)
+    Eigen::Matrix<double, 6, 1> basicForce =
+        Eigen::Matrix<double, 6, 1>::Zero();  ///< N Vy Vz T My Mz
+    double shearStrain = 0.0;                 ///< |U| / Tr
+    double maxShearStrain = 0.0;              ///< largest |U| / Tr so far
+    bool failed = false;                      ///< failure limit reached
+    double failureTime = -1.0;  ///< time of the step in which it was reached (-1: never)
   };
 
   /// `p` must be valid; the material is cloned.

@@ -21,13 +21,20 @@ void ZeroLength::Params::validate(std::size_t numMaterials) const {
                                  " materials, " + std::to_string(dirs.size()) + " directions)");
   // Directions a (ndm, ndf) model can carry (OpenSees ZeroLength::setUp).
   int maxDir = 0;
-  if (ndm == 1 && ndf == 1) maxDir = 1;
-  else if (ndm == 2 && ndf == 2) maxDir = 2;
-  else if (ndm == 2 && ndf == 3) maxDir = 3;
-  else if (ndm == 3 && ndf == 3) maxDir = 3;
-  else if (ndm == 3 && ndf == 6) maxDir = 6;
-  else throw InputError("nodes", "have " + std::to_string(ndf) + " dofs, which zeroLength does not support in " +
-                                     std::to_string(ndm) + "D (use ndf 1 in 1D, 2 or 3 in 2D, 3 or 6 in 3D)");
+  if (ndm == 1 && ndf == 1)
+    maxDir = 1;
+  else if (ndm == 2 && ndf == 2)
+    maxDir = 2;
+  else if (ndm == 2 && ndf == 3)
+    maxDir = 3;
+  else if (ndm == 3 && ndf == 3)
+    maxDir = 3;
+  else if (ndm == 3 && ndf == 6)
+    maxDir = 6;
+  else
+    throw InputError(
+        "nodes", "have " + std::to_string(ndf) + " dofs, which zeroLength does not support in " +
+                     std::to_string(ndm) + "D (use ndf 1 in 1D, 2 or 3 in 2D, 3 or 6 in 3D)");
   for (int d : dirs)
     if (d < 1 || d > maxDir)
       throw InputError("-dir", std::to_string(d) + " is outside 1.." + std::to_string(maxDir) +
@@ -40,7 +47,8 @@ void ZeroLength::Params::validate(std::size_t numMaterials) const {
 
 ZeroLength::ZeroLength(int tag, Params params,
                        std::vector<std::unique_ptr<materials::UniaxialMaterial>> mats)
-    : DynamicSizeElement(tag, params.nodes, params.ndf, params.doRayleigh), params_(std::move(params)),
+    : DynamicSizeElement(tag, params.nodes, params.ndf, params.doRayleigh),
+      params_(std::move(params)),
       materials_(std::move(mats)) {
   t_ = Eigen::MatrixXd::Zero(static_cast<Eigen::Index>(materials_.size()), numDof());
 }
@@ -153,15 +161,18 @@ std::optional<Eigen::VectorXd> ZeroLength::response(std::span<const std::string>
   if (args.size() != 1) return std::nullopt;
   if (name == "force" || name == "forces" || name == "globalForce" || name == "globalForces")
     return Eigen::VectorXd(f_);
-  if (name == "basicForce" || name == "basicForces" || name == "localForce" || name == "localForces") {
+  if (name == "basicForce" || name == "basicForces" || name == "localForce" ||
+      name == "localForces") {
     Eigen::VectorXd out(nm);
-    for (Eigen::Index k = 0; k < nm; ++k) out(k) = materials_[static_cast<std::size_t>(k)]->getStress();
+    for (Eigen::Index k = 0; k < nm; ++k)
+      out(k) = materials_[static_cast<std::size_t>(k)]->getStress();
     return out;
   }
   if (name == "deformation" || name == "deformations" || name == "basicDeformation" ||
       name == "basicDeformations" || name == "defo") {
     Eigen::VectorXd out(nm);
-    for (Eigen::Index k = 0; k < nm; ++k) out(k) = materials_[static_cast<std::size_t>(k)]->getStrain();
+    for (Eigen::Index k = 0; k < nm; ++k)
+      out(k) = materials_[static_cast<std::size_t>(k)]->getStrain();
     return out;
   }
   if (name == "deformationsANDforces") {

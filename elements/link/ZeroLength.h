@@ -21,7 +21,7 @@ class ZeroLength final : public DynamicSizeElement {
     std::vector<int> nodes;  ///< i, j
     int ndm = 3;
     int ndf = 6;
-    std::vector<int> dirs;   ///< 1..6 as in the command
+    std::vector<int> dirs;  ///< 1..6 as in the command
     Eigen::Vector3d x{1.0, 0.0, 0.0};
     Eigen::Vector3d yp{0.0, 1.0, 0.0};
     bool doRayleigh = false;
@@ -29,7 +29,8 @@ class ZeroLength final : public DynamicSizeElement {
     void validate(std::size_t numMaterials) const;
   };
 
-  ZeroLength(int tag, Params params, std::vector<std::unique_ptr<materials::UniaxialMaterial>> mats);
+  ZeroLength(int tag, Params params,
+             std::vector<std::unique_ptr<materials::UniaxialMaterial>> mats);
 
   std::string_view typeName() const override { return "zeroLength"; }
   void initialize(const NodalCoordinates& x) override;
@@ -43,7 +44,7 @@ class ZeroLength final : public DynamicSizeElement {
   void assemble();
   Params params_;
   std::vector<std::unique_ptr<materials::UniaxialMaterial>> materials_;
-  Eigen::MatrixXd t_;  ///< one row per material: d(deformation)/d(u)
+  Eigen::MatrixXd t_;                      ///< one row per material: d(deformation)/d(u)
   std::vector<std::vector<int>> nonzero_;  ///< per material: the dofs its row of t_ touches
 };
 

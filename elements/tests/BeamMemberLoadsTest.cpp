@@ -208,13 +208,13 @@ TEST(BeamMemberLoadsTest, YieldingForceBasedElementTangentUnderMemberLoads) {
   for (bool force : {true, false}) {
     std::unique_ptr<Element> e;
     if (force)
-      e = std::make_unique<ForceBeamColumn2d>(
-          1, 1, 2, points(*sec, QuadratureIntegration::Rule::Lobatto, 5),
-          std::make_unique<LinearTransf2d>(1), 0.0);
+      e = std::make_unique<ForceBeamColumn2d>(1, 1, 2,
+                                              points(*sec, QuadratureIntegration::Rule::Lobatto, 5),
+                                              std::make_unique<LinearTransf2d>(1), 0.0);
     else
-      e = std::make_unique<DispBeamColumn2d>(
-          1, 1, 2, points(*sec, QuadratureIntegration::Rule::Legendre, 3),
-          std::make_unique<LinearTransf2d>(1), 0.0);
+      e = std::make_unique<DispBeamColumn2d>(1, 1, 2,
+                                             points(*sec, QuadratureIntegration::Rule::Legendre, 3),
+                                             std::make_unique<LinearTransf2d>(1), 0.0);
     e->initialize({Eigen::Vector3d::Zero(), Eigen::Vector3d(kL, 0, 0)});
     e->addLoad(uniform(0.0, -400.0, 0.0), 1.0);
     e->addLoad(point(0.0, 300.0, 0.0, 0.35), 1.0);

@@ -32,8 +32,10 @@ std::unique_ptr<ElasticBeam3d> beam(bool corot) {
   p.validate();
   std::unique_ptr<CrdTransf3d> t;
   const Eigen::Vector3d vecxz(0.0, 0.3, 1.0);
-  if (corot) t = std::make_unique<CorotationalTransf3d>(1, vecxz);
-  else t = std::make_unique<LinearTransf3d>(1, vecxz);
+  if (corot)
+    t = std::make_unique<CorotationalTransf3d>(1, vecxz);
+  else
+    t = std::make_unique<LinearTransf3d>(1, vecxz);
   auto b = std::make_unique<ElasticBeam3d>(1, 1, 2, p, std::move(t));
   b->initialize({kXi, kXj});
   return b;

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
-// Tests of ElasticBeam2d with the planar transformations (Linear, PDelta, Corotational): closed-form
-// cantilever responses, rigid-body modes, mass sums, finite-difference tangents.
+// Tests of ElasticBeam2d with the planar transformations (Linear, PDelta, Corotational):
+// closed-form cantilever responses, rigid-body modes, mass sums, finite-difference tangents.
 #include <gtest/gtest.h>
 
 #include <Eigen/Dense>
@@ -19,9 +19,9 @@ namespace {
 
 using testing::TrialState;
 
-constexpr double kTol = 1e-10;       // closed-form checks on linear solves
-constexpr double kFdTol = 1e-6;      // finite-difference tangent, relative
-constexpr double kFdStep = 1e-7;     // FD perturbation of displacements (lengths ~1)
+constexpr double kTol = 1e-10;    // closed-form checks on linear solves
+constexpr double kFdTol = 1e-6;   // finite-difference tangent, relative
+constexpr double kFdStep = 1e-7;  // FD perturbation of displacements (lengths ~1)
 constexpr double kA = 0.02, kE = 2.0e8, kI = 3.0e-4, kL = 3.0;
 
 ElasticBeam2d::Params params(double mass = 0.0, bool consistent = false) {
@@ -38,7 +38,7 @@ std::unique_ptr<CrdTransf2d> makeTransf(const std::string& type) {
 
 /// Beam of length kL at angle `angle` from the global X axis, starting at (1, 2).
 std::unique_ptr<ElasticBeam2d> makeBeam(const std::string& type, double angle, double mass = 0.0,
-                       bool consistent = false) {
+                                        bool consistent = false) {
   auto beam = std::make_unique<ElasticBeam2d>(1, 1, 2, params(mass, consistent), makeTransf(type));
   const Eigen::Vector3d xi(1.0, 2.0, 0.0);
   const Eigen::Vector3d xj = xi + kL * Eigen::Vector3d(std::cos(angle), std::sin(angle), 0.0);
@@ -110,7 +110,7 @@ TEST(ElasticBeam2dTest, MassSumsToTotalMass) {
   const double rho = 7.5;
   for (bool consistent : {false, true}) {
     const auto beamPtr = makeBeam("Linear", 0.4, rho, consistent);
-  ElasticBeam2d& beam = *beamPtr;
+    ElasticBeam2d& beam = *beamPtr;
     const Eigen::MatrixXd m = beam.mass();
     for (int dir = 0; dir < 2; ++dir) {
       Eigen::VectorXd e = Eigen::VectorXd::Zero(6);
@@ -129,7 +129,7 @@ TEST(ElasticBeam2dTest, TangentMatchesFiniteDifferences) {
   u << 0.01, -0.02, 0.03, -0.004, 0.05, -0.02;
   for (const char* type : {"Linear", "Corotational"}) {
     const auto beamPtr = makeBeam(type, 0.9);
-  ElasticBeam2d& beam = *beamPtr;
+    ElasticBeam2d& beam = *beamPtr;
     const TrialState s = state(u);
     ASSERT_TRUE(ok(beam.update(s.kinematics())));
     const Eigen::MatrixXd k = beam.tangentStiff();

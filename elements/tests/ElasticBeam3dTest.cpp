@@ -34,7 +34,8 @@ const Eigen::Vector3d kXi(1.0, -2.0, 0.5);
 Eigen::Vector3d axis() { return Eigen::Vector3d(1.0, 2.0, 2.0) / 3.0; }  // unit, oblique
 Eigen::Vector3d vecxz() { return Eigen::Vector3d(0.0, 0.0, 1.0); }
 
-std::unique_ptr<ElasticBeam3d> makeBeam(const std::string& type, double mass = 0.0, bool consistent = false) {
+std::unique_ptr<ElasticBeam3d> makeBeam(const std::string& type, double mass = 0.0,
+                                        bool consistent = false) {
   std::unique_ptr<CrdTransf3d> t;
   if (type == "Linear")
     t = std::make_unique<LinearTransf3d>(1, vecxz());
@@ -130,7 +131,7 @@ TEST(ElasticBeam3dTest, MassSumsToTotalMass) {
   const double rho = 7.5;
   for (bool consistent : {false, true}) {
     const auto beamPtr = makeBeam("Linear", rho, consistent);
-  ElasticBeam3d& beam = *beamPtr;
+    ElasticBeam3d& beam = *beamPtr;
     const Eigen::MatrixXd m = beam.mass();
     for (int dir = 0; dir < 3; ++dir) {
       Eigen::VectorXd e = Eigen::VectorXd::Zero(12);

@@ -32,8 +32,8 @@ using testing::TrialState;
 
 constexpr double kE = 2.0e8, kFy = 4.0e5, kB = 0.3, kH = 0.5, kL = 3.0, kGJ = 1.0e5;
 constexpr int kNy = 20, kNz = 4;
-constexpr double kTol = 1e-9;     // elastic closed form (relative)
-constexpr double kFdTol = 1e-5;   // finite-difference tangent (relative)
+constexpr double kTol = 1e-9;    // elastic closed form (relative)
+constexpr double kFdTol = 1e-5;  // finite-difference tangent (relative)
 
 std::unique_ptr<UniaxialMaterial> elastic() {
   materials::Elastic::Params p;
@@ -61,7 +61,8 @@ std::vector<BeamIntegrationPoint> points(const materials::section::SectionForceD
                                          int n) {
   const QuadratureIntegration rule(1, QuadratureIntegration::Rule::Lobatto, 1, n);
   std::vector<BeamIntegrationPoint> pts;
-  for (int i = 0; i < n; ++i) pts.push_back({s.clone(), rule.locations(kL)[i], rule.weights(kL)[i]});
+  for (int i = 0; i < n; ++i)
+    pts.push_back({s.clone(), rule.locations(kL)[i], rule.weights(kL)[i]});
   return pts;
 }
 
@@ -272,8 +273,8 @@ TEST(ForceBeamColumnTest, ConsistentMassSumsToTotalMassAndMatchesClosedForm) {
     EXPECT_NEAR(r.dot(m * r), rho * kL, kMassTol * rho * kL) << "direction " << d;
   }
   EXPECT_LT((m - m.transpose()).norm(), kMassTol * m.norm());
-  DispBeamColumn2d d2(2, 1, 2, points<2>(*rect<2>(*mat), 3),
-                      std::make_unique<LinearTransf2d>(1), rho);
+  DispBeamColumn2d d2(2, 1, 2, points<2>(*rect<2>(*mat), 3), std::make_unique<LinearTransf2d>(1),
+                      rho);
   d2.setConsistentMass(true);
   d2.initialize({Eigen::Vector3d::Zero(), Eigen::Vector3d(kL, 0.0, 0.0)});
   EXPECT_NEAR(d2.mass()(1, 1), 156.0 / 420.0 * rho * kL, kMassTol * rho * kL);

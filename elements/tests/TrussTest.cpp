@@ -41,7 +41,8 @@ std::unique_ptr<materials::UniaxialMaterial> elastic(double E) {
 TEST(TrussTest, AxialForceIsEAOverLTimesElongation) {
   auto tp = makeTruss(elastic(100.0));
   Truss& t = *tp;
-  testing::TrialState s{Eigen::VectorXd::Zero(6), Eigen::VectorXd::Zero(6), Eigen::VectorXd::Zero(6)};
+  testing::TrialState s{Eigen::VectorXd::Zero(6), Eigen::VectorXd::Zero(6),
+                        Eigen::VectorXd::Zero(6)};
   s.u(3) = 0.3;  // node j moves 0.3 along x: elongation 0.3 * 3/5
   ASSERT_TRUE(ok(t.update(s.kinematics())));
   const double N = 100.0 * 2.0 / 5.0 * 0.18;  // EA/L * elongation
@@ -58,7 +59,8 @@ TEST(TrussTest, TangentMatchesFiniteDifferenceWhileYielding) {
   p.b = 0.02;
   auto tp = makeTruss(std::make_unique<materials::Steel02>(1, p));
   Truss& t = *tp;
-  testing::TrialState s{Eigen::VectorXd::Zero(6), Eigen::VectorXd::Zero(6), Eigen::VectorXd::Zero(6)};
+  testing::TrialState s{Eigen::VectorXd::Zero(6), Eigen::VectorXd::Zero(6),
+                        Eigen::VectorXd::Zero(6)};
   s.u << 0.0, 0.01, 0.0, 0.1, 0.05, 0.02;
   ASSERT_TRUE(ok(t.update(s.kinematics())));
   EXPECT_LT(testing::relativeDifference(t.tangentStiff(), testing::numericalStiffness(t, s, 1e-8)),
@@ -95,7 +97,8 @@ TEST(TrussTest, CorotationalTrussRotatesRigidlyWithoutForce) {
   // A rigid rotation by 90 degrees about z (node j from (3, 4, 0) to (-4, 3, 0)) leaves the
   // length, hence the force, at zero; the small-displacement truss would stretch.
   auto t = makeTruss(elastic(100.0), 0.0, false, true);
-  testing::TrialState s{Eigen::VectorXd::Zero(6), Eigen::VectorXd::Zero(6), Eigen::VectorXd::Zero(6)};
+  testing::TrialState s{Eigen::VectorXd::Zero(6), Eigen::VectorXd::Zero(6),
+                        Eigen::VectorXd::Zero(6)};
   s.u(3) = -7.0;
   s.u(4) = -1.0;
   ASSERT_TRUE(ok(t->update(s.kinematics())));
@@ -107,7 +110,8 @@ TEST(TrussTest, CorotationalTrussForceFollowsTheDeformedAxis) {
   // Node j moved to (0, 10, 0): length 10, engineering strain (10 - 5)/5 = 1, force A E along
   // the new axis (global y).
   auto t = makeTruss(elastic(100.0), 0.0, false, true);
-  testing::TrialState s{Eigen::VectorXd::Zero(6), Eigen::VectorXd::Zero(6), Eigen::VectorXd::Zero(6)};
+  testing::TrialState s{Eigen::VectorXd::Zero(6), Eigen::VectorXd::Zero(6),
+                        Eigen::VectorXd::Zero(6)};
   s.u(3) = -3.0;
   s.u(4) = 6.0;
   ASSERT_TRUE(ok(t->update(s.kinematics())));
@@ -124,11 +128,13 @@ TEST(TrussTest, CorotationalTrussTangentMatchesFiniteDifferences) {
   p.b = 0.02;
   p.validate();
   auto t = makeTruss(std::make_unique<materials::Steel02>(1, p), 0.0, false, true);
-  testing::TrialState s{Eigen::VectorXd::Zero(6), Eigen::VectorXd::Zero(6), Eigen::VectorXd::Zero(6)};
+  testing::TrialState s{Eigen::VectorXd::Zero(6), Eigen::VectorXd::Zero(6),
+                        Eigen::VectorXd::Zero(6)};
   s.u << 0.1, -0.2, 0.05, -1.5, 0.8, 0.4;  // large rotation and stretch past yield
   ASSERT_TRUE(ok(t->update(s.kinematics())));
   const Eigen::MatrixXd k = t->tangentStiff();
-  EXPECT_LT(testing::relativeDifference(k, testing::numericalStiffness(*t, s, 1e-7)), kTangentTolerance);
+  EXPECT_LT(testing::relativeDifference(k, testing::numericalStiffness(*t, s, 1e-7)),
+            kTangentTolerance);
   EXPECT_LT((k - k.transpose()).norm(), 1e-12 * k.norm());
 }
 

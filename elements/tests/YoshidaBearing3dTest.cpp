@@ -25,11 +25,11 @@ using testing::TrialState;
 using Mat = materials::YoshidaBearingMaterial;
 using Vec = Eigen::VectorXd;
 
-constexpr double kY0 = 300.0;   // kN
-constexpr double kU0 = 0.02;    // m
-constexpr double kTr = 0.2;     // m
-constexpr double kKv = 2.0e6;   // kN/m
-constexpr double kKt = 500.0;   // kN m/rad
+constexpr double kY0 = 300.0;     // kN
+constexpr double kU0 = 0.02;      // m
+constexpr double kTr = 0.2;       // m
+constexpr double kKv = 2.0e6;     // kN/m
+constexpr double kKt = 500.0;     // kN m/rad
 constexpr double kKry = 8000.0;   // kN m/rad, about local y
 constexpr double kKrz = 20000.0;  // kN m/rad, about local z
 constexpr double kFdRelTol = 1e-5;
@@ -80,7 +80,8 @@ std::unique_ptr<YoshidaBearing3d> make(const NodalCoordinates& x, bool full = fa
 }
 
 const NodalCoordinates kCoincidentNodes = {Eigen::Vector3d(1, 2, 3), Eigen::Vector3d(1, 2, 3)};
-const NodalCoordinates kInclined = {Eigen::Vector3d(0.5, -1.0, 2.0), Eigen::Vector3d(0.7, -0.8, 2.3)};
+const NodalCoordinates kInclined = {Eigen::Vector3d(0.5, -1.0, 2.0),
+                                    Eigen::Vector3d(0.7, -0.8, 2.3)};
 
 /// Six rigid-body motions (small rotations about the origin) of the two nodes.
 std::vector<Vec> rigidModes(const NodalCoordinates& x) {
@@ -196,7 +197,8 @@ TEST(YoshidaBearing3dTest, TangentMatchesFiniteDifference) {
       s2.u.segment<3>(6) *= 0.4;
       ASSERT_TRUE(ok(e->update(s2.kinematics())));
       k = e->tangentStiff();
-      EXPECT_LT(testing::relativeDifference(k, testing::numericalStiffness(*e, s2, 1e-8)), kFdRelTol)
+      EXPECT_LT(testing::relativeDifference(k, testing::numericalStiffness(*e, s2, 1e-8)),
+                kFdRelTol)
           << "unloading, full = " << full;
       // near a zero increment
       TrialState s3 = s;
@@ -204,7 +206,8 @@ TEST(YoshidaBearing3dTest, TangentMatchesFiniteDifference) {
       s3.u(7) -= 1e-6;
       ASSERT_TRUE(ok(e->update(s3.kinematics())));
       k = e->tangentStiff();
-      EXPECT_LT(testing::relativeDifference(k, testing::numericalStiffness(*e, s3, 1e-10)), kFdRelTol)
+      EXPECT_LT(testing::relativeDifference(k, testing::numericalStiffness(*e, s3, 1e-10)),
+                kFdRelTol)
           << "near zero increment, full = " << full;
       // the element's own damping tangent is zero: the Maxwell force depends on u, not v
       EXPECT_LT(testing::numericalDamping(*e, s3, 1e-6).norm(), 1e-9);
@@ -256,7 +259,8 @@ TEST(YoshidaBearing3dTest, RevertedTrialDoesNotFail) {
 }
 
 TEST(YoshidaBearing3dTest, AfterFailureReleaseDropsShearOnlyAfterCommit) {
-  for (auto mode : {YoshidaBearing3d::AfterFailure::Keep, YoshidaBearing3d::AfterFailure::Release}) {
+  for (auto mode :
+       {YoshidaBearing3d::AfterFailure::Keep, YoshidaBearing3d::AfterFailure::Release}) {
     YoshidaBearing3d::Params p = element();
     p.afterFailure = mode;
     auto e = make(kCoincidentNodes, false, p);
@@ -301,9 +305,9 @@ TEST(YoshidaBearing3dTest, ResponsesHaveTheirSizes) {
   s.u(6) = 0.03;
   ASSERT_TRUE(ok(e->update(s.kinematics())));
   const std::vector<std::pair<std::string, int>> sizes = {
-      {"force", 12},          {"localForce", 12},     {"basicForce", 6},     {"deformation", 6},
-      {"shearStrain", 1},     {"maxShearStrain", 1},  {"damage", 1},         {"failureTime", 1},
-      {"hystereticForce", 2}, {"viscousForce", 2},    {"backForce", 2},      {"dissipatedEnergy", 1}};
+      {"force", 12},          {"localForce", 12},    {"basicForce", 6}, {"deformation", 6},
+      {"shearStrain", 1},     {"maxShearStrain", 1}, {"damage", 1},     {"failureTime", 1},
+      {"hystereticForce", 2}, {"viscousForce", 2},   {"backForce", 2},  {"dissipatedEnergy", 1}};
   for (const auto& [name, size] : sizes) {
     const auto r = e->response(std::vector<std::string>{name});
     ASSERT_TRUE(r.has_value()) << name;
@@ -390,7 +394,7 @@ TEST(YoshidaBearing3dTest, NewtonConvergesQuadraticallyUnderTakatori) {
   auto e = make(kCoincidentNodes, true);
   const double mass = 500.0;  // t; isolated period 2 pi sqrt(M / (K0 c/(1+c))) ~ 2.7 s
   const double g = 9.81;
-  const double angle = 0.5;   // direction of the record in the horizontal plane
+  const double angle = 0.5;  // direction of the record in the horizontal plane
   const Eigen::Vector2d dir(std::cos(angle), std::sin(angle));
   const double dt = dtRecord;
   // Newmark average acceleration on the two horizontal dofs of node j (global X, Y).
@@ -410,7 +414,7 @@ TEST(YoshidaBearing3dTest, NewtonConvergesQuadraticallyUnderTakatori) {
       const Eigen::Vector2d vn = v + 0.5 * dt * (a + an);
       s.u.segment<2>(6) = un;
       s.v.segment<2>(6) = vn;
-      s.time = (n + 1) * dt;
+      s.time = static_cast<double>(n + 1) * dt;
       ASSERT_TRUE(ok(e->update(s.kinematics())));
       const Eigen::Vector2d r = p - mass * an - e->resistingForce().segment<2>(6);
       res.push_back(r.norm());
@@ -419,8 +423,8 @@ TEST(YoshidaBearing3dTest, NewtonConvergesQuadraticallyUnderTakatori) {
         maxIter = std::max(maxIter, it);
         break;
       }
-      const Eigen::Matrix2d k =
-          e->tangentStiff().block<2, 2>(6, 6) + 4.0 * mass / (dt * dt) * Eigen::Matrix2d::Identity();
+      const Eigen::Matrix2d k = e->tangentStiff().block<2, 2>(6, 6) +
+                                4.0 * mass / (dt * dt) * Eigen::Matrix2d::Identity();
       un += k.partialPivLu().solve(r);
     }
     ASSERT_TRUE(converged) << "step " << n;

@@ -62,12 +62,12 @@ TEST(ZeroLengthSectionTest, DeformationsAreRelativeMotionsInLocalAxes) {
   ASSERT_TRUE(ok(e.update(state(u).kinematics())));
   const Eigen::VectorXd d = e.section().getDeformation();
   // Codes P, Mz, Vy, My, Vz, T.
-  EXPECT_NEAR(d(0), 0.7 - 0.2, kTol);             // P: along local x = global Y
-  EXPECT_NEAR(d(1), 0.04 - 0.03, kTol);           // Mz: about local z = global Z
-  EXPECT_NEAR(d(2), -(0.5 - 0.1), kTol);          // Vy: along local y = -X
-  EXPECT_NEAR(d(3), -(-0.02 - 0.01), kTol);       // My: about local y = -X
-  EXPECT_NEAR(d(4), -0.1 - 0.3, kTol);            // Vz: along local z = Z
-  EXPECT_NEAR(d(5), 0.05 - 0.02, kTol);           // T: about local x = Y
+  EXPECT_NEAR(d(0), 0.7 - 0.2, kTol);        // P: along local x = global Y
+  EXPECT_NEAR(d(1), 0.04 - 0.03, kTol);      // Mz: about local z = global Z
+  EXPECT_NEAR(d(2), -(0.5 - 0.1), kTol);     // Vy: along local y = -X
+  EXPECT_NEAR(d(3), -(-0.02 - 0.01), kTol);  // My: about local y = -X
+  EXPECT_NEAR(d(4), -0.1 - 0.3, kTol);       // Vz: along local z = Z
+  EXPECT_NEAR(d(5), 0.05 - 0.02, kTol);      // T: about local x = Y
   // Forces: node j gets A^T s, node i the opposite; equilibrium.
   const Eigen::VectorXd f = e.resistingForce();
   EXPECT_LT((f.head<6>() + f.tail<6>()).norm(), kTol * f.norm());
@@ -123,8 +123,7 @@ TEST(ZeroLengthSectionTest, TangentMatchesFiniteDifferences3d) {
   ZeroLengthSection3d e(1, 1, 2, std::move(agg), {1.0, 1.0, 0.5}, {-1.0, 1.0, 0.3});
   e.initialize({Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero()});
   Eigen::VectorXd u(12);
-  u << 0.001, -0.002, 0.0005, 0.003, -0.001, 0.002, 0.004, 0.001, -0.003, -0.002, 0.0015,
-      0.0035;
+  u << 0.001, -0.002, 0.0005, 0.003, -0.001, 0.002, 0.004, 0.001, -0.003, -0.002, 0.0015, 0.0035;
   const TrialState s = state(u);
   ASSERT_TRUE(ok(e.update(s.kinematics())));
   const Eigen::MatrixXd kNum = testing::numericalStiffness(e, s, kFdStep);
@@ -151,13 +150,14 @@ TEST(ZeroLengthSectionTest, ElasticBeamConstantBStiffnessEqualsGeneralFormula) {
   p.validate();
   for (const bool pdelta : {false, true}) {
     std::unique_ptr<CrdTransf3d> t;
-    if (pdelta) t = std::make_unique<PDeltaTransf3d>(1, Eigen::Vector3d(0.0, 0.0, 1.0));
-    else t = std::make_unique<LinearTransf3d>(1, Eigen::Vector3d(0.0, 0.0, 1.0));
+    if (pdelta)
+      t = std::make_unique<PDeltaTransf3d>(1, Eigen::Vector3d(0.0, 0.0, 1.0));
+    else
+      t = std::make_unique<LinearTransf3d>(1, Eigen::Vector3d(0.0, 0.0, 1.0));
     ElasticBeam3d beam(1, 1, 2, p, std::move(t));
     beam.initialize({Eigen::Vector3d(1.0, -2.0, 0.5), Eigen::Vector3d(2.0, 0.0, 2.5)});
     Eigen::VectorXd u(12);
-    u << 0.001, -0.002, 0.0005, 0.003, -0.001, 0.002, -0.004, 0.001, -0.003, -0.002, 0.0015,
-        0.0035;
+    u << 0.001, -0.002, 0.0005, 0.003, -0.001, 0.002, -0.004, 0.001, -0.003, -0.002, 0.0015, 0.0035;
     ASSERT_TRUE(ok(beam.update(state(u).kinematics())));
     const auto& tr = beam.transformation();
     // Reference: a fresh transformation evaluated with the general formula.
@@ -175,8 +175,10 @@ TEST(ZeroLengthSectionTest, ElasticBeamConstantBStiffnessEqualsGeneralFormula) {
     const CrdTransf3d::Basic q = kb * t3.basicDeformation();
     const Eigen::MatrixXd kRef = t3.globalStiffness(kb, q);
     EXPECT_LT(testing::relativeDifference(beam.tangentStiff(), kRef), kTol) << "PDelta " << pdelta;
-    if (pdelta) EXPECT_GT((beam.tangentStiff() - beam.initialStiff()).norm(), 0.0);
-    else EXPECT_EQ((beam.tangentStiff() - beam.initialStiff()).norm(), 0.0);
+    if (pdelta)
+      EXPECT_GT((beam.tangentStiff() - beam.initialStiff()).norm(), 0.0);
+    else
+      EXPECT_EQ((beam.tangentStiff() - beam.initialStiff()).norm(), 0.0);
   }
 }
 

@@ -31,8 +31,9 @@ std::unique_ptr<materials::UniaxialMaterial> steel() {
   return std::make_unique<materials::Steel02>(2, p);
 }
 
-std::unique_ptr<ZeroLength> make3d(std::vector<int> dirs, std::vector<std::unique_ptr<materials::UniaxialMaterial>> mats,
-                  Eigen::Vector3d x = {1, 0, 0}, Eigen::Vector3d yp = {0, 1, 0}) {
+std::unique_ptr<ZeroLength> make3d(std::vector<int> dirs,
+                                   std::vector<std::unique_ptr<materials::UniaxialMaterial>> mats,
+                                   Eigen::Vector3d x = {1, 0, 0}, Eigen::Vector3d yp = {0, 1, 0}) {
   ZeroLength::Params p;
   p.nodes = {1, 2};
   p.ndm = 3;
@@ -52,7 +53,8 @@ TEST(ZeroLengthTest, ForceIsStiffnessTimesProjectedRelativeDisplacement) {
   mats.push_back(elastic(10.0));
   auto ep = make3d({1}, std::move(mats), {1, 1, 0}, {-1, 1, 0});
   ZeroLength& e = *ep;
-  testing::TrialState s{Eigen::VectorXd::Zero(12), Eigen::VectorXd::Zero(12), Eigen::VectorXd::Zero(12)};
+  testing::TrialState s{Eigen::VectorXd::Zero(12), Eigen::VectorXd::Zero(12),
+                        Eigen::VectorXd::Zero(12)};
   s.u(6) = 1.0;
   ASSERT_TRUE(ok(e.update(s.kinematics())));
   const double d = 1.0 / std::sqrt(2.0);
@@ -69,7 +71,8 @@ TEST(ZeroLengthTest, RotationalDirectionActsOnRotations) {
   mats.push_back(elastic(5.0));
   auto ep = make3d({6}, std::move(mats));
   ZeroLength& e = *ep;  // rotation about local z = global Z
-  testing::TrialState s{Eigen::VectorXd::Zero(12), Eigen::VectorXd::Zero(12), Eigen::VectorXd::Zero(12)};
+  testing::TrialState s{Eigen::VectorXd::Zero(12), Eigen::VectorXd::Zero(12),
+                        Eigen::VectorXd::Zero(12)};
   s.u(11) = 0.2;
   ASSERT_TRUE(ok(e.update(s.kinematics())));
   EXPECT_NEAR(e.resistingForce()(11), 1.0, kExact);
@@ -83,7 +86,8 @@ TEST(ZeroLengthTest, TangentMatchesFiniteDifferenceWhileYielding) {
   mats.push_back(elastic(30.0));
   auto ep = make3d({1, 2, 4}, std::move(mats), {0.6, 0.8, 0.0}, {0.0, 0.0, 1.0});
   ZeroLength& e = *ep;
-  testing::TrialState s{Eigen::VectorXd::Zero(12), Eigen::VectorXd::Zero(12), Eigen::VectorXd::Zero(12)};
+  testing::TrialState s{Eigen::VectorXd::Zero(12), Eigen::VectorXd::Zero(12),
+                        Eigen::VectorXd::Zero(12)};
   s.u << 0.001, -0.002, 0.0, 0.01, 0.0, 0.0, 0.03, 0.02, 0.01, -0.02, 0.0, 0.0;
   ASSERT_TRUE(ok(e.update(s.kinematics())));
   const Eigen::MatrixXd k = e.tangentStiff();
@@ -96,7 +100,8 @@ TEST(ZeroLengthTest, MaterialDashpotGivesDampingTangent) {
   mats.push_back(elastic(10.0, 3.0));
   auto ep = make3d({2}, std::move(mats));
   ZeroLength& e = *ep;
-  testing::TrialState s{Eigen::VectorXd::Zero(12), Eigen::VectorXd::Zero(12), Eigen::VectorXd::Zero(12)};
+  testing::TrialState s{Eigen::VectorXd::Zero(12), Eigen::VectorXd::Zero(12),
+                        Eigen::VectorXd::Zero(12)};
   s.v(7) = 0.5;
   ASSERT_TRUE(ok(e.update(s.kinematics())));
   EXPECT_NEAR(e.resistingForce()(7), 1.5, kExact);  // eta * relative velocity
@@ -109,7 +114,8 @@ TEST(ZeroLengthTest, RevertRestoresCommittedMaterialState) {
   mats.push_back(steel());
   auto ep = make3d({1}, std::move(mats));
   ZeroLength& e = *ep;
-  testing::TrialState s{Eigen::VectorXd::Zero(12), Eigen::VectorXd::Zero(12), Eigen::VectorXd::Zero(12)};
+  testing::TrialState s{Eigen::VectorXd::Zero(12), Eigen::VectorXd::Zero(12),
+                        Eigen::VectorXd::Zero(12)};
   s.u(6) = 0.05;  // yields
   ASSERT_TRUE(ok(e.update(s.kinematics())));
   e.revertToLastCommit();

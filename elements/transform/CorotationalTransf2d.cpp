@@ -30,7 +30,7 @@ void CorotationalTransf2d::update(const Global& u) {
 }
 
 CorotationalTransf2d::GlobalMatrix CorotationalTransf2d::globalStiffness(const BasicMatrix& kb,
-                                                                          const Basic& q) const {
+                                                                         const Basic& q) const {
   GlobalMatrix k = compat_.transpose() * kb * compat_;
   k += q(0) / lengthN_ * (z_ * z_.transpose());
   k += (q(1) + q(2)) / (lengthN_ * lengthN_) * (r_ * z_.transpose() + z_ * r_.transpose());

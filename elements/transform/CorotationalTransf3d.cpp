@@ -49,9 +49,9 @@ M3<S> expRotation(const V3<S>& psi) {
   }
   const S &x = psi[0], &y = psi[1], &z = psi[2];
   // [psi]x^2 = psi psi^T - t2 I
-  return {S(1.0) + b * (x * x - t2), b * (x * y) - a * z,          b * (x * z) + a * y,
-          b * (y * x) + a * z,          S(1.0) + b * (y * y - t2), b * (y * z) - a * x,
-          b * (z * x) - a * y,          b * (z * y) + a * x,        S(1.0) + b * (z * z - t2)};
+  return {S(1.0) + b * (x * x - t2), b * (x * y) - a * z,       b * (x * z) + a * y,
+          b * (y * x) + a * z,       S(1.0) + b * (y * y - t2), b * (y * z) - a * x,
+          b * (z * x) - a * y,       b * (z * y) + a * x,       S(1.0) + b * (z * z - t2)};
 }
 
 /// log of a rotation matrix as a rotation vector: w = axial(R - R^T)/2 = sin(phi) n, phi =
@@ -140,7 +140,7 @@ void CorotationalTransf3d::update(const Global& u) {
 }
 
 CorotationalTransf3d::GlobalMatrix CorotationalTransf3d::globalStiffness(const BasicMatrix& kb,
-                                                                          const Basic& q) const {
+                                                                         const Basic& q) const {
   GlobalMatrix k = compat_.transpose() * kb * compat_;
   for (int i = 0; i < 6; ++i) k += q(i) * hessian_[i];
   return k;
@@ -171,6 +171,7 @@ void CorotationalTransf3d::revertToStart() {
   update(Global::Zero());
 }
 
-template std::array<double, 6> CorotationalTransf3d::kinematics(const std::array<double, 12>&) const;
+template std::array<double, 6> CorotationalTransf3d::kinematics(
+    const std::array<double, 12>&) const;
 
 }  // namespace dabs::elements

@@ -51,8 +51,7 @@ class CorotationalTransf3d final : public CrdTransf3d {
   Eigen::Vector3d xi_ = Eigen::Vector3d::Zero(), xj_ = Eigen::Vector3d::Zero();
   std::array<Eigen::Matrix3d, 2> rotCommitted_{Eigen::Matrix3d::Identity(),
                                                Eigen::Matrix3d::Identity()};
-  std::array<Eigen::Vector3d, 2> thetaCommitted_{Eigen::Vector3d::Zero(),
-                                                 Eigen::Vector3d::Zero()};
+  std::array<Eigen::Vector3d, 2> thetaCommitted_{Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero()};
   Global uTrial_ = Global::Zero();
   std::array<GlobalMatrix, 6> hessian_{};  ///< d2 v_k / du2 at the trial state
 };

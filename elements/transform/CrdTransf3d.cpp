@@ -13,13 +13,13 @@ void CrdTransf3d::initialize(const Eigen::Vector3d& xi, const Eigen::Vector3d& x
   const std::string who = "geomTransf " + std::to_string(tag());
   const Eigen::Vector3d d = xj - xi;
   const double length = d.norm();
-  if (!(length > 1e-14 * std::max(1.0, xi.norm()))) throw InputError(who, "element has zero length");
+  if (!(length > 1e-14 * std::max(1.0, xi.norm())))
+    throw InputError(who, "element has zero length");
   const Eigen::Vector3d x = d / length;
   Eigen::Vector3d y = vecxz_.cross(x);
   const double ny = y.norm();
   // Same test as OpenSees (|vecxz x x| == 0), with a relative tolerance for round-off.
-  if (!(ny > 1e-10 * vecxz_.norm()))
-    throw InputError(who, "vecxz is parallel to the element axis");
+  if (!(ny > 1e-10 * vecxz_.norm())) throw InputError(who, "vecxz is parallel to the element axis");
   y /= ny;
   const Eigen::Vector3d z = x.cross(y);
   axes_.row(0) = x.transpose();
@@ -71,8 +71,7 @@ CrdTransf3d::GlobalMatrix CrdTransf3d::globalFromLocal(const GlobalMatrix& local
   // (T^T m T) block by block: T = diag(R, R, R, R).
   for (int a = 0; a < 4; ++a)
     for (int b = 0; b < 4; ++b)
-      g.block<3, 3>(3 * a, 3 * b) =
-          axes_.transpose() * local.block<3, 3>(3 * a, 3 * b) * axes_;
+      g.block<3, 3>(3 * a, 3 * b) = axes_.transpose() * local.block<3, 3>(3 * a, 3 * b) * axes_;
   return g;
 }
 

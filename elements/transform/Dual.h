@@ -12,8 +12,8 @@ namespace dabs::elements {
 /// operations that transformation needs are defined. Fixed size: no heap allocation.
 template <class T, int N>
 struct Dual {
-  T v{};                   ///< value
-  std::array<T, N> d{};    ///< derivatives with respect to the N seeds
+  T v{};                 ///< value
+  std::array<T, N> d{};  ///< derivatives with respect to the N seeds
 
   Dual() = default;
   Dual(double x) : v(x) {}  // NOLINT(google-explicit-constructor): constants mix freely

@@ -18,7 +18,7 @@ PDeltaTransf2d::Global PDeltaTransf2d::globalForce(const Basic& q) const {
 }
 
 PDeltaTransf2d::GlobalMatrix PDeltaTransf2d::globalStiffness(const BasicMatrix& kb,
-                                                              const Basic& q) const {
+                                                             const Basic& q) const {
   GlobalMatrix k = compat0_.transpose() * kb * compat0_;
   addGeometricStiffness(k, q);
   return k;

@@ -23,7 +23,7 @@ PDeltaTransf3d::Global PDeltaTransf3d::globalForce(const Basic& q) const {
 }
 
 PDeltaTransf3d::GlobalMatrix PDeltaTransf3d::globalStiffness(const BasicMatrix& kb,
-                                                              const Basic& q) const {
+                                                             const Basic& q) const {
   GlobalMatrix k = compat0_.transpose() * kb * compat0_;
   addGeometricStiffness(k, q);
   return k;

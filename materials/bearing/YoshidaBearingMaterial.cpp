@@ -15,7 +15,7 @@ using Vec2 = Eigen::Vector2d;
 using Mat2 = Eigen::Matrix2d;
 using Row2 = Eigen::RowVector2d;
 
-constexpr int kMaxSubsteps = 100000;   // more than this means a nonsensical trial deformation
+constexpr int kMaxSubsteps = 100000;  // more than this means a nonsensical trial deformation
 constexpr int kMaxLocalIterations = 100;
 constexpr double kLocalTolerance = 1e-15;  // relative change of |z| that ends the local Newton
 
@@ -28,9 +28,9 @@ struct SubStep {
   Vec2 f1, s, z;
   double umax = 0.0;
   Mat2 dF_dU, dF_dDelta, dF_dFprev;  // d F1 / d(U, dU, F1_prev)
-  Vec2 dF_dMprev;                     // d F1 / d Umax_prev
-  Row2 dM_dU;                         // d Umax / d U
-  double dM_dMprev = 0.0;             // d Umax / d Umax_prev
+  Vec2 dF_dMprev;                    // d F1 / d Umax_prev
+  Row2 dM_dU;                        // d Umax / d U
+  double dM_dMprev = 0.0;            // d Umax / d Umax_prev
   bool converged = true;
 };
 
@@ -109,7 +109,7 @@ SubStep subStep(const YoshidaBearingMaterial::Params& p, const Vec2& u, const Ve
   // z does not move to first order, J^-1 = 0.
   const bool singular = p.n < 1.0 && zeta == 0.0;
   const double zn1 = singular ? 0.0 : p.n == 1.0 ? 1.0 : std::pow(zeta, p.n - 1.0);
-  const Vec2 g = zn1 * r.z;  // |z|^(n-1) z
+  const Vec2 g = zn1 * r.z;                                                   // |z|^(n-1) z
   const Mat2 G = zn1 * (Mat2::Identity() + (p.n - 1.0) * e * e.transpose());  // dg/dz
   const Mat2 J = Mat2::Identity() / opa + d * G;
   // J is symmetric positive definite (eigenvalues 1/(1+a) + d |z|^(n-1) {n, 1})
@@ -202,8 +202,8 @@ Status YoshidaBearingMaterial::setTrialStrain(const Eigen::Vector2d& strain,
   // Hysteretic part, sub-step by sub-step, with sensitivities to the trial deformation.
   Vec2 f = c.f1;
   double umax = c.umax;
-  Mat2 dF = Mat2::Zero();    // d F1_j / d U_trial
-  Row2 dM = Row2::Zero();    // d Umax_j / d U_trial
+  Mat2 dF = Mat2::Zero();  // d F1_j / d U_trial
+  Row2 dM = Row2::Zero();  // d Umax_j / d U_trial
   const Vec2 delta = du / m;
   double work = c.work;
   SubStep r;

@@ -10,9 +10,9 @@
 
 namespace dabs::materials {
 
-/// Bi-axial hysteresis of a laminated rubber bearing after Yoshida, Takesada, Abe and Fujino (1999),
-/// in the form used by DABS. With U the shear deformation (2-vector in the bearing's
-/// shear plane) and F = F1 + F2 the shear force:
+/// Bi-axial hysteresis of a laminated rubber bearing after Yoshida, Takesada, Abe and Fujino
+/// (1999), in the form used by DABS. With U the shear deformation (2-vector in the bearing's shear
+/// plane) and F = F1 + F2 the shear force:
 ///
 ///   dF1 / Y = dU / U0 - (|dU| / U0) |z|^(n-1) z,      z = (F1 - S) / Y           (hysteretic part)
 ///   S / Y   = (U / U0 - F1 / Y) a,   a = max(0, alpha0 - beta (Umax / U0)^q)      (back force)

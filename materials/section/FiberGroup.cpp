@@ -62,7 +62,8 @@ class TypedFiberGroup final : public FiberGroup {
   bool accepts(const UniaxialMaterial& material) const override {
     if constexpr (std::is_same_v<M, BoxedMaterial>)
       return mats_.empty() || std::type_index(typeid(material)) == type_;
-    else return typeid(material) == typeid(M);
+    else
+      return typeid(material) == typeid(M);
   }
 
   Status setTrial(double e0, double kz, double ky, FiberSums& sums) override {
@@ -82,7 +83,8 @@ class TypedFiberGroup final : public FiberGroup {
     FiberSums local = sums;
     const std::size_t n = mats_.size();
     if (initial) {
-      for (std::size_t i = 0; i < n; ++i) local.add(y_[i], z_[i], 0.0, mats_[i].getInitialTangent() * area_[i]);
+      for (std::size_t i = 0; i < n; ++i)
+        local.add(y_[i], z_[i], 0.0, mats_[i].getInitialTangent() * area_[i]);
     } else {
       for (std::size_t i = 0; i < n; ++i)
         local.add(y_[i], z_[i], mats_[i].getStress() * area_[i], mats_[i].getTangent() * area_[i]);
@@ -105,8 +107,10 @@ class TypedFiberGroup final : public FiberGroup {
 
  private:
   const UniaxialMaterial& object(int i) const {
-    if constexpr (std::is_same_v<M, BoxedMaterial>) return mats_[static_cast<std::size_t>(i)].material();
-    else return mats_[static_cast<std::size_t>(i)];
+    if constexpr (std::is_same_v<M, BoxedMaterial>)
+      return mats_[static_cast<std::size_t>(i)].material();
+    else
+      return mats_[static_cast<std::size_t>(i)];
   }
   std::vector<M> mats_;
   std::type_index type_ = std::type_index(typeid(void));
@@ -134,9 +138,7 @@ class StateFiberGroup final : public FiberGroup {
     committed_.push_back(law_.virginState());
     trial_.push_back(law_.virginState());
   }
-  bool accepts(const UniaxialMaterial& material) const override {
-    return &material == source_;
-  }
+  bool accepts(const UniaxialMaterial& material) const override { return &material == source_; }
 
   Status setTrial(double e0, double kz, double ky, FiberSums& sums) override {
     // One pass: the update is inlined (no call to save the accumulators around), and each fiber's
@@ -189,7 +191,7 @@ class StateFiberGroup final : public FiberGroup {
   /// commit or revert (then trial_ holds stale values, overwritten by the next setTrial).
   const std::vector<State>& current() const { return trialIsNew_ ? trial_ : committed_; }
 
-  M law_;  ///< parameters (its own state is not used)
+  M law_;                           ///< parameters (its own state is not used)
   const UniaxialMaterial* source_;  ///< only compared with, while the section is built
   std::vector<State> committed_, trial_;
   bool trialIsNew_ = false;  ///< trial_ was computed after the last commit or revert

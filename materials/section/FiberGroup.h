@@ -12,7 +12,7 @@ namespace dabs::materials::section {
 /// eps = e0 - y kz + z ky with the row a = [1, -y, z]: s = sum(sigma A a) and the symmetric
 /// k = sum(Et A a a^T), kept as plain numbers so the fiber loop needs no matrix objects.
 struct FiberSums {
-  double p = 0.0, mz = 0.0, my = 0.0;                                      ///< s
+  double p = 0.0, mz = 0.0, my = 0.0;                                       ///< s
   double kPP = 0.0, kPz = 0.0, kPy = 0.0, kzz = 0.0, kzy = 0.0, kyy = 0.0;  ///< k, upper half
 
   /// Adds one fiber with force sigma*A = `force` and stiffness Et*A = `stiffness` at (y, z).

@@ -39,16 +39,24 @@ FiberSection<Ndm>::FiberSection(int tag, const std::vector<Fiber>& fibers, doubl
 
 template <int Ndm>
 FiberSection<Ndm>::FiberSection(const FiberSection& o)
-    : SectionForceDeformation(o), where_(o.where_), gj_(o.gj_), e_(o.e_),
-      eCommitted_(o.eCommitted_), s_(o.s_), k_(o.k_), k0_(o.k0_),
+    : SectionForceDeformation(o),
+      where_(o.where_),
+      gj_(o.gj_),
+      e_(o.e_),
+      eCommitted_(o.eCommitted_),
+      s_(o.s_),
+      k_(o.k_),
+      k0_(o.k0_),
       materialUpdates_(o.materialUpdates_) {
   for (const auto& g : o.groups_) groups_.push_back(g->clone());
 }
 
 template <int Ndm>
 std::span<const SectionCode> FiberSection<Ndm>::type() const {
-  if constexpr (Ndm == 2) return kCodes2d;
-  else return kCodes3d;
+  if constexpr (Ndm == 2)
+    return kCodes2d;
+  else
+    return kCodes3d;
 }
 
 // Resultants and tangent by midpoint quadrature over the fibers: with the strain-displacement row
@@ -124,12 +132,14 @@ std::optional<Eigen::VectorXd> FiberSection<Ndm>::response(
     std::span<const std::string> args) const {
   if (args.empty()) return std::nullopt;
   if (args.size() == 1 && (args[0] == "force" || args[0] == "forces")) return Eigen::VectorXd(s_);
-  if (args.size() == 1 && (args[0] == "deformation" || args[0] == "deformations")) return Eigen::VectorXd(e_);
+  if (args.size() == 1 && (args[0] == "deformation" || args[0] == "deformations"))
+    return Eigen::VectorXd(e_);
   // fiber y z ?matTag? response: the words must be whole numbers ("abc" or NaN name no fiber).
   if (args[0] == "fiber" && (args.size() == 4 || args.size() == 5)) {
     const std::optional<double> yWord = responseReal(args[1]);
     const std::optional<double> zWord = responseReal(args[2]);
-    const std::optional<int> matWord = args.size() == 5 ? responseInteger(args[3]) : std::optional<int>(0);
+    const std::optional<int> matWord =
+        args.size() == 5 ? responseInteger(args[3]) : std::optional<int>(0);
     if (!yWord || !zWord || !matWord) return std::nullopt;
     const double y = *yWord;
     const double z = *zWord;

@@ -69,7 +69,9 @@ class FiberSection final : public SectionForceDeformation {
   /// s_ and k_ (or k0_) from fiber sums, plus the uncoupled torsion in 3D.
   void store(const FiberSums& sums, bool initial);
   void sumCurrent();
-  const FiberGroup& group(int i) const { return *groups_[where_[static_cast<std::size_t>(i)].first]; }
+  const FiberGroup& group(int i) const {
+    return *groups_[where_[static_cast<std::size_t>(i)].first];
+  }
   int index(int i) const { return where_[static_cast<std::size_t>(i)].second; }
 
   std::vector<std::unique_ptr<FiberGroup>> groups_;

@@ -37,9 +37,15 @@ SectionAggregator::SectionAggregator(int tag, const std::vector<Part>& parts,
 }
 
 SectionAggregator::SectionAggregator(const SectionAggregator& o)
-    : SectionForceDeformation(o), base_(o.base_ ? o.base_->clone() : nullptr),
-      baseOrder_(o.baseOrder_), codes_(o.codes_), e_(o.e_), eCommitted_(o.eCommitted_), s_(o.s_),
-      k_(o.k_), k0_(o.k0_) {
+    : SectionForceDeformation(o),
+      base_(o.base_ ? o.base_->clone() : nullptr),
+      baseOrder_(o.baseOrder_),
+      codes_(o.codes_),
+      e_(o.e_),
+      eCommitted_(o.eCommitted_),
+      s_(o.s_),
+      k_(o.k_),
+      k0_(o.k0_) {
   for (const auto& m : o.mats_) mats_.push_back(m->clone());
 }
 

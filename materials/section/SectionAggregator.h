@@ -11,9 +11,10 @@
 namespace dabs::materials::section {
 
 /// `section Aggregator tag matTag1 code1 ... ?-section secTag?`: uncoupled uniaxial responses
-/// added to an optional base section (OpenSees/OpenSees:SRC/material/section/SectionAggregator.cpp).
-/// Resultant order as OpenSees: the base section's resultants first, then the materials' in the
-/// order given. The tangent is block diagonal. Unlike OpenSees, a code may appear only once.
+/// added to an optional base section
+/// (OpenSees/OpenSees:SRC/material/section/SectionAggregator.cpp). Resultant order as OpenSees: the
+/// base section's resultants first, then the materials' in the order given. The tangent is block
+/// diagonal. Unlike OpenSees, a code may appear only once.
 class SectionAggregator final : public SectionForceDeformation {
  public:
   struct Part {

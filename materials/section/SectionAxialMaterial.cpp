@@ -19,7 +19,9 @@ SectionAxialMaterial::SectionAxialMaterial(std::unique_ptr<SectionForceDeformati
 }
 
 SectionAxialMaterial::SectionAxialMaterial(const SectionAxialMaterial& other)
-    : UniaxialMaterial(other.tag()), section_(other.section_->clone()), axial_(other.axial_),
+    : UniaxialMaterial(other.tag()),
+      section_(other.section_->clone()),
+      axial_(other.axial_),
       deformation_(other.deformation_) {}
 
 Status SectionAxialMaterial::setTrialStrain(double strain, double /*strainRate*/) {

@@ -35,7 +35,7 @@ class SectionAxialMaterial final : public UniaxialMaterial {
 
  private:
   std::unique_ptr<SectionForceDeformation> section_;
-  int axial_ = 0;              ///< row of P in the section's resultants
+  int axial_ = 0;                ///< row of P in the section's resultants
   Eigen::VectorXd deformation_;  ///< trial deformation handed to the section
 };
 

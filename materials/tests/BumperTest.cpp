@@ -25,8 +25,8 @@ double stressAt(UniaxialMaterial& m, double eps) {
 
 TEST(BumperTest, NoForceUntilClosingExceedsGapThenCompression) {
   auto b = GapSpring::bumper(2, {kK, kGap});
-  EXPECT_EQ(stressAt(b, -0.01), 0.0);                         // inside the clearance
-  EXPECT_EQ(stressAt(b, 0.5), 0.0);                           // opening: never tension
+  EXPECT_EQ(stressAt(b, -0.01), 0.0);                          // inside the clearance
+  EXPECT_EQ(stressAt(b, 0.5), 0.0);                            // opening: never tension
   EXPECT_NEAR(stressAt(b, -0.05), -kK * (0.05 - kGap), kTol);  // F = -k (closing - gap)
   EXPECT_EQ(b.getTangent(), kK);
   EXPECT_EQ(b.getInitialTangent(), 0.0);
@@ -98,7 +98,8 @@ namespace testing {
 // both directions and well past yield.
 struct BumperContractCase {
   static std::unique_ptr<UniaxialMaterial> make() {
-    return std::make_unique<GapSpring>(GapSpring::bumper(1, GapSpringParams{250.0, 0.02, 5.0, 0.05}));
+    return std::make_unique<GapSpring>(
+        GapSpring::bumper(1, GapSpringParams{250.0, 0.02, 5.0, 0.05}));
   }
   static std::vector<double> path() { return testing::cyclicPath(strainScale()); }
   static double strainScale() { return 0.02 + 5.0 / 250.0; }

@@ -14,7 +14,9 @@ constexpr double kFpc = -30.0, kEps0 = -0.002, kFpcu = -6.0, kEpsU = -0.006;
 constexpr double kFt = 3.0, kEts = 1500.0, kEc = 2.0 * kFpc / kEps0;
 constexpr double kTol = 1e-10;
 
-Concrete02 make() { return Concrete02(1, Concrete02::Params{kFpc, kEps0, kFpcu, kEpsU, 0.1, kFt, kEts}); }
+Concrete02 make() {
+  return Concrete02(1, Concrete02::Params{kFpc, kEps0, kFpcu, kEpsU, 0.1, kFt, kEts});
+}
 
 TEST(Concrete02Test, CompressionEnvelope) {
   auto m = make();
@@ -22,7 +24,8 @@ TEST(Concrete02Test, CompressionEnvelope) {
   EXPECT_NEAR(m.getStress(), kFpc * (2.0 * 0.5 - 0.25), kTol * 30.0);
   m.revertToLastCommit();
   ASSERT_TRUE(ok(m.setTrialStrain(-0.005)));
-  EXPECT_NEAR(m.getStress(), kFpc + (kFpcu - kFpc) * (-0.005 - kEps0) / (kEpsU - kEps0), kTol * 30.0);
+  EXPECT_NEAR(m.getStress(), kFpc + (kFpcu - kFpc) * (-0.005 - kEps0) / (kEpsU - kEps0),
+              kTol * 30.0);
   EXPECT_NEAR(m.getTangent(), (kFpcu - kFpc) / (kEpsU - kEps0), kTol * kEc);
 }
 

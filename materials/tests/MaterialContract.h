@@ -55,7 +55,8 @@ inline std::vector<double> cyclicPath(double scale,
   std::vector<double> out;
   double prev = 0.0;
   for (double a : amplitudes) {
-    for (int i = 1; i <= perSegment; ++i) out.push_back(scale * (prev + (a - prev) * i / perSegment));
+    for (int i = 1; i <= perSegment; ++i)
+      out.push_back(scale * (prev + (a - prev) * i / perSegment));
     prev = a;
   }
   return out;
@@ -217,8 +218,8 @@ TYPED_TEST_P(MaterialContract, TangentMatchesCentralDifference) {
     const bool kink = std::fabs(left - right) > kKinkRelTol * slopeScale;
     if (!kink) {
       const double fd = (sp1 - sm1) / (2 * h);
-      const double tol = kFdRelTol * std::max(std::fabs(fd), std::fabs(tangent)) +
-                         kFdAbsTolFraction * modulus;
+      const double tol =
+          kFdRelTol * std::max(std::fabs(fd), std::fabs(tangent)) + kFdAbsTolFraction * modulus;
       EXPECT_NEAR(tangent, fd, tol) << "point " << k << " strain " << e;
       ++checked;
     }

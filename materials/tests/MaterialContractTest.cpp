@@ -49,8 +49,7 @@ struct ElasticPPGapTensionCase {
 
 struct ElasticPPGapCompressionDamageCase {
   static std::unique_ptr<UniaxialMaterial> make() {
-    return std::make_unique<ElasticPPGap>(4,
-                                          ElasticPPGap::Params{1.0e5, -50.0, -0.001, 0.0, true});
+    return std::make_unique<ElasticPPGap>(4, ElasticPPGap::Params{1.0e5, -50.0, -0.001, 0.0, true});
   }
   static double strainScale() { return 0.001; }
   static std::vector<double> path() {
@@ -98,7 +97,8 @@ struct Concrete02Case {
   }
   static double strainScale() { return 0.002; }
   static std::vector<double> path() {
-    return cyclicPath(strainScale(), {0.03, 0.2, -0.5, -1.5, -0.5, 0.3, -2.5, -1.0, -4.0, 0.5, -1.0});
+    return cyclicPath(strainScale(),
+                      {0.03, 0.2, -0.5, -1.5, -0.5, 0.3, -2.5, -1.0, -4.0, 0.5, -1.0});
   }
   static constexpr bool kRateDependent = false;
 };

@@ -51,7 +51,8 @@ TEST(NoAllocationTest, SetTrialStrainAndCommitDoNotAllocate) {
   std::vector<std::unique_ptr<UniaxialMaterial>> all;
   all.push_back(spring.clone());
   all.push_back(std::make_unique<ElasticPP>(3, ElasticPP::Params{2e5, 0.002, std::nullopt, 0.0}));
-  all.push_back(std::make_unique<ElasticPPGap>(4, ElasticPPGap::Params{2e5, 400.0, 0.001, 0.0, false}));
+  all.push_back(
+      std::make_unique<ElasticPPGap>(4, ElasticPPGap::Params{2e5, 400.0, 0.001, 0.0, false}));
   all.push_back(steel.clone());
   all.push_back(std::make_unique<Steel02>(5, Steel02::Params{400.0, 2.0e5, 0.01}));
   all.push_back(std::make_unique<Concrete01>(6, Concrete01::Params{-30.0, -0.002, -6.0, -0.006}));

@@ -62,8 +62,8 @@ std::vector<Row> readCsv(const std::string& name) {
 
 /// The `history` proc of materials.tcl.
 std::vector<double> history(double scale) {
-  const double path[] = {0.0, 0.002, -0.001, 0.004, 0.001, -0.004, 0.006,
-                         0.003, 0.008, -0.008, -0.005, -0.010, 0.012, 0.0};
+  const double path[] = {0.0,   0.002, -0.001, 0.004,  0.001,  -0.004, 0.006,
+                         0.003, 0.008, -0.008, -0.005, -0.010, 0.012,  0.0};
   std::vector<double> out;
   double prev = path[0];
   for (std::size_t k = 1; k < std::size(path); ++k) {

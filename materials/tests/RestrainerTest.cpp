@@ -14,8 +14,8 @@
 namespace dabs::materials {
 namespace {
 
-constexpr double kTol = 1e-12;        // closed forms evaluated in double precision
-constexpr double kFdRelTol = 1e-5;    // style.md section 7
+constexpr double kTol = 1e-12;      // closed forms evaluated in double precision
+constexpr double kFdRelTol = 1e-5;  // style.md section 7
 constexpr double kK = 100.0, kGap = 0.05, kFy = 2.0, kB = 0.1;
 
 GapSpringParams yielding() { return {kK, kGap, kFy, kB}; }
@@ -27,10 +27,10 @@ double stressAt(UniaxialMaterial& m, double eps) {
 
 TEST(RestrainerTest, NoForceUntilOpeningExceedsGapThenLinear) {
   auto r = GapSpring::restrainer(1, {kK, kGap});
-  EXPECT_EQ(stressAt(r, 0.03), 0.0);                          // inside the clearance
+  EXPECT_EQ(stressAt(r, 0.03), 0.0);  // inside the clearance
   EXPECT_EQ(r.getTangent(), 0.0);
-  EXPECT_EQ(stressAt(r, -0.5), 0.0);                          // closing: never compression
-  EXPECT_NEAR(stressAt(r, 0.08), kK * (0.08 - kGap), kTol);   // F = k (u - gap)
+  EXPECT_EQ(stressAt(r, -0.5), 0.0);                         // closing: never compression
+  EXPECT_NEAR(stressAt(r, 0.08), kK * (0.08 - kGap), kTol);  // F = k (u - gap)
   EXPECT_EQ(r.getTangent(), kK);
   EXPECT_EQ(r.getInitialTangent(), 0.0);
 }
@@ -138,7 +138,8 @@ namespace testing {
 // both directions and well past yield.
 struct RestrainerContractCase {
   static std::unique_ptr<UniaxialMaterial> make() {
-    return std::make_unique<GapSpring>(GapSpring::restrainer(1, GapSpringParams{100.0, 0.05, 2.0, 0.1}));
+    return std::make_unique<GapSpring>(
+        GapSpring::restrainer(1, GapSpringParams{100.0, 0.05, 2.0, 0.1}));
   }
   static std::vector<double> path() { return testing::cyclicPath(strainScale()); }
   static double strainScale() { return 0.05 + 2.0 / 100.0; }

@@ -16,7 +16,8 @@ constexpr double kRelTol = 1e-12;
 
 /// Normalised Menegotto-Pinto curve sig* = b*eps* + (1-b)*eps*/(1+|eps*|^R)^(1/R).
 double menegottoPinto(double epsStar, double b, double R) {
-  return b * epsStar + (1.0 - b) * epsStar / std::pow(1.0 + std::pow(std::fabs(epsStar), R), 1.0 / R);
+  return b * epsStar +
+         (1.0 - b) * epsStar / std::pow(1.0 + std::pow(std::fabs(epsStar), R), 1.0 / R);
 }
 
 TEST(Steel02Test, FirstLoadingFollowsMenegottoPintoWithR0) {

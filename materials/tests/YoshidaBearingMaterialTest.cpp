@@ -18,9 +18,9 @@ using Vec2 = Eigen::Vector2d;
 using Mat2 = Eigen::Matrix2d;
 
 constexpr double kPi = std::numbers::pi;
-constexpr double kY0 = 150.0;   // kN
-constexpr double kU0 = 0.012;   // m
-constexpr double kFine = 2e-4;  // sub-step (fraction of U0) for closed-form comparisons
+constexpr double kY0 = 150.0;            // kN
+constexpr double kU0 = 0.012;            // m
+constexpr double kFine = 2e-4;           // sub-step (fraction of U0) for closed-form comparisons
 constexpr double kClosedFormTol = 2e-3;  // relative to Y; first-order error of the fine sub-step
 constexpr double kFdRelTol = 1e-5;       // FD tangent check (style.md section 7)
 
@@ -56,7 +56,9 @@ Mat2 fdTangent(YoshidaBearingMaterial& m, const Vec2& u, const Vec2& rate, doubl
   return k;
 }
 
-double relDiff(const Mat2& a, const Mat2& b) { return (a - b).norm() / std::max(a.norm(), b.norm()); }
+double relDiff(const Mat2& a, const Mat2& b) {
+  return (a - b).norm() / std::max(a.norm(), b.norm());
+}
 
 TEST(YoshidaBearingMaterialTest, MonotonicN2IsTanh) {
   YoshidaBearingMaterial m(1, basic(2.0));
@@ -156,7 +158,8 @@ TEST(YoshidaBearingMaterialTest, BackForceFactorIsClippedAtZero) {
 
 // Before yield (|z| well below 1, |z|^n negligible for a large n) the hysteretic law reduces to
 // dF1 = Y(U) dU / U0 with Y = Y0 (1 + gamma (U/U0)^2): a non-linear elastic spring
-// F1 = (Y0/U0) (U + gamma U^3 / (3 U0^2)), whatever the back-force factor, and unloading retraces it.
+// F1 = (Y0/U0) (U + gamma U^3 / (3 U0^2)), whatever the back-force factor, and unloading retraces
+// it.
 TEST(YoshidaBearingMaterialTest, HardeningBeforeYieldIsCubicElasticSpring) {
   Params p = basic(40.0);
   p.alpha0 = 0.5;  // constant back-force factor: must not change the elastic branch
@@ -165,9 +168,7 @@ TEST(YoshidaBearingMaterialTest, HardeningBeforeYieldIsCubicElasticSpring) {
   const Vec2 dir = Vec2(0.8, 0.6);
   const double uEnd = 0.6 * kU0;  // |z| stays below 0.6: |z|^40 < 1e-8
   const int steps = 300;
-  auto spring = [&](double u) {
-    return kY0 / kU0 * (u + p.gamma * u * u * u / (3.0 * kU0 * kU0));
-  };
+  auto spring = [&](double u) { return kY0 / kU0 * (u + p.gamma * u * u * u / (3.0 * kU0 * kU0)); };
   for (int i = 1; i <= steps; ++i) {
     const double u = uEnd * i / steps;
     drive(m, u * dir);
@@ -261,8 +262,8 @@ TEST(YoshidaBearingMaterialTest, UncoupledSpringsFailCircularOrbit) {
 
 TEST(YoshidaBearingMaterialTest, MaxwellAmplitudeUnderHarmonicMotion) {
   Params p = basic(2.0);
-  p.k = 2000.0;  // kN/m
-  p.eta = 300.0; // kN s/m -> tau = 0.15 s
+  p.k = 2000.0;   // kN/m
+  p.eta = 300.0;  // kN s/m -> tau = 0.15 s
   const double tau = p.eta / p.k;
   const double a = 0.02, w = 2 * kPi * 1.5;
   YoshidaBearingMaterial m(1, p);
@@ -316,17 +317,52 @@ TEST(YoshidaBearingMaterialTest, TangentMatchesFiniteDifference) {
       {"all terms, unloading", full, {a, b}, Vec2(0.4 * kU0, -0.3 * kU0), 0.02},
       {"all terms, near zero increment", full, {a, b}, b + Vec2(-0.7e-4 * kU0, 1e-4 * kU0), 0.01},
       {"all terms, static Maxwell", full, {a, b}, Vec2(1.1 * kU0, 1.9 * kU0), 0.0},
-      {"back force clipped", [&] { Params q = full; q.alpha0 = 0.1; return q; }(), {a, b},
-       Vec2(3.1 * kU0, 0.2 * kU0), 0.01},
-      {"n < 1, loading", [&] { Params q = full; q.n = 0.4; return q; }(), {a},
-       Vec2(2.7 * kU0, 1.1 * kU0), 0.01},
-      {"n < 1, unloading", [&] { Params q = full; q.n = 0.4; return q; }(), {a, b},
-       Vec2(0.4 * kU0, -0.3 * kU0), 0.02},
+      {"back force clipped",
+       [&] {
+         Params q = full;
+         q.alpha0 = 0.1;
+         return q;
+       }(),
+       {a, b},
+       Vec2(3.1 * kU0, 0.2 * kU0),
+       0.01},
+      {"n < 1, loading",
+       [&] {
+         Params q = full;
+         q.n = 0.4;
+         return q;
+       }(),
+       {a},
+       Vec2(2.7 * kU0, 1.1 * kU0),
+       0.01},
+      {"n < 1, unloading",
+       [&] {
+         Params q = full;
+         q.n = 0.4;
+         return q;
+       }(),
+       {a, b},
+       Vec2(0.4 * kU0, -0.3 * kU0),
+       0.02},
       // n = 1 is solved in closed form rather than by the local Newton iteration.
-      {"n = 1, loading", [&] { Params q = full; q.n = 1.0; return q; }(), {a},
-       Vec2(2.7 * kU0, 1.1 * kU0), 0.01},
-      {"n = 1, unloading", [&] { Params q = full; q.n = 1.0; return q; }(), {a, b},
-       Vec2(0.4 * kU0, -0.3 * kU0), 0.02},
+      {"n = 1, loading",
+       [&] {
+         Params q = full;
+         q.n = 1.0;
+         return q;
+       }(),
+       {a},
+       Vec2(2.7 * kU0, 1.1 * kU0),
+       0.01},
+      {"n = 1, unloading",
+       [&] {
+         Params q = full;
+         q.n = 1.0;
+         return q;
+       }(),
+       {a, b},
+       Vec2(0.4 * kU0, -0.3 * kU0),
+       0.02},
   };
   for (const auto& c : cases) {
     YoshidaBearingMaterial m(1, c.p);
@@ -439,7 +475,8 @@ TEST(YoshidaBearingMaterialTest, StepSizeStudyShowsFirstOrder) {
   // Accuracy claim for the default sub-step (0.02 U0): force error below 1 % of Y0.
   lissajousForces(Params{}.maxSubIncrement, f);
   double eDefault = 0.0;
-  for (std::size_t i = 0; i < f.size(); ++i) eDefault = std::max(eDefault, (f[i] - ref[i]).norm() / kY0);
+  for (std::size_t i = 0; i < f.size(); ++i)
+    eDefault = std::max(eDefault, (f[i] - ref[i]).norm() / kY0);
   EXPECT_LT(eDefault, 0.01);
 }
 

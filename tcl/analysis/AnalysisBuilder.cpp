@@ -63,7 +63,8 @@ void AnalysisBuilder::setAnalysis(Kind kind, int numSubLevels, int numSubSteps) 
     staticIntegrator_ = std::make_unique<LoadControl>(1.0, 1, 1.0, 1.0);
   integrator_ = kind == Kind::Transient ? transientIntegrator_.get() : staticIntegrator_.get();
   integratorSeeded_ = false;
-  if (!algorithm_) algorithm_ = std::make_unique<NewtonRaphson>(NewtonRaphson::Tangent::Current, false);
+  if (!algorithm_)
+    algorithm_ = std::make_unique<NewtonRaphson>(NewtonRaphson::Tangent::Current, false);
   if (!test_)
     test_ = std::make_unique<ConvergenceTest>(ConvergenceTest::Kind::NormUnbalance,
                                               kDefaultTestTolerance, kDefaultTestIterations);
@@ -102,9 +103,11 @@ void AnalysisBuilder::setContactStepping(const std::optional<ContactSteppingPara
 }
 
 void AnalysisBuilder::ensureModel() {
-  if (domain_.nodes().empty()) throw InputError("model", "has no nodes; define the model before analysing it");
+  if (domain_.nodes().empty())
+    throw InputError("model", "has no nodes; define the model before analysing it");
   if (!model_ || model_->stale()) {
-    auto model = std::make_unique<AnalysisModel>(domain_, constraints_, numberer_, alphaSP_, alphaMP_);
+    auto model =
+        std::make_unique<AnalysisModel>(domain_, constraints_, numberer_, alphaSP_, alphaMP_);
     model->build();  // throws InputError for constraints it cannot enforce; nothing changed yet
     model->setThreads(threads_);
     model_ = std::move(model);
@@ -139,8 +142,9 @@ void AnalysisBuilder::refreshModalDamping() {
   Eigen::VectorXd coef(modes);
   for (int i = 0; i < modes; ++i) {
     const double lambda = domain_.eigenvalues[static_cast<std::size_t>(i)];
-    const double z = zeta.size() == 1 ? zeta[0] : zeta[static_cast<std::size_t>(std::min<std::size_t>(
-                                                      static_cast<std::size_t>(i), zeta.size() - 1))];
+    const double z = zeta.size() == 1 ? zeta[0]
+                                      : zeta[static_cast<std::size_t>(std::min<std::size_t>(
+                                            static_cast<std::size_t>(i), zeta.size() - 1))];
     coef(i) = lambda > 0.0 ? 2.0 * z * std::sqrt(lambda) : 0.0;
   }
   model_->setModalDamping(M * phi, coef);
@@ -191,9 +195,11 @@ Status AnalysisBuilder::analyzeSubLevel(int level, double dt) {
 }
 
 int AnalysisBuilder::analyze(int numSteps, double dt) {
-  if (inAfterStep_) throw InputError("analyze", "cannot be called from the script run after each step");
+  if (inAfterStep_)
+    throw InputError("analyze", "cannot be called from the script run after each step");
   if (kind_ == Kind::None)
-    throw InputError("analysis", "is not defined; give `analysis Static` or `analysis Transient` first");
+    throw InputError("analysis",
+                     "is not defined; give `analysis Static` or `analysis Transient` first");
   if (kind_ == Kind::Transient && !(dt > 0.0))
     throw InputError("dt", "must be positive for a transient analysis");
   if (algorithm_->needsTest() && !test_) throw InputError("test", "is not defined");
@@ -294,17 +300,18 @@ bool AnalysisBuilder::noteBearingFailures() {
     const auto mode = b.params().afterFailure;
     if (log) {
       char text[256];
-      std::snprintf(text, sizeof text,
-                    "yoshidaBearing %d reached its failure shear strain %g at time %g; -afterFailure %s: %s",
-                    tag, b.params().failureLimit, b.committedState().failureTime,
-                    mode == YoshidaBearing3d::AfterFailure::Keep      ? "keep"
-                    : mode == YoshidaBearing3d::AfterFailure::Release ? "release"
-                                                                      : "stop",
-                    mode == YoshidaBearing3d::AfterFailure::Keep
-                        ? "it goes on carrying load as if intact (the rubber has ruptured in reality)"
-                    : mode == YoshidaBearing3d::AfterFailure::Release
-                        ? "it carries no shear from now on"
-                        : "the analysis stops here with code -5");
+      std::snprintf(
+          text, sizeof text,
+          "yoshidaBearing %d reached its failure shear strain %g at time %g; -afterFailure %s: %s",
+          tag, b.params().failureLimit, b.committedState().failureTime,
+          mode == YoshidaBearing3d::AfterFailure::Keep      ? "keep"
+          : mode == YoshidaBearing3d::AfterFailure::Release ? "release"
+                                                            : "stop",
+          mode == YoshidaBearing3d::AfterFailure::Keep
+              ? "it goes on carrying load as if intact (the rubber has ruptured in reality)"
+          : mode == YoshidaBearing3d::AfterFailure::Release
+              ? "it carries no shear from now on"
+              : "the analysis stops here with code -5");
       log(text);
     }
     stop = stop || mode == YoshidaBearing3d::AfterFailure::Stop;

@@ -21,18 +21,18 @@ namespace dabs::analysis {
 
 /// Counters of what an analysis did, for benchmarks and reports.
 struct AnalysisStatistics {
-  long steps = 0;             ///< committed steps (sub-steps counted individually)
-  long failedSteps = 0;       ///< steps that failed at full size
-  long subSteppedSteps = 0;   ///< steps that were recovered by sub-stepping
-  long iterations = 0;        ///< algorithm iterations
-  long factorizations = 0;    ///< numeric factorisations
-  long equations = 0;         ///< equations of the last committed step (free dofs after constraints)
-  long elementUpdates = 0;    ///< element state determinations
-  long materialUpdates = 0;   ///< section material (fiber) state determinations
-  long failedBearings = 0;    ///< yoshidaBearing elements that reached their failure shear strain
-  long contactSteps = 0;      ///< steps shortened by contact stepping (shorter than analyze's dt)
-  long patternChanges = 0;    ///< matrix patterns rebuilt as contact pairs woke or fell asleep
-  long redoneSteps = 0;       ///< steps redone because a sleeping contact pair would carry force
+  long steps = 0;            ///< committed steps (sub-steps counted individually)
+  long failedSteps = 0;      ///< steps that failed at full size
+  long subSteppedSteps = 0;  ///< steps that were recovered by sub-stepping
+  long iterations = 0;       ///< algorithm iterations
+  long factorizations = 0;   ///< numeric factorisations
+  long equations = 0;        ///< equations of the last committed step (free dofs after constraints)
+  long elementUpdates = 0;   ///< element state determinations
+  long materialUpdates = 0;  ///< section material (fiber) state determinations
+  long failedBearings = 0;   ///< yoshidaBearing elements that reached their failure shear strain
+  long contactSteps = 0;     ///< steps shortened by contact stepping (shorter than analyze's dt)
+  long patternChanges = 0;   ///< matrix patterns rebuilt as contact pairs woke or fell asleep
+  long redoneSteps = 0;      ///< steps redone because a sleeping contact pair would carry force
 };
 
 /// Code `analyze` returns when a bearing with `-afterFailure stop` reached its failure strain: the
@@ -140,7 +140,7 @@ class AnalysisBuilder {
   bool inAfterStep_ = false;
   long factorizationsCarried_ = 0;
   std::vector<std::pair<int, const elements::Element*>> bearings_;  ///< yoshidaBearing elements
-  const AnalysisModel* bearingsOf_ = nullptr;                        ///< the model bearings_ is of
+  const AnalysisModel* bearingsOf_ = nullptr;                       ///< the model bearings_ is of
 };
 
 }  // namespace dabs::analysis

@@ -17,7 +17,10 @@ constexpr int kMaxConstraintChain = 16;  // equalDOF chains longer than this are
 
 AnalysisModel::AnalysisModel(domain::Domain& domain, ConstraintKind constraints,
                              NumbererKind numberer, double alphaSP, double alphaMP)
-    : domain_(domain), constraints_(constraints), numberer_(numberer), alphaSP_(alphaSP),
+    : domain_(domain),
+      constraints_(constraints),
+      numberer_(numberer),
+      alphaSP_(alphaSP),
       alphaMP_(alphaMP) {}
 
 bool AnalysisModel::nonSymmetric() const {
@@ -62,14 +65,18 @@ void AnalysisModel::numberEquations() {
   std::vector<int> slotOf(static_cast<std::size_t>(ndofTotal), -1);
   auto addSlot = [&](int nodeTag, int dof, const char* source) {
     const domain::Node* n = domain_.findNode(nodeTag);
-    if (n == nullptr) throw InputError(source, "refers to node " + std::to_string(nodeTag) + " which does not exist");
+    if (n == nullptr)
+      throw InputError(source,
+                       "refers to node " + std::to_string(nodeTag) + " which does not exist");
     if (dof < 0 || dof >= n->ndf())
       throw InputError(source, "dof " + std::to_string(dof + 1) + " is outside 1.." +
-                                   std::to_string(n->ndf()) + " of node " + std::to_string(nodeTag));
+                                   std::to_string(n->ndf()) + " of node " +
+                                   std::to_string(nodeTag));
     const int g = dofIndex(nodeTag, dof);
     if (slotOf[static_cast<std::size_t>(g)] >= 0)
-      throw InputError(source, "node " + std::to_string(nodeTag) + " dof " + std::to_string(dof + 1) +
-                                   " has more than one single-point constraint (fix, sp or imposedMotion)");
+      throw InputError(source,
+                       "node " + std::to_string(nodeTag) + " dof " + std::to_string(dof + 1) +
+                           " has more than one single-point constraint (fix, sp or imposedMotion)");
     slotOf[static_cast<std::size_t>(g)] = static_cast<int>(slots_.size());
     slots_.push_back(Slot{nodeTag, dof});
   };
@@ -93,8 +100,9 @@ void AnalysisModel::numberEquations() {
 
   // --- multi-point constraints -------------------------------------------------------------
   if (constraints_ == ConstraintKind::Plain && !domain_.mps().empty())
-    throw InputError("constraints Plain",
-                     "cannot enforce equalDOF or rigidLink constraints; use constraints Transformation");
+    throw InputError(
+        "constraints Plain",
+        "cannot enforce equalDOF or rigidLink constraints; use constraints Transformation");
   std::vector<int> mpOf(static_cast<std::size_t>(ndofTotal), -1);  // index into mps, row encoded
   std::vector<int> mpRow(static_cast<std::size_t>(ndofTotal), -1);
   const auto& mps = domain_.mps();
@@ -125,9 +133,11 @@ void AnalysisModel::numberEquations() {
     for (const auto& [etag, e] : domain_.elements()) {
       const auto& nt = e->nodeTags();
       for (std::size_t i = 0; i < nt.size(); ++i)
-        for (std::size_t j = i + 1; j < nt.size(); ++j) link(nodeIndex_.at(nt[i]), nodeIndex_.at(nt[j]));
+        for (std::size_t j = i + 1; j < nt.size(); ++j)
+          link(nodeIndex_.at(nt[i]), nodeIndex_.at(nt[j]));
     }
-    for (const auto& mp : mps) link(nodeIndex_.at(mp.retainedNode), nodeIndex_.at(mp.constrainedNode));
+    for (const auto& mp : mps)
+      link(nodeIndex_.at(mp.retainedNode), nodeIndex_.at(mp.constrainedNode));
     std::vector<bool> seen(nodes_.size(), false);
     std::vector<int> cm;
     cm.reserve(nodes_.size());
@@ -166,7 +176,8 @@ void AnalysisModel::numberEquations() {
     const NodeLink& nl = nodes_[static_cast<std::size_t>(ni)];
     for (int d = 0; d < nl.node->ndf(); ++d) {
       const auto g = static_cast<std::size_t>(nl.firstDof + d);
-      const bool prescribed = constraints_ != ConstraintKind::Penalty && (slotOf[g] >= 0 || mpOf[g] >= 0);
+      const bool prescribed =
+          constraints_ != ConstraintKind::Penalty && (slotOf[g] >= 0 || mpOf[g] >= 0);
       if (!prescribed) eqOf[g] = neq_++;
     }
   }
@@ -211,11 +222,15 @@ void AnalysisModel::numberEquations() {
     for (const auto& mp : mps) {
       for (std::size_t r = 0; r < mp.constrainedDofs.size(); ++r) {
         PenaltyRow row;
-        row.eqs.push_back({eqOf[static_cast<std::size_t>(dofIndex(mp.constrainedNode, mp.constrainedDofs[r]))], 1.0});
+        row.eqs.push_back(
+            {eqOf[static_cast<std::size_t>(dofIndex(mp.constrainedNode, mp.constrainedDofs[r]))],
+             1.0});
         for (std::size_t k = 0; k < mp.retainedDofs.size(); ++k) {
           const double c = mp.Ccr(static_cast<Eigen::Index>(r), static_cast<Eigen::Index>(k));
           if (c != 0.0)
-            row.eqs.push_back({eqOf[static_cast<std::size_t>(dofIndex(mp.retainedNode, mp.retainedDofs[k]))], -c});
+            row.eqs.push_back(
+                {eqOf[static_cast<std::size_t>(dofIndex(mp.retainedNode, mp.retainedDofs[k]))],
+                 -c});
         }
         row.alpha = alphaMP_;
         penalties_.push_back(row);
@@ -234,7 +249,8 @@ int AnalysisModel::valueIndex(int row, int col) const {
 }
 
 void AnalysisModel::buildScatter() {
-  // Pattern: every equation pair coupled by an element, a nodal mass, a penalty row or the diagonal.
+  // Pattern: every equation pair coupled by an element, a nodal mass, a penalty row or the
+  // diagonal.
   std::vector<Eigen::Triplet<double>> triplets;
   for (int i = 0; i < neq_; ++i) triplets.emplace_back(i, i, 0.0);
   auto eqsOfDof = [&](int g, std::vector<std::pair<int, double>>& out) {
@@ -371,7 +387,7 @@ AnalysisModel::SleepCheck AnalysisModel::checkSleepingPairs() {
 }
 
 void AnalysisModel::applySleepChanges() {
-  const Eigen::VectorXd P = P_;  // the external load of the current time stays
+  const Eigen::VectorXd P = P_;           // the external load of the current time stays
   for (const ElementLink& l : elements_)  // pairs without a change keep their state
     if (l.pair3 || l.pair6) sleepWanted_.emplace(l.element, l.asleep);
   buildScatter();
@@ -541,7 +557,8 @@ Status AnalysisModel::updateElements() {
   return Status::Ok;
 }
 
-void AnalysisModel::addElementMatrix(double* values, const ElementLink& l, const Eigen::MatrixXd& m) const {
+void AnalysisModel::addElementMatrix(double* values, const ElementLink& l,
+                                     const Eigen::MatrixXd& m) const {
   const double* local = m.data();
   for (const MatEntry& e : l.mat) values[e.value] += e.coef * local[e.local];
 }
@@ -641,7 +658,8 @@ void AnalysisModel::formResidual(const AssemblyCoefficients& c, Eigen::VectorXd&
       }
     }
     if (hasModalDamping())
-      B.noalias() -= modalMphi_ * (modalCoefficients_.asDiagonal() * (modalMphi_.transpose() * eqVel_));
+      B.noalias() -=
+          modalMphi_ * (modalCoefficients_.asDiagonal() * (modalMphi_.transpose() * eqVel_));
   }
   for (const PenaltyRow& row : penalties_) {
     // Penalty force alpha c (g - c.u) (OpenSees PenaltySP_FE / PenaltyMP_FE).
@@ -683,7 +701,8 @@ const Eigen::SparseMatrix<double>& AnalysisModel::formTangent(const AssemblyCoef
   if (!constantFor_ || !constantFor_->sameMatrix(c)) {
     std::fill(values, values + nnz, 0.0);
     for (ElementLink& l : elements_)
-      if (!l.asleep && l.element->isLinear() && l.element->isActive()) addElementTangent(values, l, c);
+      if (!l.asleep && l.element->isLinear() && l.element->isActive())
+        addElementTangent(values, l, c);
     if (c.cM != 0.0 || c.cC != 0.0) {
       for (NodeLink& nl : nodes_) {
         const double f = c.cM + c.cC * nl.alphaM;
@@ -694,7 +713,8 @@ const Eigen::SparseMatrix<double>& AnalysisModel::formTangent(const AssemblyCoef
     for (const PenaltyRow& row : penalties_) {
       std::size_t idx = 0;
       for (const auto& a : row.eqs)
-        for (const auto& b : row.eqs) values[row.valueIndex[idx++]] += c.cK * row.alpha * a.second * b.second;
+        for (const auto& b : row.eqs)
+          values[row.valueIndex[idx++]] += c.cK * row.alpha * a.second * b.second;
     }
     constantValues_.assign(values, values + nnz);
     constantFor_ = c;
@@ -702,7 +722,8 @@ const Eigen::SparseMatrix<double>& AnalysisModel::formTangent(const AssemblyCoef
     std::copy(constantValues_.begin(), constantValues_.end(), values);
   }
   for (ElementLink& l : elements_)
-    if (!l.asleep && !l.element->isLinear() && l.element->isActive()) addElementTangent(values, l, c);
+    if (!l.asleep && !l.element->isLinear() && l.element->isActive())
+      addElementTangent(values, l, c);
   return A_;
 }
 
@@ -735,7 +756,8 @@ void AnalysisModel::setEigenvectors(const Eigen::MatrixXd& phi) {
   }
 }
 
-void AnalysisModel::setModalDamping(const Eigen::MatrixXd& Mphi, const Eigen::VectorXd& coefficients) {
+void AnalysisModel::setModalDamping(const Eigen::MatrixXd& Mphi,
+                                    const Eigen::VectorXd& coefficients) {
   modalMphi_ = Mphi;
   modalCoefficients_ = coefficients;
 }

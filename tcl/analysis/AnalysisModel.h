@@ -80,7 +80,8 @@ class AnalysisModel {
   /// support values.
   void setResponse(const Eigen::VectorXd& U, const Eigen::VectorXd& V, const Eigen::VectorXd& A);
   /// Reads the nodes' committed (or trial) response into equation space.
-  void getResponse(Eigen::VectorXd& U, Eigen::VectorXd& V, Eigen::VectorXd& A, bool committed) const;
+  void getResponse(Eigen::VectorXd& U, Eigen::VectorXd& V, Eigen::VectorXd& A,
+                   bool committed) const;
   /// Updates every element from its nodes' trial response.
   [[nodiscard]] Status updateElements();
   /// Element updates since construction (a work count for benchmarks).
@@ -127,7 +128,7 @@ class AnalysisModel {
 
  private:
   struct Term {
-    int index;    // >= 0: equation; < 0: prescribed slot -index-1
+    int index;  // >= 0: equation; < 0: prescribed slot -index-1
     double coef;
   };
   struct Slot {
@@ -152,17 +153,17 @@ class AnalysisModel {
     std::vector<std::pair<int, int>> rowCol;  // (row, column) of each mat entry while building
     domain::RayleighFactors rayleigh;
     bool rayleighOn = false;
-    Eigen::VectorXd u, v, a;          // gather buffers
-    mutable Eigen::VectorXd force;    // residual work buffer
-    Eigen::MatrixXd work;             // tangent work buffer
+    Eigen::VectorXd u, v, a;                              // gather buffers
+    mutable Eigen::VectorXd force;                        // residual work buffer
+    Eigen::MatrixXd work;                                 // tangent work buffer
     contact::NodeToSurfaceContact3d<3>* pair3 = nullptr;  // a contact pair that may sleep
     contact::NodeToSurfaceContact3d<6>* pair6 = nullptr;
-    bool asleep = false;              // left out of the pattern and the iterations
+    bool asleep = false;  // left out of the pattern and the iterations
   };
   struct NodeLink {
     domain::Node* node;
-    int firstDof;                 // index of the node's dof 0 in dofTerms
-    std::vector<MatEntry> mass;   // nodal mass scatter (local = j*ndf+i)
+    int firstDof;                             // index of the node's dof 0 in dofTerms
+    std::vector<MatEntry> mass;               // nodal mass scatter (local = j*ndf+i)
     std::vector<std::pair<int, int>> rowCol;  // (row, column) of each mass entry while building
     std::vector<VecEntry> vec;
     double alphaM = 0.0;
@@ -171,11 +172,12 @@ class AnalysisModel {
     std::vector<std::pair<int, double>> eqs;  // equation, coefficient
     int slot = -1;                            // prescribed value g (or -1 for 0)
     double alpha = 0.0;
-    std::vector<int> valueIndex;              // A_ value index of eqs[i] x eqs[j], row-major
+    std::vector<int> valueIndex;  // A_ value index of eqs[i] x eqs[j], row-major
   };
 
   void numberEquations();
-  /// Whether the pair of link l sleeps in the next pattern (sleepWanted_, else its committed state).
+  /// Whether the pair of link l sleeps in the next pattern (sleepWanted_, else its committed
+  /// state).
   bool wantsSleep(const ElementLink& l) const;
   /// Sleeper's far test on its nodes' trial translations (true: still far, trial state set).
   bool sleeperStaysFar(ElementLink& l, double dt) const;
@@ -203,7 +205,7 @@ class AnalysisModel {
   std::vector<NodeLink> nodes_;
   std::vector<ElementLink> elements_;
   std::vector<PenaltyRow> penalties_;
-  std::map<int, int> nodeIndex_;             // node tag -> index in nodes_
+  std::map<int, int> nodeIndex_;                      // node tag -> index in nodes_
   std::vector<std::pair<domain::Node*, int>> eqDof_;  // node and dof of each equation
   Eigen::SparseMatrix<double> A_;
   Eigen::VectorXd P_;
@@ -211,7 +213,7 @@ class AnalysisModel {
   // betaK0 terms, and the betaK/betaKc terms of linear elements. Only used when no support moves
   // with an imposed velocity (otherwise every element forms its own inertia and damping forces).
   Eigen::SparseMatrix<double> massGlobal_, dampingGlobal_;
-  std::vector<char> rayleighLeft_;   // per element: Rayleigh stiffness terms left to the element
+  std::vector<char> rayleighLeft_;  // per element: Rayleigh stiffness terms left to the element
   bool imposedMotion_ = false;
   // Tangent values of what never changes (linear elements, nodal masses, penalty rows) for the
   // coefficients constantFor_; reset when the pattern is built.

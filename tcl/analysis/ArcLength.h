@@ -29,9 +29,9 @@ class ArcLength final : public StaticIntegrator {
   double arcLength_;
   double wU_, wF_;
   bool loadScaled_;
-  double wFEffective_ = 0.0;    ///< wF, times phat.phat when load-scaled
-  double lambda_ = 0.0;         ///< trial load factor
-  double dLambdaStep_ = 0.0;    ///< load-factor increment of the current (or last) step
+  double wFEffective_ = 0.0;  ///< wF, times phat.phat when load-scaled
+  double lambda_ = 0.0;       ///< trial load factor
+  double dLambdaStep_ = 0.0;  ///< load-factor increment of the current (or last) step
   Eigen::VectorXd phat_, dUhat_, dUstep_, dU_;
 };
 

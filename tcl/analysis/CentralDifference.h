@@ -23,7 +23,7 @@ class CentralDifference final : public Integrator {
  private:
   double dt_ = 0.0;
   int updates_ = 0;
-  Eigen::VectorXd Uprev_, Un_, Vn_, An_;       // u_{n-1}, u_n and the committed v_n, a_n
+  Eigen::VectorXd Uprev_, Un_, Vn_, An_;  // u_{n-1}, u_n and the committed v_n, a_n
   Eigen::VectorXd UprevSaved_, UnSaved_, VnSaved_, AnSaved_;
 };
 

@@ -9,9 +9,12 @@
 namespace dabs::analysis {
 
 void ContactSteppingParams::validate() const {
-  if (!(maxStep > 0.0) || !std::isfinite(maxStep)) throw InputError("maxStep", "must be a positive step length");
-  if (!(lookAhead >= 0.0) || !std::isfinite(lookAhead)) throw InputError("lookAhead", "must be >= 0");
-  if (!(overshoot >= 1.0) || !std::isfinite(overshoot)) throw InputError("overshoot", "must be >= 1");
+  if (!(maxStep > 0.0) || !std::isfinite(maxStep))
+    throw InputError("maxStep", "must be a positive step length");
+  if (!(lookAhead >= 0.0) || !std::isfinite(lookAhead))
+    throw InputError("lookAhead", "must be >= 0");
+  if (!(overshoot >= 1.0) || !std::isfinite(overshoot))
+    throw InputError("overshoot", "must be >= 1");
 }
 
 void ContactStepping::attach(const domain::Domain& domain) {

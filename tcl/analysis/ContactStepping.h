@@ -12,8 +12,10 @@ namespace dabs::analysis {
 /// Parameters of event-located contact stepping (the `contactStepping` command).
 struct ContactSteppingParams {
   double maxStep = 0.0005;  ///< longest step while a pair is closed or about to close, s (> 0)
-  double lookAhead = 2.0;   ///< a pair "about to close" closes within lookAhead x the rest of the step (>= 0)
-  double overshoot = 1.2;   ///< a step cut at a predicted first contact ends at overshoot x that time (>= 1)
+  double lookAhead =
+      2.0;  ///< a pair "about to close" closes within lookAhead x the rest of the step (>= 0)
+  double overshoot =
+      1.2;  ///< a step cut at a predicted first contact ends at overshoot x that time (>= 1)
   /// Throws InputError{field, reason} (fields maxStep, lookAhead, overshoot).
   void validate() const;
 };

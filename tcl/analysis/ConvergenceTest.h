@@ -9,7 +9,8 @@ namespace dabs::analysis {
 
 /// Convergence test of an iteration (`test NormDispIncr|NormUnbalance|EnergyIncr tol maxIter
 /// ?pFlag? ?nType?`), evaluated after each update on the increment just applied (x) and the new
-/// residual (b), as OpenSees does (OpenSees/OpenSees:SRC/convergenceTest/CTestNormDispIncr.cpp etc.).
+/// residual (b), as OpenSees does (OpenSees/OpenSees:SRC/convergenceTest/CTestNormDispIncr.cpp
+/// etc.).
 class ConvergenceTest {
  public:
   enum class Kind { NormDispIncr, NormUnbalance, EnergyIncr };

@@ -8,7 +8,12 @@ namespace dabs::analysis {
 
 DisplacementControl::DisplacementControl(int node, int dof, double incr, int Jd, double dUmin,
                                          double dUmax, bool initialTangent)
-    : StaticIntegrator(Jd), node_(node), dof_(dof), incr_(incr), dUmin_(dUmin), dUmax_(dUmax),
+    : StaticIntegrator(Jd),
+      node_(node),
+      dof_(dof),
+      incr_(incr),
+      dUmin_(dUmin),
+      dUmax_(dUmax),
       initialTangent_(initialTangent) {}
 
 void DisplacementControl::domainChanged(LinearSystem& system) {
@@ -33,8 +38,8 @@ Status DisplacementControl::newStep(LinearSystem& system, double /*dt*/) {
   incr_ = adaptStep(incr_, dUmin_, dUmax_);
   AnalysisModel& model = system.model();
   lambda_ = model.domain().committedTime();
-  const Status st = system.formTangent(coefficients(initialTangent_ ? StiffnessKind::Initial
-                                                                    : StiffnessKind::Current));
+  const Status st = system.formTangent(
+      coefficients(initialTangent_ ? StiffnessKind::Initial : StiffnessKind::Current));
   if (!ok(st)) return st;
   const Status ss = system.solve(phat_, dUhat_);
   if (!ok(ss)) return ss;

@@ -40,8 +40,8 @@ int massRank(const Eigen::SparseMatrix<double>& M) {
 
 }  // namespace
 
-EigenResult solveEigenDense(const Eigen::SparseMatrix<double>& K, const Eigen::SparseMatrix<double>& M,
-                            int numModes, bool largest) {
+EigenResult solveEigenDense(const Eigen::SparseMatrix<double>& K,
+                            const Eigen::SparseMatrix<double>& M, int numModes, bool largest) {
   EigenResult out;
   const Eigen::Index n = K.rows();
   const int rank = massRank(M);
@@ -119,7 +119,8 @@ EigenResult solveEigenSubspace(const Eigen::SparseMatrix<double>& K,
     }
     X = Xbar * ges.eigenvectors();
     const Eigen::VectorXd lambda = ges.eigenvalues().head(numModes);
-    const double change = ((lambda - previous).cwiseAbs().array() / lambda.cwiseAbs().array()).maxCoeff();
+    const double change =
+        ((lambda - previous).cwiseAbs().array() / lambda.cwiseAbs().array()).maxCoeff();
     previous = lambda;
     if (iter > 0 && change < kSubspaceTolerance) {
       out.values = lambda;

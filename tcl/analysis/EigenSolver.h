@@ -19,10 +19,11 @@ struct EigenResult {
 };
 
 /// Dense solution through the Cholesky factor of K (small systems, or `eigen -fullGenLapack`).
-/// With `largest`, the numModes largest finite eigenvalues in ascending order (`eigen -findLargest`;
-/// the finite ones are as many as the dofs with mass).
-EigenResult solveEigenDense(const Eigen::SparseMatrix<double>& K, const Eigen::SparseMatrix<double>& M,
-                            int numModes, bool largest = false);
+/// With `largest`, the numModes largest finite eigenvalues in ascending order (`eigen
+/// -findLargest`; the finite ones are as many as the dofs with mass).
+EigenResult solveEigenDense(const Eigen::SparseMatrix<double>& K,
+                            const Eigen::SparseMatrix<double>& M, int numModes,
+                            bool largest = false);
 /// Subspace iteration with a sparse LDL^T of K (Bathe, Finite Element Procedures, sec. 11.6).
 EigenResult solveEigenSubspace(const Eigen::SparseMatrix<double>& K,
                                const Eigen::SparseMatrix<double>& M, int numModes);

@@ -21,7 +21,8 @@ Status GeneralizedAlpha::newStep(LinearSystem& system, double dt) {
   Ut_ = U_;
   Vt_ = V_;
   At_ = A_;
-  // Newmark predictor with an unchanged displacement (OpenSees Newmark::newStep, displacement form).
+  // Newmark predictor with an unchanged displacement (OpenSees Newmark::newStep, displacement
+  // form).
   V_ = (1.0 - gamma_ / beta_) * Vt_ + dt * (1.0 - 0.5 * gamma_ / beta_) * At_;
   A_ = (-1.0 / (beta_ * dt)) * Vt_ + (1.0 - 0.5 / beta_) * At_;
   AnalysisModel& model = system.model();

@@ -6,8 +6,8 @@
 namespace dabs::analysis {
 
 /// Generalized-alpha time stepping (Chung and Hulbert 1993) in OpenSees' convention, where the
-/// alphas weight the NEW state: M a_{n+alphaM} + C v_{n+alphaF} + R(u_{n+alphaF}) = P(t_n + alphaF dt)
-/// with Newmark's update for u, v, a. Newmark is alphaM = alphaF = 1; HHT (Hilber, Hughes and
+/// alphas weight the NEW state: M a_{n+alphaM} + C v_{n+alphaF} + R(u_{n+alphaF}) = P(t_n + alphaF
+/// dt) with Newmark's update for u, v, a. Newmark is alphaM = alphaF = 1; HHT (Hilber, Hughes and
 /// Taylor 1977) is alphaM = 1, alphaF = alpha (OpenSees/OpenSees:SRC/analysis/integrator/
 /// Newmark.cpp, HHT.cpp, GeneralizedAlpha.cpp). The unknown is the displacement increment.
 class GeneralizedAlpha final : public Integrator {

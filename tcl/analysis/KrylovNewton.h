@@ -15,7 +15,8 @@ namespace dabs::analysis {
 class KrylovNewton final : public SolutionAlgorithm {
  public:
   KrylovNewton(bool initial, int maxDim) : initial_(initial), maxDim_(maxDim) {}
-  Status solveCurrentStep(LinearSystem& system, Integrator& integrator, ConvergenceTest* test) override;
+  Status solveCurrentStep(LinearSystem& system, Integrator& integrator,
+                          ConvergenceTest* test) override;
 
  private:
   bool initial_;

@@ -138,18 +138,19 @@ class DenseLuSolver final : public LinearSolver {
 
 SolverKind solverKindFromName(const std::string& name) {
   static const std::map<std::string, SolverKind> kNames = {
-      {"BandSPD", SolverKind::SparseLDLT},      {"ProfileSPD", SolverKind::SparseLDLT},
-      {"SparseSYM", SolverKind::SparseLDLT},    {"SparseSPD", SolverKind::SparseLDLT},
-      {"BandGeneral", SolverKind::SparseLU},    {"BandGen", SolverKind::SparseLU},
-      {"SparseGeneral", SolverKind::SparseLU},  {"SparseGEN", SolverKind::SparseLU},
-      {"UmfPack", SolverKind::SparseLU},        {"Umfpack", SolverKind::SparseLU},
-      {"Mumps", SolverKind::SparseLU},          {"SuperLU", SolverKind::SparseLU},
-      {"FullGeneral", SolverKind::DenseLU},     {"FullGen", SolverKind::DenseLU},
+      {"BandSPD", SolverKind::SparseLDLT},     {"ProfileSPD", SolverKind::SparseLDLT},
+      {"SparseSYM", SolverKind::SparseLDLT},   {"SparseSPD", SolverKind::SparseLDLT},
+      {"BandGeneral", SolverKind::SparseLU},   {"BandGen", SolverKind::SparseLU},
+      {"SparseGeneral", SolverKind::SparseLU}, {"SparseGEN", SolverKind::SparseLU},
+      {"UmfPack", SolverKind::SparseLU},       {"Umfpack", SolverKind::SparseLU},
+      {"Mumps", SolverKind::SparseLU},         {"SuperLU", SolverKind::SparseLU},
+      {"FullGeneral", SolverKind::DenseLU},    {"FullGen", SolverKind::DenseLU},
   };
   auto it = kNames.find(name);
   if (it == kNames.end())
-    throw InputError("type", "\"" + name + "\" is not a known system (BandGeneral, BandSPD, ProfileSPD, "
-                             "SparseGeneral, UmfPack, FullGeneral, SparseSYM, Mumps)");
+    throw InputError("type", "\"" + name +
+                                 "\" is not a known system (BandGeneral, BandSPD, ProfileSPD, "
+                                 "SparseGeneral, UmfPack, FullGeneral, SparseSYM, Mumps)");
   return it->second;
 }
 

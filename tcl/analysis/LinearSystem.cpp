@@ -60,7 +60,8 @@ Status LinearSystem::formTangent(const AssemblyCoefficients& c, bool reuse) {
   if (!ok(s)) return s;
   lastCoefficients_ = c;
   factored_ = true;
-  // Modal damping adds cC * U diag(d) U^T to A (OpenSees IncrementalIntegrator::addModalDampingMatrix).
+  // Modal damping adds cC * U diag(d) U^T to A (OpenSees
+  // IncrementalIntegrator::addModalDampingMatrix).
   modalScale_ = model_.hasModalDamping() ? c.cC : 0.0;
   if (modalScale_ != 0.0) {
     const Eigen::MatrixXd& U = model_.modalBasis();
@@ -74,8 +75,10 @@ Status LinearSystem::formTangent(const AssemblyCoefficients& c, bool reuse) {
     }
     Eigen::MatrixXd core = U.transpose() * modalW_;
     for (Eigen::Index j = 0; j < d.size(); ++j) {
-      if (d(j) != 0.0) core(j, j) += 1.0 / d(j);
-      else core(j, j) += 1e300;  // a mode without damping drops out
+      if (d(j) != 0.0)
+        core(j, j) += 1.0 / d(j);
+      else
+        core(j, j) += 1e300;  // a mode without damping drops out
     }
     modalS_ = core.inverse();
   }

@@ -44,7 +44,8 @@ class LinearSystem {
   // symmetric and positive definite, with LU otherwise; each solver analyses the pattern once.
   std::unique_ptr<LinearSolver> primary_;
   std::unique_ptr<LinearSolver> general_;
-  std::unique_ptr<LinearSolver> definite_;  ///< LDL^T for symmetric definite matrices of a general system
+  std::unique_ptr<LinearSolver>
+      definite_;  ///< LDL^T for symmetric definite matrices of a general system
   LinearSolver* solver_ = nullptr;
   bool factored_ = false;
   AssemblyCoefficients lastCoefficients_;

@@ -1,7 +1,6 @@
 // SPDX-License-Identifier: MIT
 #include "tcl/analysis/LoadControl.h"
 
-
 namespace dabs::analysis {
 
 LoadControl::LoadControl(double dLambda, int Jd, double minLambda, double maxLambda)

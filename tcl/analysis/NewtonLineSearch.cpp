@@ -48,15 +48,9 @@ Status NewtonLineSearch::lineSearch(LinearSystem& system, Integrator& integrator
         // Linear interpolation of s between eta = 0 and the current eta.
         eta = eta * s0 / (s0 - s);
         break;
-      case Search::Secant:
-        eta = etaPrev - s * (etaPrev - etaLow) / (s - sLow);
-        break;
-      case Search::Bisection:
-        eta = 0.5 * (etaLow + etaHigh);
-        break;
-      case Search::RegulaFalsi:
-        eta = etaHigh - sHigh * (etaHigh - etaLow) / (sHigh - sLow);
-        break;
+      case Search::Secant: eta = etaPrev - s * (etaPrev - etaLow) / (s - sLow); break;
+      case Search::Bisection: eta = 0.5 * (etaLow + etaHigh); break;
+      case Search::RegulaFalsi: eta = etaHigh - sHigh * (etaHigh - etaLow) / (sHigh - sLow); break;
     }
     if (!std::isfinite(eta)) eta = 1.0;
     eta = std::min(eta, maxEta_);

@@ -15,7 +15,8 @@ class NewtonLineSearch final : public SolutionAlgorithm {
   enum class Search { InitialInterpolated, Bisection, Secant, RegulaFalsi };
   NewtonLineSearch(Search search, double tol, int maxIter, double minEta, double maxEta)
       : search_(search), tol_(tol), maxIter_(maxIter), minEta_(minEta), maxEta_(maxEta) {}
-  Status solveCurrentStep(LinearSystem& system, Integrator& integrator, ConvergenceTest* test) override;
+  Status solveCurrentStep(LinearSystem& system, Integrator& integrator,
+                          ConvergenceTest* test) override;
 
  private:
   Status lineSearch(LinearSystem& system, Integrator& integrator, const AssemblyCoefficients& c,

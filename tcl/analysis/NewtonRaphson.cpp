@@ -12,7 +12,8 @@ Status NewtonRaphson::solveCurrentStep(LinearSystem& system, Integrator& integra
   test->start();
   for (;;) {
     StiffnessKind kind = StiffnessKind::Current;
-    if (tangent_ == Tangent::Initial || (tangent_ == Tangent::InitialThenCurrent && iterations_ == 0))
+    if (tangent_ == Tangent::Initial ||
+        (tangent_ == Tangent::InitialThenCurrent && iterations_ == 0))
       kind = StiffnessKind::Initial;
     const AssemblyCoefficients c = integrator.coefficients(kind);
     if (!modified_ || iterations_ == 0) {

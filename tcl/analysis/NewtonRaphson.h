@@ -12,7 +12,8 @@ class NewtonRaphson final : public SolutionAlgorithm {
  public:
   enum class Tangent { Current, Initial, InitialThenCurrent };
   NewtonRaphson(Tangent tangent, bool modified) : tangent_(tangent), modified_(modified) {}
-  Status solveCurrentStep(LinearSystem& system, Integrator& integrator, ConvergenceTest* test) override;
+  Status solveCurrentStep(LinearSystem& system, Integrator& integrator,
+                          ConvergenceTest* test) override;
 
  private:
   Tangent tangent_;

@@ -24,7 +24,8 @@ void SparseLdlt::analyze(const Eigen::SparseMatrix<double>& A) {
   std::vector<int> count(n + 1, 0);
   for (int j = 0; j < n_; ++j)
     for (Eigen::SparseMatrix<double>::InnerIterator it(A, j); it; ++it) {
-      const int pi = perm_[static_cast<std::size_t>(it.row())], pj = perm_[static_cast<std::size_t>(j)];
+      const int pi = perm_[static_cast<std::size_t>(it.row())],
+                pj = perm_[static_cast<std::size_t>(j)];
       if (pi <= pj) ++count[static_cast<std::size_t>(pj) + 1];
     }
   cp_.assign(n + 1, 0);
@@ -35,7 +36,8 @@ void SparseLdlt::analyze(const Eigen::SparseMatrix<double>& A) {
   std::vector<int> next(cp_.begin(), cp_.end() - 1);
   for (int j = 0; j < n_; ++j)
     for (Eigen::SparseMatrix<double>::InnerIterator it(A, j); it; ++it) {
-      const int pi = perm_[static_cast<std::size_t>(it.row())], pj = perm_[static_cast<std::size_t>(j)];
+      const int pi = perm_[static_cast<std::size_t>(it.row())],
+                pj = perm_[static_cast<std::size_t>(j)];
       if (pi > pj) continue;
       const int place = next[static_cast<std::size_t>(pj)]++;
       ci_[static_cast<std::size_t>(place)] = pi;
@@ -86,9 +88,11 @@ void SparseLdlt::analyze(const Eigen::SparseMatrix<double>& A) {
         stack[static_cast<std::size_t>(len++)] = i;
         flag_[static_cast<std::size_t>(i)] = k;
       }
-      while (len > 0) stack[static_cast<std::size_t>(--top)] = stack[static_cast<std::size_t>(--len)];
+      while (len > 0)
+        stack[static_cast<std::size_t>(--top)] = stack[static_cast<std::size_t>(--len)];
     }
-    for (; top < n_; ++top) rowPattern_[static_cast<std::size_t>(filled++)] = stack[static_cast<std::size_t>(top)];
+    for (; top < n_; ++top)
+      rowPattern_[static_cast<std::size_t>(filled++)] = stack[static_cast<std::size_t>(top)];
     rowStart_[uk + 1] = filled;
   }
 }
@@ -105,7 +109,8 @@ Status SparseLdlt::factorize(const Eigen::SparseMatrix<double>& A) {
   for (int k = 0; k < n_; ++k) {
     const auto uk = static_cast<std::size_t>(k);
     for (int p = cp_[uk]; p < cp_[uk + 1]; ++p)
-      y_[static_cast<std::size_t>(ci_[static_cast<std::size_t>(p)])] += cx_[static_cast<std::size_t>(p)];
+      y_[static_cast<std::size_t>(ci_[static_cast<std::size_t>(p)])] +=
+          cx_[static_cast<std::size_t>(p)];
     double dk = y_[uk];
     y_[uk] = 0.0;
     for (int r = rowStart_[uk]; r < rowStart_[uk + 1]; ++r) {
@@ -114,7 +119,8 @@ Status SparseLdlt::factorize(const Eigen::SparseMatrix<double>& A) {
       y_[ui] = 0.0;
       const int end = lp_[ui] + lnz_[ui];
       for (int p = lp_[ui]; p < end; ++p)
-        y_[static_cast<std::size_t>(li_[static_cast<std::size_t>(p)])] -= lx_[static_cast<std::size_t>(p)] * yi;
+        y_[static_cast<std::size_t>(li_[static_cast<std::size_t>(p)])] -=
+            lx_[static_cast<std::size_t>(p)] * yi;
       const double lki = yi / d_(static_cast<Eigen::Index>(ui));
       dk -= lki * yi;
       li_[static_cast<std::size_t>(end)] = k;

@@ -36,12 +36,12 @@ class SparseLdlt {
 
  private:
   int n_ = 0;
-  std::vector<int> perm_;        ///< new index of old row i
-  std::vector<int> valueTo_;     ///< place of A's value k in the permuted upper triangle, or -1
-  std::vector<int> cp_, ci_;     ///< permuted upper triangle, compressed columns
+  std::vector<int> perm_;     ///< new index of old row i
+  std::vector<int> valueTo_;  ///< place of A's value k in the permuted upper triangle, or -1
+  std::vector<int> cp_, ci_;  ///< permuted upper triangle, compressed columns
   std::vector<double> cx_;
-  std::vector<int> parent_;      ///< elimination tree
-  std::vector<int> lp_, li_;     ///< L, compressed columns (strictly lower part)
+  std::vector<int> parent_;   ///< elimination tree
+  std::vector<int> lp_, li_;  ///< L, compressed columns (strictly lower part)
   std::vector<double> lx_;
   Eigen::VectorXd d_;
   std::vector<int> rowStart_, rowPattern_;  ///< pattern of each row of L, in update order

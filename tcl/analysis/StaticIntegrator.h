@@ -7,7 +7,8 @@ namespace dabs::analysis {
 
 /// What load and displacement control share: static coefficients (K only), the committed
 /// displacement to revert to, and the step size adapted to the iterations of the last step,
-/// step *= Jd / iterations, kept within [min, max] (OpenSees LoadControl/DisplacementControl::newStep).
+/// step *= Jd / iterations, kept within [min, max] (OpenSees
+/// LoadControl/DisplacementControl::newStep).
 class StaticIntegrator : public Integrator {
  public:
   explicit StaticIntegrator(int Jd) : Jd_(Jd), iterationsLastStep_(Jd) {}

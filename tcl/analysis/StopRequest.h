@@ -12,8 +12,9 @@ namespace dabs::analysis {
 /// with status 128 + signal. A second signal, or one outside a step loop, ends the program at once:
 /// recorders have already handed every committed step to the operating system.
 struct StopRequest {
-  static volatile std::sig_atomic_t signal;           ///< the signal received, 0 when none
-  static volatile std::sig_atomic_t stepLoopRunning;  ///< 1 while AnalysisBuilder::analyze runs steps
+  static volatile std::sig_atomic_t signal;  ///< the signal received, 0 when none
+  static volatile std::sig_atomic_t
+      stepLoopRunning;  ///< 1 while AnalysisBuilder::analyze runs steps
 };
 
 }  // namespace dabs::analysis

@@ -65,16 +65,23 @@ void eigenCmd(Runtime& rt, ArgReader& a) {
     std::string o = options[i];
     if (o.size() > 1 && o[0] == '-') o.erase(0, 1);
     if (o.size() > 5 && o.ends_with("Eigen")) o.resize(o.size() - 5);
-    if (o == "fullGenLapack") dense = true;
-    else if (o == "findLargest") largest = true;
-    else if (o == "standard") standard = true;
-    else if (o == "frequency" || o == "generalized" || o == "genBandArpack" || o == "symmBandLapack") continue;
-    else warn("eigen - unknown option specified " + options[i] + "\n");
+    if (o == "fullGenLapack")
+      dense = true;
+    else if (o == "findLargest")
+      largest = true;
+    else if (o == "standard")
+      standard = true;
+    else if (o == "frequency" || o == "generalized" || o == "genBandArpack" ||
+             o == "symmBandLapack")
+      continue;
+    else
+      warn("eigen - unknown option specified " + options[i] + "\n");
   }
   int n = 0;
   if (Tcl_GetInt(nullptr, options.back().c_str(), &n) != TCL_OK)
     a.fail(a.lastPosition(), "numModes", "expected an integer, got \"" + options.back() + "\"");
-  if (n < 1) a.fail(a.lastPosition(), "numModes", "must be at least 1, got \"" + options.back() + "\"");
+  if (n < 1)
+    a.fail(a.lastPosition(), "numModes", "must be at least 1, got \"" + options.back() + "\"");
   if (standard) {
     // OpenSees' eigen solvers other than the banded one (which dabs does not have) solve only the
     // generalized problem: the step fails with a warning and the result is empty.
@@ -82,7 +89,8 @@ void eigenCmd(Runtime& rt, ArgReader& a) {
     return;
   }
   if (rt.analysis->kind() == AnalysisBuilder::Kind::None) {
-    if (!rt.analysis->constraintsGiven()) rt.analysis->setConstraints(analysis::ConstraintKind::Transformation);
+    if (!rt.analysis->constraintsGiven())
+      rt.analysis->setConstraints(analysis::ConstraintKind::Transformation);
     rt.analysis->setAnalysis(AnalysisBuilder::Kind::Transient);
   }
   const auto result = rt.analysis->eigen(n, dense, largest);
@@ -142,25 +150,34 @@ void threadsCmd(Runtime& rt, ArgReader& a) {
 void analysisStatisticsCmd(Runtime& rt, ArgReader& a) {
   a.finish();
   const auto& s = rt.analysis->statistics();
-  const std::string text = "steps " + std::to_string(s.steps) + " failedSteps " + std::to_string(s.failedSteps) +
-                           " subSteppedSteps " + std::to_string(s.subSteppedSteps) + " iterations " +
-                           std::to_string(s.iterations) + " factorizations " + std::to_string(s.factorizations) +
-                           " equations " + std::to_string(s.equations) + " elementUpdates " +
-                           std::to_string(s.elementUpdates) + " materialUpdates " +
-                           std::to_string(s.materialUpdates) + " failedBearings " +
-                           std::to_string(s.failedBearings);
+  const std::string text =
+      "steps " + std::to_string(s.steps) + " failedSteps " + std::to_string(s.failedSteps) +
+      " subSteppedSteps " + std::to_string(s.subSteppedSteps) + " iterations " +
+      std::to_string(s.iterations) + " factorizations " + std::to_string(s.factorizations) +
+      " equations " + std::to_string(s.equations) + " elementUpdates " +
+      std::to_string(s.elementUpdates) + " materialUpdates " + std::to_string(s.materialUpdates) +
+      " failedBearings " + std::to_string(s.failedBearings);
   setResult(rt, text);
 }
 
 constexpr CommandEntry kCommands[] = {
     {"analysisStatistics", "analysisStatistics", analysisStatisticsCmd},
     {"threads", "threads ?n?", threadsCmd},
-    {"constraints", "constraints Plain|Transformation|Penalty ?alphaSP alphaMP?", strategy::constraintsCommand},
+    {"constraints", "constraints Plain|Transformation|Penalty ?alphaSP alphaMP?",
+     strategy::constraintsCommand},
     {"numberer", "numberer Plain|RCM", strategy::numbererCommand},
-    {"system", "system BandGeneral|BandSPD|ProfileSPD|SparseGeneral|UmfPack|FullGeneral|SparseSYM|Mumps", strategy::systemCommand},
-    {"test", "test NormDispIncr|NormUnbalance|EnergyIncr tol maxIter ?pFlag? ?nType?", strategy::testCommand},
-    {"algorithm", "algorithm Linear|Newton|ModifiedNewton|NewtonLineSearch|KrylovNewton ?options?", strategy::algorithmCommand},
-    {"integrator", "integrator LoadControl|DisplacementControl|ArcLength|HSConstraint|Newmark|HHT|GeneralizedAlpha|TRBDF2|CentralDifference args...", strategy::integratorCommand},
+    {"system",
+     "system BandGeneral|BandSPD|ProfileSPD|SparseGeneral|UmfPack|FullGeneral|SparseSYM|Mumps",
+     strategy::systemCommand},
+    {"test", "test NormDispIncr|NormUnbalance|EnergyIncr tol maxIter ?pFlag? ?nType?",
+     strategy::testCommand},
+    {"algorithm", "algorithm Linear|Newton|ModifiedNewton|NewtonLineSearch|KrylovNewton ?options?",
+     strategy::algorithmCommand},
+    {"integrator",
+     "integrator "
+     "LoadControl|DisplacementControl|ArcLength|HSConstraint|Newmark|HHT|GeneralizedAlpha|TRBDF2|"
+     "CentralDifference args...",
+     strategy::integratorCommand},
     {"analysis", "analysis Static|Transient ?-numSubLevels n? ?-numSubSteps m?", analysisCmd},
     {"analyze", "analyze numIncr ?dt?", analyzeCmd},
     {"eigen", "eigen ?-fullGenLapack? ?-findLargest? numModes", eigenCmd},

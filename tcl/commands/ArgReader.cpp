@@ -21,7 +21,8 @@ bool parseReal(Tcl_Obj* obj, double& value) {
 bool parseInteger(Tcl_Obj* obj, int& value) {
   Tcl_WideInt wide = 0;
   if (Tcl_GetWideIntFromObj(nullptr, obj, &wide) != TCL_OK) return false;
-  if (wide < std::numeric_limits<int>::min() || wide > std::numeric_limits<int>::max()) return false;
+  if (wide < std::numeric_limits<int>::min() || wide > std::numeric_limits<int>::max())
+    return false;
   value = static_cast<int>(wide);
   return true;
 }
@@ -60,7 +61,8 @@ bool isOptionWord(std::string_view token) noexcept {
 }
 
 ArgReader::ArgReader(int objc, Tcl_Obj* const objv[], std::string usage, int first)
-    : tokens_(objv, objv + objc), used_(static_cast<std::size_t>(objc), false),
+    : tokens_(objv, objv + objc),
+      used_(static_cast<std::size_t>(objc), false),
       usage_(std::move(usage)) {
   for (int i = 0; i < first && i < objc; ++i) used_[static_cast<std::size_t>(i)] = true;
   std::string ctx;
@@ -128,7 +130,8 @@ void ArgReader::failArgument(std::string_view name, std::string_view what) const
        std::string(what) + ", got \"" + std::string(text(read->second)) + "\"");
 }
 
-void ArgReader::failArgument(std::string_view name, std::size_t index, std::string_view what) const {
+void ArgReader::failArgument(std::string_view name, std::size_t index,
+                             std::string_view what) const {
   const auto* read = readUnder(name);
   if (read == nullptr || read->second + index >= tokens_.size())
     fail(std::string(name) + " " + std::string(what));
@@ -218,8 +221,9 @@ std::vector<int> ArgReader::integers(std::string_view name, std::size_t atLeast)
     out.push_back(value);
   }
   if (out.size() < atLeast) {
-    expected(nextUnread(), name,
-             "expected at least " + std::to_string(atLeast) + " integer" + (atLeast > 1 ? "s" : ""));
+    expected(
+        nextUnread(), name,
+        "expected at least " + std::to_string(atLeast) + " integer" + (atLeast > 1 ? "s" : ""));
   }
   return out;
 }
@@ -330,7 +334,8 @@ std::optional<std::vector<double>> ArgReader::optionRealList(std::string_view ke
   record(key, i + 1);
   std::vector<double> out;
   double value = 0.0;
-  for (std::size_t j = i + 1; j < tokens_.size() && !used_[j] && parseReal(tokens_[j], value); ++j) {
+  for (std::size_t j = i + 1; j < tokens_.size() && !used_[j] && parseReal(tokens_[j], value);
+       ++j) {
     used_[j] = true;
     out.push_back(value);
   }
@@ -363,8 +368,9 @@ std::optional<std::pair<int, int>> ArgReader::optionTagRange(std::string_view ke
   for (std::size_t k = 0; k < 2; ++k) {
     const std::size_t j = i + 1 + k;
     if (j >= tokens_.size() || used_[j] || !parseInteger(tokens_[j], ends[k]))
-      expected(j, key, integerExpectation(j < tokens_.size() ? tokens_[j] : nullptr) + " (" +
-                           std::string(k == 0 ? "first" : "last") + " tag of " + std::string(key) + ")");
+      expected(j, key,
+               integerExpectation(j < tokens_.size() ? tokens_[j] : nullptr) + " (" +
+                   std::string(k == 0 ? "first" : "last") + " tag of " + std::string(key) + ")");
     used_[j] = true;
   }
   if (ends[0] > ends[1])

@@ -36,7 +36,8 @@ class ArgReader {
   /// `objv[0]` is the command word; reading starts at `objv[first]`.
   ArgReader(int objc, Tcl_Obj* const objv[], std::string usage, int first = 1);
 
-  /// Sets the prefix of error messages, e.g. "uniaxialMaterial Steel02 7", once type and tag are read.
+  /// Sets the prefix of error messages, e.g. "uniaxialMaterial Steel02 7", once type and tag are
+  /// read.
   void setContext(std::string context) { context_ = std::move(context); }
   /// Replaces the usage line shown in error messages (after a type word selected a sub-command).
   void setUsage(std::string usage) { usage_ = std::move(usage); }
@@ -107,7 +108,8 @@ class ArgReader {
   /// "token""), or about the command as a whole ("name what") when none was read under it.
   [[noreturn]] void failArgument(std::string_view name, std::string_view what) const;
   /// Throws an ArgError about the `index`-th value (from 0) of the list read under `name`.
-  [[noreturn]] void failArgument(std::string_view name, std::size_t index, std::string_view what) const;
+  [[noreturn]] void failArgument(std::string_view name, std::size_t index,
+                                 std::string_view what) const;
   /// Throws an ArgError for a validation error: "argument N: <field reason>, got "token"" at the
   /// argument read under its field, or "<field reason>" about the command as a whole when the
   /// field is empty or was not read. The command table reports every escaping InputError so.

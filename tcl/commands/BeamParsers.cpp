@@ -118,8 +118,8 @@ void geomTransfCommand(Runtime& rt, ArgReader& args) {
   const auto found = std::find_if(kTransfTypes.begin(), kTransfTypes.end(),
                                   [&](const TransfType& t) { return t.name == type; });
   if (found == kTransfTypes.end())
-    args.fail(args.lastPosition(), "type", "unknown transformation \"" + type +
-                                               "\" (expected Linear, PDelta or Corotational)");
+    args.fail(args.lastPosition(), "type",
+              "unknown transformation \"" + type + "\" (expected Linear, PDelta or Corotational)");
   args.setContext("geomTransf " + type);
   const int tag = readNewTag(args, rt.builder.transforms, "geomTransf");
   if (ndm != 2 && ndm != 3) args.fail("needs a 2D or 3D model (model basic -ndm 2|3)");
@@ -177,7 +177,7 @@ std::unique_ptr<elements::Element> parseElasticBeam(Runtime& rt, ArgReader& args
     const int transfTag = args.integer("transfTag");
     p.massPerLength = args.option("-mass", 0.0);
     p.consistentMass = args.flag("-cMass");
-  if (args.flag("-lMass")) p.consistentMass = false;  // lumped, the default
+    if (args.flag("-lMass")) p.consistentMass = false;  // lumped, the default
     args.finish();
     p.validate();
     return std::make_unique<elements::ElasticBeam3d>(tag, iNode, jNode, p,
@@ -218,7 +218,8 @@ std::unique_ptr<elements::BeamIntegration> inlineIntegration(Runtime& rt, ArgRea
   } else {
     words.push_back(first);
     const std::size_t more = first == "HingeRadau" ? 5 : 2;
-    for (std::size_t k = 0; k < more && args.hasPositional(); ++k) words.push_back(args.word("integration"));
+    for (std::size_t k = 0; k < more && args.hasPositional(); ++k)
+      words.push_back(args.word("integration"));
   }
   const std::string& type = words[0];
   auto number = [&](std::size_t k, const char* name) {
@@ -238,7 +239,8 @@ std::unique_ptr<elements::BeamIntegration> inlineIntegration(Runtime& rt, ArgRea
     return v;
   };
   if (type == "HingeRadau") {
-    if (words.size() != 6) args.fail(args.lastPosition(), "integration", "HingeRadau needs secI lpI secJ lpJ secE");
+    if (words.size() != 6)
+      args.fail(args.lastPosition(), "integration", "HingeRadau needs secI lpI secJ lpJ secE");
     const int secI = integer(1, "secI"), secJ = integer(3, "secJ"), secE = integer(5, "secE");
     for (int sec : {secI, secJ, secE}) (void)rt.builder.section(sec);
     return std::make_unique<elements::HingeRadauIntegration>(0, secI, number(2, "lpI"), secJ,
@@ -246,9 +248,9 @@ std::unique_ptr<elements::BeamIntegration> inlineIntegration(Runtime& rt, ArgRea
   }
   const std::optional<Rule> r = quadratureRule(type);
   if (!r)
-    args.fail(args.lastPosition(), "integration",
-              std::string("expected ") + kQuadratureRuleNames + " or HingeRadau, got \"" + type +
-                  "\"");
+    args.fail(
+        args.lastPosition(), "integration",
+        std::string("expected ") + kQuadratureRuleNames + " or HingeRadau, got \"" + type + "\"");
   if (words.size() != 3) args.fail(args.lastPosition(), "integration", type + " needs secTag N");
   const int sec = integer(1, "secTag");
   (void)rt.builder.section(sec);
@@ -276,12 +278,14 @@ std::unique_ptr<elements::Element> parseSectionBeam(Runtime& rt, ArgReader& args
   if (auto it = args.optionReals("-iter", 2)) {
     // maxIter is checked as a real before the cast, so 1e308 cannot overflow an int.
     if (!((*it)[0] >= 1.0 && (*it)[0] <= kMaxElementIterations && (*it)[0] == std::floor((*it)[0])))
-      throw InputError("-iter maxIter", "must be an integer from 1 to " + std::to_string(kMaxElementIterations));
+      throw InputError("-iter maxIter",
+                       "must be an integer from 1 to " + std::to_string(kMaxElementIterations));
     maxIter = static_cast<int>((*it)[0]);
     tol = (*it)[1];
     if (tol < kMinElementTolerance)
-      throw InputError("-iter tol", "must be at least 1e-15: the element's work is compared relative to its "
-                                    "size, and round-off of doubles (about 1e-16) decides below that");
+      throw InputError("-iter tol",
+                       "must be at least 1e-15: the element's work is compared relative to its "
+                       "size, and round-off of doubles (about 1e-16) decides below that");
   }
   const double mass = args.option("-mass", 0.0);
   const bool consistentMass = args.flag("-cMass");
@@ -322,18 +326,16 @@ std::unique_ptr<elements::Element> parseSectionBeam(Runtime& rt, ArgReader& args
       return withMass(std::make_unique<elements::ForceBeamColumn3d>(
           tag, iNode, jNode, std::move(pts), std::move(t), mass, maxIter, tol));
     else
-      return withMass(std::make_unique<elements::DispBeamColumn3d>(tag, iNode, jNode,
-                                                                   std::move(pts), std::move(t),
-                                                                   mass));
+      return withMass(std::make_unique<elements::DispBeamColumn3d>(
+          tag, iNode, jNode, std::move(pts), std::move(t), mass));
   }
   auto t = transformFor<CrdTransf2d>(rt, transfTag);
   if constexpr (Force)
     return withMass(std::make_unique<elements::ForceBeamColumn2d>(
         tag, iNode, jNode, std::move(pts), std::move(t), mass, maxIter, tol));
   else
-    return withMass(std::make_unique<elements::DispBeamColumn2d>(tag, iNode, jNode,
-                                                                 std::move(pts), std::move(t),
-                                                                 mass));
+    return withMass(std::make_unique<elements::DispBeamColumn2d>(tag, iNode, jNode, std::move(pts),
+                                                                 std::move(t), mass));
 }
 
 constexpr const char* kZeroLengthSectionUsage =
@@ -355,8 +357,8 @@ std::unique_ptr<elements::Element> parseZeroLengthSection(Runtime& rt, ArgReader
   if (ndm != 2 && ndm != 3) args.fail("needs a 2D or 3D model (model basic -ndm 2|3)");
   auto section = rt.builder.section(secTag).clone();
   if (ndm == 3)
-    return std::make_unique<elements::ZeroLengthSection3d>(tag, iNode, jNode, std::move(section),
-                                                           x, yp);
+    return std::make_unique<elements::ZeroLengthSection3d>(tag, iNode, jNode, std::move(section), x,
+                                                           yp);
   return std::make_unique<elements::ZeroLengthSection2d>(tag, iNode, jNode, std::move(section), x,
                                                          yp);
 }
@@ -386,11 +388,12 @@ constexpr std::array kBeamElements{
                  "element nonlinearBeamColumn tag iNode jNode nIP secTag transfTag ?-iter maxIter "
                  "tol? ?-mass m? ?-cMass|-lMass?",
                  parseSectionBeam<true>},
-    ElementEntry{"dispBeamColumn",
-                 "element dispBeamColumn tag iNode jNode transfTag integrationTag|\"Type secTag N\" "
-                 "?-mass m? ?-cMass|-lMass? | tag iNode jNode nIP secTag transfTag ?-mass m? "
-                 "?-cMass|-lMass? ?-integration Legendre|Lobatto|Radau|NewtonCotes?",
-                 parseSectionBeam<false>},
+    ElementEntry{
+        "dispBeamColumn",
+        "element dispBeamColumn tag iNode jNode transfTag integrationTag|\"Type secTag N\" "
+        "?-mass m? ?-cMass|-lMass? | tag iNode jNode nIP secTag transfTag ?-mass m? "
+        "?-cMass|-lMass? ?-integration Legendre|Lobatto|Radau|NewtonCotes?",
+        parseSectionBeam<false>},
 };
 
 }  // namespace

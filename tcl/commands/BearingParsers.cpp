@@ -19,7 +19,8 @@ constexpr const char* kYoshidaUsage =
     "biaxialMaterial Yoshida tag Y0 U0 n alpha0 beta q gamma ?-maxwell k eta? ?-subIncrement s?";
 constexpr const char* kBearingUsage =
     "element yoshidaBearing tag iNode jNode matTag -Tr Tr -Kv Kv ?-Kt Kt? ?-Kr Kr ?Krz?? "
-    "?-orient x1 x2 x3 y1 y2 y3? ?-mass m? ?-limits design failure? ?-afterFailure keep|release|stop?";
+    "?-orient x1 x2 x3 y1 y2 y3? ?-mass m? ?-limits design failure? ?-afterFailure "
+    "keep|release|stop?";
 
 // biaxialMaterial Yoshida tag Y0 U0 n alpha0 beta q gamma ?-maxwell k eta? ?-subIncrement s?
 // (s: largest backward-Euler sub-step of the hysteretic part, as a fraction of U0; default 0.02)
@@ -58,10 +59,12 @@ void biaxialMaterialCommand(Runtime& rt, ArgReader& args) {
 }
 
 // element yoshidaBearing tag iNode jNode matTag -Tr Tr -Kv Kv ?-Kt Kt? ?-Kr Kr ?Krz??
-//   ?-orient x1 x2 x3 y1 y2 y3? ?-mass m? ?-limits design failure? ?-afterFailure keep|release|stop?
+//   ?-orient x1 x2 x3 y1 y2 y3? ?-mass m? ?-limits design failure? ?-afterFailure
+//   keep|release|stop?
 std::unique_ptr<elements::Element> parseYoshidaBearing(Runtime& rt, ArgReader& args, int tag) {
   using elements::YoshidaBearing3d;
-  if (rt.builder.ndm != 3) args.fail("needs a 3D model with 6 dofs per node (model basic -ndm 3 -ndf 6)");
+  if (rt.builder.ndm != 3)
+    args.fail("needs a 3D model with 6 dofs per node (model basic -ndm 3 -ndf 6)");
   const int iNode = args.integer("iNode");
   const int jNode = args.integer("jNode");
   const int matTag = args.integer("matTag");
@@ -73,7 +76,8 @@ std::unique_ptr<elements::Element> parseYoshidaBearing(Runtime& rt, ArgReader& a
   // of bearings under a girder end resists roll far more than the end's bending rotation).
   if (auto kr = args.optionRealList("-Kr")) {
     if (kr->size() > 2)
-      args.failArgument("-Kr", 2, "is a third value: -Kr takes one value (both axes) or two (local y, local z)");
+      args.failArgument(
+          "-Kr", 2, "is a third value: -Kr takes one value (both axes) or two (local y, local z)");
     p.Kry = kr->front();
     p.Krz = kr->back();
   }

@@ -84,23 +84,31 @@ int registerCommands(Tcl_Interp* interp) {
   Tcl_CallWhenDeleted(interp, deleteRuntime, rt);
   Tcl_CreateExitHandler(flushAtExit, rt);
   const std::span<const CommandEntry> families[] = {
-      modelCommands(),        loadCommands(),    analysisCommands(), queryCommands(),
-      recorderCommands(),     materialTestCommands(), sectionCommands(), beamCommands(), bearingCommands(),
+      modelCommands(),
+      loadCommands(),
+      analysisCommands(),
+      queryCommands(),
+      recorderCommands(),
+      materialTestCommands(),
+      sectionCommands(),
+      beamCommands(),
+      bearingCommands(),
       contactCommands(),
       dabs::parallel::parallelCommands(),  // getPID, getNP, send, recv, barrier, Bcast, ensemble
   };
   // Keep Tcl's `load` reachable before ours takes its name.
   if (Tcl_FindCommand(interp, "::load", nullptr, TCL_GLOBAL_ONLY) != nullptr &&
       Tcl_FindCommand(interp, kTclLoad, nullptr, TCL_GLOBAL_ONLY) == nullptr &&
-      Tcl_Eval(interp, (std::string("namespace eval ::dabs {}; rename ::load ") + kTclLoad).c_str()) !=
+      Tcl_Eval(interp,
+               (std::string("namespace eval ::dabs {}; rename ::load ") + kTclLoad).c_str()) !=
           TCL_OK)
     return TCL_ERROR;
   for (const auto& family : families) {
     for (const CommandEntry& entry : family) {
       rt->bindings.push_back(std::make_unique<CommandBinding>(CommandBinding{rt, &entry}));
       Tcl_CreateObjCommand(interp, std::string(entry.name).c_str(),
-                           entry.name == "load" ? dispatchLoad : dispatch, rt->bindings.back().get(),
-                           nullptr);
+                           entry.name == "load" ? dispatchLoad : dispatch,
+                           rt->bindings.back().get(), nullptr);
     }
   }
   return TCL_OK;

@@ -55,7 +55,8 @@ std::unique_ptr<materials::UniaxialMaterial> parseRestrainer(Runtime& /*rt*/, Ar
       materials::GapSpring::restrainer(tag, readGapSpring(args)));
 }
 
-std::unique_ptr<materials::UniaxialMaterial> parseBumper(Runtime& /*rt*/, ArgReader& args, int tag) {
+std::unique_ptr<materials::UniaxialMaterial> parseBumper(Runtime& /*rt*/, ArgReader& args,
+                                                         int tag) {
   return std::make_unique<materials::GapSpring>(
       materials::GapSpring::bumper(tag, readGapSpring(args)));
 }
@@ -123,8 +124,10 @@ std::unique_ptr<elements::Element> makeContact(const Runtime& rt, int tag, int c
     for (int j = i + 1; j < 4; ++j)
       if (face[i] == face[j])
         throw InputError("face", "node " + std::to_string(face[i]) + " appears twice");
-  if (k.ndf() == 3) return std::make_unique<contact::NodeToSurfaceContact3d<3>>(tag, contactor, face, p);
-  if (k.ndf() == 6) return std::make_unique<contact::NodeToSurfaceContact3d<6>>(tag, contactor, face, p);
+  if (k.ndf() == 3)
+    return std::make_unique<contact::NodeToSurfaceContact3d<3>>(tag, contactor, face, p);
+  if (k.ndf() == 6)
+    return std::make_unique<contact::NodeToSurfaceContact3d<6>>(tag, contactor, face, p);
   throw InputError("ndf", "nodeToSurface works in -ndf 3 and -ndf 6 models, the nodes have " +
                               std::to_string(k.ndf()));
 }
@@ -205,8 +208,8 @@ void pounding(Runtime& rt, ArgReader& args) {
   }
   std::vector<std::unique_ptr<elements::Element>> built;
   for (std::size_t i = 0; i < pairs.size(); ++i)
-    built.push_back(makeContact(rt, tag + static_cast<int>(i), pairs[i].first,
-                                faces[pairs[i].second], p));
+    built.push_back(
+        makeContact(rt, tag + static_cast<int>(i), pairs[i].first, faces[pairs[i].second], p));
   std::vector<int> added;
   try {
     for (auto& e : built) {
@@ -249,12 +252,13 @@ void contactSteppingCmd(Runtime& rt, ArgReader& args) {
     if (cs) {
       char buf[160];
       std::snprintf(buf, sizeof buf, " maxStep %.17g lookAhead %.17g overshoot %.17g pairs %zu",
-                    cs->params().maxStep, cs->params().lookAhead, cs->params().overshoot, cs->pairs());
+                    cs->params().maxStep, cs->params().lookAhead, cs->params().overshoot,
+                    cs->pairs());
       text += buf;
     }
-    text += " contactSteps " + std::to_string(analysis.statistics().contactSteps) + " patternChanges " +
-            std::to_string(analysis.statistics().patternChanges) + " redoneSteps " +
-            std::to_string(analysis.statistics().redoneSteps);
+    text += " contactSteps " + std::to_string(analysis.statistics().contactSteps) +
+            " patternChanges " + std::to_string(analysis.statistics().patternChanges) +
+            " redoneSteps " + std::to_string(analysis.statistics().redoneSteps);
     setResult(rt, text);
     return;
   }
@@ -298,8 +302,10 @@ constexpr const char* kContactOptions =
 const std::string kNodeToSurfaceUsage =
     std::string("element nodeToSurface tag cNode a b c d ") + kContactOptions;
 const std::string kPoundingUsage =
-    std::string("pounding tag -side1 {contactor nodes} {a b c d} -side2 {contactor nodes} "
-                "{a b c d} ") + kContactOptions;
+    std::string(
+        "pounding tag -side1 {contactor nodes} {a b c d} -side2 {contactor nodes} "
+        "{a b c d} ") +
+    kContactOptions;
 
 }  // namespace
 

@@ -79,11 +79,14 @@ std::unique_ptr<elements::Element> parseTruss(Runtime& rt, ArgReader& a, int tag
 
 constexpr ElementEntry kParsers[] = {
     {"zeroLength",
-     "element zeroLength tag iNode jNode -mat m1 .. -dir d1 .. ?-orient x1 x2 x3 yp1 yp2 yp3? ?-doRayleigh 0|1?",
+     "element zeroLength tag iNode jNode -mat m1 .. -dir d1 .. ?-orient x1 x2 x3 yp1 yp2 yp3? "
+     "?-doRayleigh 0|1?",
      parseZeroLength},
-    {"truss", "element truss tag iNode jNode A matTag|secTag ?-rho rho? ?-cMass 0|1? ?-doRayleigh 0|1?",
+    {"truss",
+     "element truss tag iNode jNode A matTag|secTag ?-rho rho? ?-cMass 0|1? ?-doRayleigh 0|1?",
      parseTruss<false>},
-    {"Truss", "element Truss tag iNode jNode A matTag|secTag ?-rho rho? ?-cMass 0|1? ?-doRayleigh 0|1?",
+    {"Truss",
+     "element Truss tag iNode jNode A matTag|secTag ?-rho rho? ?-cMass 0|1? ?-doRayleigh 0|1?",
      parseTruss<false>},
     {"corotTruss",
      "element corotTruss tag iNode jNode A matTag|secTag ?-rho rho? ?-cMass 0|1? ?-doRayleigh 0|1?",

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
-// Load and time commands: timeSeries, pattern, load, eleLoad, sp, groundMotion, imposedMotion, loadConst,
-// setTime, getTime, remove, rayleigh, modalDamping.
+// Load and time commands: timeSeries, pattern, load, eleLoad, sp, groundMotion, imposedMotion,
+// loadConst, setTime, getTime, remove, rayleigh, modalDamping.
 #include <string>
 
 #include "materials/InputError.h"
@@ -56,17 +56,22 @@ void patternCmd(Runtime& rt, ArgReader& a) {
     const double vel0 = a.option("-vel0", 0.0);
     const double fact = a.option("-fact", 1.0);
     if (a.flag("-vel") || a.flag("-disp"))
-      a.fail("only -accel is supported for UniformExcitation (velocity and displacement records are integrated from it)");
+      a.fail(
+          "only -accel is supported for UniformExcitation (velocity and displacement records are "
+          "integrated from it)");
     if (!a.flag("-accel")) a.fail("needs -accel tsTag");
     auto series = seriesArgument(rt, a, "-accel");
     a.finish();
-    rt.domain.addPattern(std::make_unique<domain::UniformExcitation>(tag, dir - 1, std::move(series), fact, vel0));
+    rt.domain.addPattern(
+        std::make_unique<domain::UniformExcitation>(tag, dir - 1, std::move(series), fact, vel0));
     if (vel0 != 0.0) {
-      // Initial relative velocity of every node free in that direction (OpenSees UniformExcitation::setDomain).
+      // Initial relative velocity of every node free in that direction (OpenSees
+      // UniformExcitation::setDomain).
       for (auto& [ntag, n] : rt.domain.nodes()) {
         if (dir - 1 >= n.ndf()) continue;
         bool fixed = false;
-        for (const auto& sp : rt.domain.fixes()) fixed = fixed || (sp.node == ntag && sp.dof == dir - 1);
+        for (const auto& sp : rt.domain.fixes())
+          fixed = fixed || (sp.node == ntag && sp.dof == dir - 1);
         if (fixed) continue;
         n.vel(dir - 1) = vel0;
         n.committedVel(dir - 1) = vel0;
@@ -81,8 +86,9 @@ void patternCmd(Runtime& rt, ArgReader& a) {
     rt.currentPattern = tag;
     evalBody(rt, a, tag, body);
   } else {
-    a.fail(1, "type", "expected Plain, UniformExcitation or MultipleSupport (MultiSupport), got \"" +
-                          type + "\"");
+    a.fail(1, "type",
+           "expected Plain, UniformExcitation or MultipleSupport (MultiSupport), got \"" + type +
+               "\"");
   }
 }
 
@@ -110,7 +116,8 @@ void loadCmd(Runtime& rt, ArgReader& a) {
   const bool constant = a.flag("-const");
   domain::PlainPattern& p = currentPlain(rt, a);
   a.finish();
-  if (constant) a.fail("-const loads are not supported; put them in a pattern with a Constant series");
+  if (constant)
+    a.fail("-const loads are not supported; put them in a pattern with a Constant series");
   p.loads.push_back(std::move(load));
 }
 
@@ -127,7 +134,8 @@ void eleLoadCmd(Runtime& rt, ArgReader& a) {
                       : "eleLoad -ele tags.. | -range first last -type -beamUniform Wy ?Wx? "
                         "?aOverL bOverL? ?WyB WxB? | -beamPoint Py xL ?Px?");
   std::vector<int> tags;
-  while (auto list = a.optionIntegerList("-ele")) tags.insert(tags.end(), list->begin(), list->end());
+  while (auto list = a.optionIntegerList("-ele"))
+    tags.insert(tags.end(), list->begin(), list->end());
   while (auto range = a.optionTagRange("-range"))
     for (int t = range->first; t <= range->second; ++t) tags.push_back(t);
   if (tags.empty()) a.fail("needs the loaded elements: -ele tags.. or -range first last");
@@ -146,8 +154,7 @@ void eleLoadCmd(Runtime& rt, ArgReader& a) {
   if (type == "beamUniform") {
     load.type = elements::BeamLoad::Type::Uniform;
     const std::size_t transverse = ndm == 3 ? 2 : 1;  // Wy (Wz)
-    if (n < transverse)
-      a.fail(ndm == 3 ? "-beamUniform needs Wy Wz" : "-beamUniform needs Wy");
+    if (n < transverse) a.fail(ndm == 3 ? "-beamUniform needs Wy Wz" : "-beamUniform needs Wy");
     // After aOverL bOverL OpenSees reads the intensities at bOverL, each defaulting to its value
     // at aOverL: 2D Wy Wx, 3D Wy Wz Wx.
     const std::size_t atEnd = transverse + 3;
@@ -162,8 +169,8 @@ void eleLoadCmd(Runtime& rt, ArgReader& a) {
       if (end != load.w) load.wEnd = end;
     }
     if (!(load.a >= 0.0 && load.a < load.b && load.b <= 1.0))
-      a.fail("-beamUniform needs 0 <= aOverL < bOverL <= 1, got " + std::to_string(load.a) + " and " +
-             std::to_string(load.b));
+      a.fail("-beamUniform needs 0 <= aOverL < bOverL <= 1, got " + std::to_string(load.a) +
+             " and " + std::to_string(load.b));
   } else if (type == "beamPoint") {
     load.type = elements::BeamLoad::Type::Point;
     const std::size_t transverse = ndm == 3 ? 2 : 1;  // Py (Pz)
@@ -198,7 +205,8 @@ void spCmd(Runtime& rt, ArgReader& a) {
   a.finish();
   for (const auto& fix : rt.domain.fixes())
     if (fix.node == node && fix.dof == dof - 1)
-      a.fail("node " + std::to_string(node) + " dof " + std::to_string(dof) + " is fixed; an sp cannot also prescribe it");
+      a.fail("node " + std::to_string(node) + " dof " + std::to_string(dof) +
+             " is fixed; an sp cannot also prescribe it");
   p.prescribed.push_back({node, dof - 1, value, constant});
   rt.domain.touch();
 }
@@ -207,7 +215,8 @@ void groundMotionCmd(Runtime& rt, ArgReader& a) {
   domain::MultipleSupportPattern& p = currentMultiple(rt, a);
   const int tag = a.integer("tag");
   a.setContext("groundMotion " + std::to_string(tag));
-  if (p.groundMotions.count(tag) != 0) a.fail(1, "tag", "groundMotion " + std::to_string(tag) + " already exists");
+  if (p.groundMotions.count(tag) != 0)
+    a.fail(1, "tag", "groundMotion " + std::to_string(tag) + " already exists");
   const std::string type = a.word("type");
   if (type != "Plain") a.fail(2, "type", "expected Plain, got \"" + type + "\"");
   std::shared_ptr<const domain::TimeSeries> accel, vel, disp;
@@ -228,12 +237,14 @@ void imposedMotionCmd(Runtime& rt, ArgReader& a) {
   a.finish();
   const domain::Node& n = rt.domain.node(node);
   if (dof < 1 || dof > n.ndf()) a.fail(2, "dof", "must be 1.." + std::to_string(n.ndf()));
-  if (p.groundMotions.count(gm) == 0) a.fail(3, "gmTag", "groundMotion " + std::to_string(gm) + " does not exist");
+  if (p.groundMotions.count(gm) == 0)
+    a.fail(3, "gmTag", "groundMotion " + std::to_string(gm) + " does not exist");
   // A fixed support dof follows the motion while the pattern exists, as under OpenSees'
   // Transformation handler (its Plain handler ignores the motion, its Penalty handler averages the
   // two constraints); removing the pattern fixes the dof again.
   bool fixed = false;
-  for (const auto& fix : rt.domain.fixes()) fixed = fixed || (fix.node == node && fix.dof == dof - 1);
+  for (const auto& fix : rt.domain.fixes())
+    fixed = fixed || (fix.node == node && fix.dof == dof - 1);
   if (fixed) rt.domain.removeFix(node, dof - 1);
   p.imposed.push_back({node, dof - 1, gm, fixed});
   rt.domain.touch();
@@ -255,7 +266,8 @@ void setTimeCmd(Runtime& rt, ArgReader& a) {
 }
 
 // getTime ?format?: OpenSees returns the time formatted with "%f" (6 decimals), so loops such as
-// `while {[getTime] < $tEnd}` stop where their author expects despite round-off in the sum of steps.
+// `while {[getTime] < $tEnd}` stop where their author expects despite round-off in the sum of
+// steps.
 void getTimeCmd(Runtime& rt, ArgReader& a) {
   const std::string format = a.hasMore() ? a.word("format") : "%f";
   a.finish();
@@ -274,10 +286,12 @@ void getLoadFactorCmd(Runtime& rt, ArgReader& a) {
   const int tag = a.integer("patternTag");
   a.finish();
   const domain::LoadPattern* p = rt.domain.findPattern(tag);
-  if (p == nullptr) a.fail(1, "patternTag", "load pattern " + std::to_string(tag) + " does not exist");
+  if (p == nullptr)
+    a.fail(1, "patternTag", "load pattern " + std::to_string(tag) + " does not exist");
   if (p->kind() == domain::LoadPattern::Kind::MultipleSupport)
-    a.fail(1, "patternTag", "pattern " + std::to_string(tag) +
-                                " is MultipleSupport, whose ground motions have no single factor");
+    a.fail(1, "patternTag",
+           "pattern " + std::to_string(tag) +
+               " is MultipleSupport, whose ground motions have no single factor");
   setResult(rt, p->factor(rt.domain.time()));
 }
 
@@ -310,7 +324,8 @@ void removeCmd(Runtime& rt, ArgReader& a) {
   } else if (what == "timeSeries") {
     const int tag = a.integer("tag");
     a.finish();
-    if (rt.builder.timeSeries.erase(tag) == 0) a.fail(2, "tag", "timeSeries " + std::to_string(tag) + " does not exist");
+    if (rt.builder.timeSeries.erase(tag) == 0)
+      a.fail(2, "tag", "timeSeries " + std::to_string(tag) + " does not exist");
     return;
   } else if (what == "sp" || what == "fix") {
     const int node = a.integer("node");
@@ -320,19 +335,23 @@ void removeCmd(Runtime& rt, ArgReader& a) {
     if (rt.domain.removeFix(node, dof - 1) == 0)
       a.fail("node " + std::to_string(node) + " dof " + std::to_string(dof) + " is not fixed");
   } else {
-    a.fail(1, "what", "expected element, node, loadPattern, timeSeries, sp, recorder or recorders, got \"" + what + "\"");
+    a.fail(1, "what",
+           "expected element, node, loadPattern, timeSeries, sp, recorder or recorders, got \"" +
+               what + "\"");
   }
   rt.analysis->invalidate();
 }
 
 void rayleighCmd(Runtime& rt, ArgReader& a) {
-  const double aM = a.real("alphaM"), bK = a.real("betaK"), bK0 = a.real("betaKinit"), bKc = a.real("betaKcomm");
+  const double aM = a.real("alphaM"), bK = a.real("betaK"), bK0 = a.real("betaKinit"),
+               bKc = a.real("betaKcomm");
   a.finish();
   // Negative factors give negative damping, which feeds energy into the model.
   const char* names[4] = {"alphaM", "betaK", "betaKinit", "betaKcomm"};
   const double values[4] = {aM, bK, bK0, bKc};
   for (std::size_t k = 0; k < 4; ++k)
-    if (values[k] < 0.0) a.fail(k + 1, names[k], "must not be negative, got " + std::to_string(values[k]));
+    if (values[k] < 0.0)
+      a.fail(k + 1, names[k], "must not be negative, got " + std::to_string(values[k]));
   rt.domain.setRayleigh(domain::RayleighFactors{aM, bK, bK0, bKc});
 }
 
@@ -351,18 +370,22 @@ void modalDampingCmd(Runtime& rt, ArgReader& a) {
 
 constexpr CommandEntry kCommands[] = {
     {"timeSeries", "timeSeries Constant|Linear|Trig|Rectangular|Path tag args...", timeSeriesCmd},
-    {"pattern", "pattern Plain|UniformExcitation|MultipleSupport|MultiSupport tag args...", patternCmd},
+    {"pattern", "pattern Plain|UniformExcitation|MultipleSupport|MultiSupport tag args...",
+     patternCmd},
     {"load", "load node v1 .. vndf ?-pattern tag?", loadCmd},
     {"sp", "sp node dof value ?-const? ?-pattern tag?", spCmd},
-    {"eleLoad", "eleLoad -ele tags.. | -range first last -type -beamUniform|-beamPoint values..", eleLoadCmd},
-    {"groundMotion", "groundMotion tag Plain ?-accel ts? ?-vel ts? ?-disp ts? ?-fact f?", groundMotionCmd},
+    {"eleLoad", "eleLoad -ele tags.. | -range first last -type -beamUniform|-beamPoint values..",
+     eleLoadCmd},
+    {"groundMotion", "groundMotion tag Plain ?-accel ts? ?-vel ts? ?-disp ts? ?-fact f?",
+     groundMotionCmd},
     {"imposedMotion", "imposedMotion node dof gmTag", imposedMotionCmd},
     {"imposedSupportMotion", "imposedSupportMotion node dof gmTag", imposedMotionCmd},
     {"loadConst", "loadConst ?-time t?", loadConstCmd},
     {"setTime", "setTime t", setTimeCmd},
     {"getTime", "getTime ?format?", getTimeCmd},
     {"getLoadFactor", "getLoadFactor patternTag", getLoadFactorCmd},
-    {"remove", "remove element|node|loadPattern|timeSeries|sp|recorder|recorders ?tag? ?dof?", removeCmd},
+    {"remove", "remove element|node|loadPattern|timeSeries|sp|recorder|recorders ?tag? ?dof?",
+     removeCmd},
     {"rayleigh", "rayleigh alphaM betaK betaKinit betaKcomm", rayleighCmd},
     {"modalDamping", "modalDamping zeta ?zeta2 ...?", modalDampingCmd},
 };

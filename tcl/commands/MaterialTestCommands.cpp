@@ -1,8 +1,9 @@
 // SPDX-License-Identifier: MIT
 // OpenSees' uniaxial material tester: testUniaxialMaterial, setStrain, getStrain, getStress,
-// getTangent, getDampTangent (OpenSees/OpenSees:SRC/interpreter/OpenSeesUniaxialMaterialCommands.cpp).
-// Difference: the material under test is a clone of the prototype (OpenSees drives the prototype
-// itself, so testing changed the state later copied into elements).
+// getTangent, getDampTangent
+// (OpenSees/OpenSees:SRC/interpreter/OpenSeesUniaxialMaterialCommands.cpp). Difference: the
+// material under test is a clone of the prototype (OpenSees drives the prototype itself, so testing
+// changed the state later copied into elements).
 
 #include <string>
 

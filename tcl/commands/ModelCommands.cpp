@@ -40,7 +40,8 @@ void nodeCmd(Runtime& rt, ArgReader& a) {
   a.finish();
   if (mass)
     for (double m : *mass)
-      if (m < 0.0) a.failArgument("-mass", "values must not be negative, one is " + std::to_string(m));
+      if (m < 0.0)
+        a.failArgument("-mass", "values must not be negative, one is " + std::to_string(m));
   domain::Node& n = rt.domain.addNode(tag, rt.builder.ndm, ndf, x);
   if (mass) {
     Eigen::MatrixXd m = Eigen::MatrixXd::Zero(ndf, ndf);
@@ -98,7 +99,8 @@ void fixCmd(Runtime& rt, ArgReader& a) {
 
 void fixCoordinate(Runtime& rt, ArgReader& a, int axis) {
   rt.requireModel("fixX");
-  if (axis >= rt.builder.ndm) a.fail("the model has only " + std::to_string(rt.builder.ndm) + " dimensions");
+  if (axis >= rt.builder.ndm)
+    a.fail("the model has only " + std::to_string(rt.builder.ndm) + " dimensions");
   const double value = a.real("coordinate");
   std::vector<int> flags;
   while (a.hasPositional()) {
@@ -114,8 +116,9 @@ void fixCoordinate(Runtime& rt, ArgReader& a, int axis) {
     for (const auto& [tag, n] : rt.domain.nodes()) {
       if (std::abs(n.coords()(axis) - value) > tol) continue;
       if (static_cast<int>(flags.size()) != n.ndf())
-        throw InputError("flags", "node " + std::to_string(tag) + " has " + std::to_string(n.ndf()) +
-                                      " dofs but " + std::to_string(flags.size()) + " flags were given");
+        throw InputError("flags", "node " + std::to_string(tag) + " has " +
+                                      std::to_string(n.ndf()) + " dofs but " +
+                                      std::to_string(flags.size()) + " flags were given");
       fixNode(rt, tag, flags);
       fixed.push_back(tag);
     }
@@ -213,7 +216,8 @@ void regionCmd(Runtime& rt, ArgReader& a) {
   a.finish();
   if (rayleigh)
     for (double f : *rayleigh)
-      if (f < 0.0) a.failArgument("-rayleigh", "factors must not be negative, one is " + std::to_string(f));
+      if (f < 0.0)
+        a.failArgument("-rayleigh", "factors must not be negative, one is " + std::to_string(f));
   for (int t : eles) {
     const elements::Element* e = rt.domain.findElement(t);
     if (e == nullptr) throw InputError("-ele", "element " + std::to_string(t) + " does not exist");
@@ -233,7 +237,8 @@ void uniaxialMaterialCmd(Runtime& rt, ArgReader& a) {
   const auto tables = {uniaxialParsers(), contactUniaxialParsers()};
   const UniaxialEntry* entry = findType<UniaxialEntry>(tables, type);
   if (entry == nullptr)
-    a.fail(a.positionOf("type"), "type", "\"" + type + "\" is not a known material; known: " + typeNames<UniaxialEntry>(tables));
+    a.fail(a.positionOf("type"), "type",
+           "\"" + type + "\" is not a known material; known: " + typeNames<UniaxialEntry>(tables));
   a.setContext("uniaxialMaterial " + type);
   a.setUsage(std::string(entry->usage));
   const int tag = readNewTag(a, rt.builder.uniaxial, "uniaxialMaterial");
@@ -249,7 +254,8 @@ void elementCmd(Runtime& rt, ArgReader& a) {
                        contactElementParsers()};
   const ElementEntry* entry = findType<ElementEntry>(tables, type);
   if (entry == nullptr)
-    a.fail(a.positionOf("type"), "type", "\"" + type + "\" is not a known element; known: " + typeNames<ElementEntry>(tables));
+    a.fail(a.positionOf("type"), "type",
+           "\"" + type + "\" is not a known element; known: " + typeNames<ElementEntry>(tables));
   a.setContext("element " + type);
   a.setUsage(std::string(entry->usage));
   const int tag = readNewTag(a, rt.domain.elements(), "element");
@@ -260,7 +266,8 @@ void elementCmd(Runtime& rt, ArgReader& a) {
   for (std::size_t i = 0; i < nodes.size(); ++i)
     for (std::size_t j = 0; j < i; ++j)
       if (nodes[i] == nodes[j])
-        a.fail("node " + std::to_string(nodes[i]) + " is given twice; an element connects distinct nodes");
+        a.fail("node " + std::to_string(nodes[i]) +
+               " is given twice; an element connects distinct nodes");
   rt.domain.addElement(std::move(element));
 }
 
@@ -289,14 +296,16 @@ void rigidDiaphragmCmd(Runtime& rt, ArgReader& a) {
   const domain::Node& r = rt.domain.node(rNode);
   const bool space = r.ndm() == 3 && r.ndf() == 6;
   const bool plane = r.ndm() == 2 && r.ndf() == 3;
-  if (!space && !plane) a.failArgument("rNode", "must be a 3D node with 6 dofs or a 2D node with 3 dofs");
+  if (!space && !plane)
+    a.failArgument("rNode", "must be a 3D node with 6 dofs or a 2D node with 3 dofs");
   std::vector<domain::MPConstraint> constraints;
   for (std::size_t i = 0; i < cNodes.size(); ++i) {
     const int tag = cNodes[i];
     if (tag == rNode) a.failArgument("cNode", i, "the retained node cannot also be constrained");
     const domain::Node& c = rt.domain.node(tag);
     if (c.ndm() != r.ndm() || c.ndf() != r.ndf())
-      a.failArgument("cNode", i, "node " + std::to_string(tag) + " must have the dimension and dofs of rNode");
+      a.failArgument("cNode", i,
+                     "node " + std::to_string(tag) + " must have the dimension and dofs of rNode");
     const Eigen::Vector3d d = c.coords() - r.coords();
     domain::MPConstraint mp;
     mp.retainedNode = rNode;
@@ -323,15 +332,18 @@ void rigidDiaphragmCmd(Runtime& rt, ArgReader& a) {
     mp.retainedDofs = mp.constrainedDofs;
     // The checks Domain::addMP makes, made for all nodes first so that a bad one adds none.
     for (int dof : mp.constrainedDofs) {
-      const std::string which = "dof " + std::to_string(dof + 1) + " of node " + std::to_string(tag);
+      const std::string which =
+          "dof " + std::to_string(dof + 1) + " of node " + std::to_string(tag);
       for (const auto& sp : rt.domain.fixes())
         if (sp.node == tag && sp.dof == dof) a.failArgument("cNode", i, which + " is fixed");
       for (const auto& other : rt.domain.mps())
         if (other.constrainedNode == tag &&
-            std::find(other.constrainedDofs.begin(), other.constrainedDofs.end(), dof) != other.constrainedDofs.end())
+            std::find(other.constrainedDofs.begin(), other.constrainedDofs.end(), dof) !=
+                other.constrainedDofs.end())
           a.failArgument("cNode", i, which + " is already constrained");
       for (const auto& other : constraints)
-        if (other.constrainedNode == tag) a.failArgument("cNode", i, "node " + std::to_string(tag) + " is listed twice");
+        if (other.constrainedNode == tag)
+          a.failArgument("cNode", i, "node " + std::to_string(tag) + " is listed twice");
     }
     constraints.push_back(std::move(mp));
   }
@@ -344,10 +356,10 @@ void psetCmd(Runtime& rt, ArgReader& a) {
   Tcl_Obj* name = a.object("name");
   Tcl_Obj* value = a.hasMore() ? a.object("value") : nullptr;
   a.finish();
-  Tcl_Obj* result = value != nullptr ? Tcl_ObjSetVar2(rt.interp, name, nullptr, value, TCL_LEAVE_ERR_MSG)
-                                     : Tcl_ObjGetVar2(rt.interp, name, nullptr, TCL_LEAVE_ERR_MSG);
-  if (result == nullptr)
-    throw InputError("name", std::string(Tcl_GetStringResult(rt.interp)));
+  Tcl_Obj* result = value != nullptr
+                        ? Tcl_ObjSetVar2(rt.interp, name, nullptr, value, TCL_LEAVE_ERR_MSG)
+                        : Tcl_ObjGetVar2(rt.interp, name, nullptr, TCL_LEAVE_ERR_MSG);
+  if (result == nullptr) throw InputError("name", std::string(Tcl_GetStringResult(rt.interp)));
   Tcl_SetObjResult(rt.interp, result);
 }
 
@@ -362,7 +374,10 @@ constexpr CommandEntry kCommands[] = {
     {"equalDOF", "equalDOF rNode cNode dof1 ?dof2 ...?", equalDofCmd},
     {"rigidLink", "rigidLink beam|bar rNode cNode", rigidLinkCmd},
     {"rigidDiaphragm", "rigidDiaphragm perpDirn rNode cNode1 ?cNode2 ...?", rigidDiaphragmCmd},
-    {"region", "region tag ?-ele tags? ?-eleOnly tags? ?-eleRange a b? ?-node tags? ?-nodeRange a b? ?-rayleigh aM bK bKinit bKcomm?", regionCmd},
+    {"region",
+     "region tag ?-ele tags? ?-eleOnly tags? ?-eleRange a b? ?-node tags? ?-nodeRange a b? "
+     "?-rayleigh aM bK bKinit bKcomm?",
+     regionCmd},
     {"uniaxialMaterial", "uniaxialMaterial type tag args...", uniaxialMaterialCmd},
     {"element", "element type tag nodes... args...", elementCmd},
     {"getNDM", "getNDM", getNdmCmd},

@@ -24,22 +24,32 @@ void nodeVectorQuery(Runtime& rt, ArgReader& a, Getter get) {
     setResult(rt, v);
     return;
   }
-  if (*dof > v.size()) a.failArgument("dof", "must be 1.." + std::to_string(v.size()) + " (or 0 for all)");
+  if (*dof > v.size())
+    a.failArgument("dof", "must be 1.." + std::to_string(v.size()) + " (or 0 for all)");
   setResult(rt, v(*dof - 1));
 }
 
-void nodeDispCmd(Runtime& rt, ArgReader& a) { nodeVectorQuery(rt, a, [](const domain::Node& n) { return n.disp; }); }
-void nodeVelCmd(Runtime& rt, ArgReader& a) { nodeVectorQuery(rt, a, [](const domain::Node& n) { return n.vel; }); }
-void nodeAccelCmd(Runtime& rt, ArgReader& a) { nodeVectorQuery(rt, a, [](const domain::Node& n) { return n.accel; }); }
+void nodeDispCmd(Runtime& rt, ArgReader& a) {
+  nodeVectorQuery(rt, a, [](const domain::Node& n) { return n.disp; });
+}
+void nodeVelCmd(Runtime& rt, ArgReader& a) {
+  nodeVectorQuery(rt, a, [](const domain::Node& n) { return n.vel; });
+}
+void nodeAccelCmd(Runtime& rt, ArgReader& a) {
+  nodeVectorQuery(rt, a, [](const domain::Node& n) { return n.accel; });
+}
 void nodeReactionCmd(Runtime& rt, ArgReader& a) {
   nodeVectorQuery(rt, a, [](const domain::Node& n) { return n.reaction; });
 }
 void nodeCoordCmd(Runtime& rt, ArgReader& a) {
   const int ndm = rt.builder.ndm;
-  nodeVectorQuery(rt, a, [ndm](const domain::Node& n) { return Eigen::VectorXd(n.coords().head(std::max(ndm, 1))); });
+  nodeVectorQuery(rt, a, [ndm](const domain::Node& n) {
+    return Eigen::VectorXd(n.coords().head(std::max(ndm, 1)));
+  });
 }
 void nodeMassCmd(Runtime& rt, ArgReader& a) {
-  nodeVectorQuery(rt, a, [](const domain::Node& n) { return Eigen::VectorXd(n.mass().diagonal()); });
+  nodeVectorQuery(rt, a,
+                  [](const domain::Node& n) { return Eigen::VectorXd(n.mass().diagonal()); });
 }
 
 void nodeEigenvectorCmd(Runtime& rt, ArgReader& a) {
@@ -48,7 +58,8 @@ void nodeEigenvectorCmd(Runtime& rt, ArgReader& a) {
   const auto dof = a.optionalInteger("dof");
   a.finish();
   if (mode < 1 || mode > n.eigenvectors.cols())
-    a.failArgument("mode", "must be 1.." + std::to_string(n.eigenvectors.cols()) + " (run eigen first)");
+    a.failArgument("mode",
+                   "must be 1.." + std::to_string(n.eigenvectors.cols()) + " (run eigen first)");
   const Eigen::VectorXd v = n.eigenvectors.col(mode - 1);
   if (!dof) {
     setResult(rt, v);
@@ -63,8 +74,9 @@ void reactionsCmd(Runtime& rt, ArgReader& a) {
   // OpenSees' -rayleigh adds the damping forces without the inertia forces; the domain computes
   // reactions with both (-dynamic) or neither, so the option is refused rather than ignored.
   if (a.flag("-rayleigh"))
-    a.fail("-rayleigh (damping forces without inertia) is not supported; use -dynamic for reactions "
-           "with inertia and damping forces");
+    a.fail(
+        "-rayleigh (damping forces without inertia) is not supported; use -dynamic for reactions "
+        "with inertia and damping forces");
   a.finish();
   rt.domain.calculateNodalReactions(dynamic);
 }
@@ -80,8 +92,8 @@ void eleResponseCmd(Runtime& rt, ArgReader& a) {
   if (!r) {
     std::string what;
     for (const auto& w : args) what += (what.empty() ? "" : " ") + w;
-    a.failArgument("response", "\"" + what + "\" is not a response of element " + std::to_string(tag) +
-                                   " (" + std::string(e->typeName()) + ")");
+    a.failArgument("response", "\"" + what + "\" is not a response of element " +
+                                   std::to_string(tag) + " (" + std::string(e->typeName()) + ")");
   }
   setResult(rt, *r);
 }
@@ -145,7 +157,8 @@ void describeNode(std::ostream& out, const domain::Node& n) {
   }
   if (!n.mass().isZero(0.0)) {
     out << "\tMass : \n";
-    for (Eigen::Index i = 0; i < n.mass().rows(); ++i) writeVector(out, n.mass().row(i).transpose());
+    for (Eigen::Index i = 0; i < n.mass().rows(); ++i)
+      writeVector(out, n.mass().row(i).transpose());
     out << "\n";
   }
   out << "\n";
@@ -156,7 +169,8 @@ void describeNode(std::ostream& out, const domain::Node& n) {
 std::vector<int> printTags(ArgReader& a, std::string_view what) {
   if (a.hasMore() && (a.peek() == "flag" || a.peek() == "-flag")) {
     (void)a.word("flag word");
-    if (a.integer("flag") != 0) a.failArgument("flag", "is not supported: only OpenSees' default layout (flag 0)");
+    if (a.integer("flag") != 0)
+      a.failArgument("flag", "is not supported: only OpenSees' default layout (flag 0)");
   }
   std::vector<int> tags;
   while (a.hasMore()) tags.push_back(a.integer(what));
@@ -171,13 +185,19 @@ void printCmd(Runtime& rt, ArgReader& a) {
   std::optional<std::vector<int>> nodes, eles;
   while (a.hasMore() && !nodes && !eles) {
     const std::string word = a.word("what");
-    if (word == "node" || word == "-node") nodes = printTags(a, "nodeTag");
-    else if (word == "ele" || word == "-ele") eles = printTags(a, "eleTag");
-    else if (word == "integrator" || word == "-integrator" || word == "algorithm" || word == "-algorithm")
+    if (word == "node" || word == "-node")
+      nodes = printTags(a, "nodeTag");
+    else if (word == "ele" || word == "-ele")
+      eles = printTags(a, "eleTag");
+    else if (word == "integrator" || word == "-integrator" || word == "algorithm" ||
+             word == "-algorithm")
       a.failArgument("what", "is not supported: dabs does not describe its analysis strategies");
-    else if (word == "-JSON") a.fail("-JSON output is not supported");
-    else if (word == "file" || word == "-file") target = a.word("fileName");
-    else target = word;
+    else if (word == "-JSON")
+      a.fail("-JSON output is not supported");
+    else if (word == "file" || word == "-file")
+      target = a.word("fileName");
+    else
+      target = word;
   }
   a.finish();
   std::ostringstream out;
@@ -230,7 +250,8 @@ constexpr CommandEntry kCommands[] = {
     {"getNodeTags", "getNodeTags", getNodeTagsCmd},
     {"getEleTags", "getEleTags", getEleTagsCmd},
     {"print", "print ?-file fileName? ?node|-node ?tags..?? ?ele|-ele ?tags..??", printCmd},
-    {"printModel", "printModel ?-file fileName? ?node|-node ?tags..?? ?ele|-ele ?tags..??", printCmd},
+    {"printModel", "printModel ?-file fileName? ?node|-node ?tags..?? ?ele|-ele ?tags..??",
+     printCmd},
     {"version", "version", versionCmd},
 };
 

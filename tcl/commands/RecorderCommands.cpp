@@ -41,16 +41,18 @@ domain::RecorderOutput readOutput(ArgReader& a, bool envelope) {
 // recorders skip the missing ones); the range walks the model's ordered map, so `1 2147483647`
 // costs no more than the model's size.
 template <class Map>
-std::vector<int> readRange(ArgReader& a, const char* listKey, const char* rangeKey, const Map& existing) {
+std::vector<int> readRange(ArgReader& a, const char* listKey, const char* rangeKey,
+                           const Map& existing) {
   std::vector<int> tags;
   if (auto list = a.optionIntegerList(listKey)) tags = *list;
   if (auto range = a.optionTagRange(rangeKey)) {
     const std::size_t before = tags.size();
-    for (auto it = existing.lower_bound(range->first); it != existing.end() && it->first <= range->second; ++it)
+    for (auto it = existing.lower_bound(range->first);
+         it != existing.end() && it->first <= range->second; ++it)
       tags.push_back(it->first);
     if (tags.size() == before)
-      a.fail(std::string(rangeKey) + " " + std::to_string(range->first) + " " + std::to_string(range->second) +
-             " holds no existing tag");
+      a.fail(std::string(rangeKey) + " " + std::to_string(range->first) + " " +
+             std::to_string(range->second) + " holds no existing tag");
   }
   return tags;
 }
@@ -68,8 +70,9 @@ void nodeRecorder(Runtime& rt, ArgReader& a, bool envelope) {
     if (series.size() != dofs->size()) {
       series.clear();
       if (Tcl_Channel err = Tcl_GetStdChannel(TCL_STDERR); err != nullptr) {
-        const std::string text = "recorder Node: " + std::to_string(ts->size()) + " time series for " +
-                                 std::to_string(dofs->size()) + " dofs; -timeSeries is ignored\n";
+        const std::string text = "recorder Node: " + std::to_string(ts->size()) +
+                                 " time series for " + std::to_string(dofs->size()) +
+                                 " dofs; -timeSeries is ignored\n";
         Tcl_WriteChars(err, text.c_str(), static_cast<int>(text.size()));
       }
     }
@@ -78,19 +81,27 @@ void nodeRecorder(Runtime& rt, ArgReader& a, bool envelope) {
   using R = domain::NodeRecorder::Response;
   R kind{};
   int mode = 0;
-  if (response == "disp") kind = R::Disp;
-  else if (response == "vel") kind = R::Vel;
-  else if (response == "accel") kind = R::Accel;
-  else if (response == "incrDisp") kind = R::IncrDisp;
-  else if (response == "reaction") kind = R::Reaction;
+  if (response == "disp")
+    kind = R::Disp;
+  else if (response == "vel")
+    kind = R::Vel;
+  else if (response == "accel")
+    kind = R::Accel;
+  else if (response == "incrDisp")
+    kind = R::IncrDisp;
+  else if (response == "reaction")
+    kind = R::Reaction;
   else if (response.rfind("eigen", 0) == 0) {
     kind = R::Eigen;
     const std::string rest = response.substr(5);
-    if (!rest.empty()) mode = responseInteger(rest).value_or(0);
-    else mode = a.integer("mode");
+    if (!rest.empty())
+      mode = responseInteger(rest).value_or(0);
+    else
+      mode = a.integer("mode");
     if (mode < 1) a.fail("eigen needs a mode number from 1");
   } else {
-    a.fail("response must be disp, vel, accel, incrDisp, reaction or eigen i, got \"" + response + "\"");
+    a.fail("response must be disp, vel, accel, incrDisp, reaction or eigen i, got \"" + response +
+           "\"");
   }
   a.finish();
   std::vector<int> zeroBased;
@@ -129,7 +140,8 @@ void driftRecorder(Runtime& rt, ArgReader& a) {
 void windowRecorder(Runtime& /*rt*/, ArgReader& a) {
   while (a.hasMore()) (void)a.word("option");
   if (Tcl_Channel err = Tcl_GetStdChannel(TCL_STDERR); err != nullptr) {
-    const std::string text = a.context() + ": dabs opens no windows; ignored (see recorder Viewer)\n";
+    const std::string text =
+        a.context() + ": dabs opens no windows; ignored (see recorder Viewer)\n";
     Tcl_WriteChars(err, text.c_str(), static_cast<int>(text.size()));
   }
 }
@@ -142,14 +154,10 @@ void envelopeElementRecorderType(Runtime& rt, ArgReader& a) { elementRecorder(rt
 using RecorderParser = void (*)(Runtime& rt, ArgReader& a);
 
 constexpr TypeEntry<RecorderParser> kRecorders[] = {
-    {"Node", "", nodeRecorderType},
-    {"EnvelopeNode", "", envelopeNodeRecorderType},
-    {"Element", "", elementRecorderType},
-    {"EnvelopeElement", "", envelopeElementRecorderType},
-    {"Drift", "", driftRecorder},
-    {"Viewer", "", viewerRecorderCommand},
-    {"plot", "", windowRecorder},
-    {"display", "", windowRecorder},
+    {"Node", "", nodeRecorderType},       {"EnvelopeNode", "", envelopeNodeRecorderType},
+    {"Element", "", elementRecorderType}, {"EnvelopeElement", "", envelopeElementRecorderType},
+    {"Drift", "", driftRecorder},         {"Viewer", "", viewerRecorderCommand},
+    {"plot", "", windowRecorder},         {"display", "", windowRecorder},
 };
 
 void recorderCmd(Runtime& rt, ArgReader& a) {
@@ -171,10 +179,13 @@ void recordCmd(Runtime& rt, ArgReader& a) {
 
 constexpr CommandEntry kCommands[] = {
     {"recorder",
-     "recorder Node|EnvelopeNode -file f ?-time|-load? ?-closeOnWrite? ?-dT dt? ?-precision p? ?-timeSeries tags? -node tags|-nodeRange a b -dof dofs "
-     "disp|vel|accel|incrDisp|reaction|eigen i; recorder Element|EnvelopeElement -file f ?-time? -ele tags|-eleRange a b "
+     "recorder Node|EnvelopeNode -file f ?-time|-load? ?-closeOnWrite? ?-dT dt? ?-precision p? "
+     "?-timeSeries tags? -node tags|-nodeRange a b -dof dofs "
+     "disp|vel|accel|incrDisp|reaction|eigen i; recorder Element|EnvelopeElement -file f ?-time? "
+     "-ele tags|-eleRange a b "
      "response; recorder Drift -file f -iNode .. -jNode .. -dof .. -perpDirn ..; "
-     "recorder Viewer -file page.html ?-dT dt? ?-nodes tags? ?-plots {..}? ?-title text?; recorder plot|display ... (ignored)",
+     "recorder Viewer -file page.html ?-dT dt? ?-nodes tags? ?-plots {..}? ?-title text?; recorder "
+     "plot|display ... (ignored)",
      recorderCmd},
     {"record", "record", recordCmd},
 };

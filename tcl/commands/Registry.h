@@ -25,8 +25,8 @@ struct CommandEntry {
 };
 
 /// Parses `uniaxialMaterial <type> tag ...` after the tag; returns the validated prototype.
-using UniaxialParser = std::unique_ptr<materials::UniaxialMaterial> (*)(Runtime& rt, ArgReader& args,
-                                                                         int tag);
+using UniaxialParser = std::unique_ptr<materials::UniaxialMaterial> (*)(Runtime& rt,
+                                                                        ArgReader& args, int tag);
 /// Parses `element <type> tag ...` after the tag; returns the element (not yet in the domain).
 using ElementParser = std::unique_ptr<elements::Element> (*)(Runtime& rt, ArgReader& args, int tag);
 
@@ -50,9 +50,9 @@ std::span<const CommandEntry> queryCommands();         // QueryCommands.cpp
 std::span<const CommandEntry> recorderCommands();      // RecorderCommands.cpp
 std::span<const CommandEntry> materialTestCommands();  // MaterialTestCommands.cpp
 std::span<const CommandEntry> sectionCommands();       // SectionParsers.cpp (section, fiber, ...)
-std::span<const CommandEntry> beamCommands();          // BeamParsers.cpp (geomTransf, beamIntegration)
-std::span<const CommandEntry> bearingCommands();       // BearingParsers.cpp (biaxialMaterial)
-std::span<const CommandEntry> contactCommands();       // ContactParsers.cpp (pounding)
+std::span<const CommandEntry> beamCommands();     // BeamParsers.cpp (geomTransf, beamIntegration)
+std::span<const CommandEntry> bearingCommands();  // BearingParsers.cpp (biaxialMaterial)
+std::span<const CommandEntry> contactCommands();  // ContactParsers.cpp (pounding)
 
 std::span<const UniaxialEntry> uniaxialParsers();         // UniaxialParsers.cpp
 std::span<const UniaxialEntry> contactUniaxialParsers();  // ContactParsers.cpp (Restrainer, Bumper)
@@ -62,14 +62,15 @@ std::span<const ElementEntry> beamElementParsers();     // BeamParsers.cpp
 std::span<const ElementEntry> bearingElementParsers();  // BearingParsers.cpp
 std::span<const ElementEntry> contactElementParsers();  // ContactParsers.cpp
 
-/// Reads `tag`, checks it is unused in `map`, and sets the reader's context to "<cmd> <type> <tag>".
-/// Shared by every type-dispatching command so tag checks read the same everywhere.
+/// Reads `tag`, checks it is unused in `map`, and sets the reader's context to "<cmd> <type>
+/// <tag>". Shared by every type-dispatching command so tag checks read the same everywhere.
 template <class Map>
 int readNewTag(ArgReader& args, const Map& map, std::string_view what) {
   const int tag = args.integer("tag");
   args.setContext(args.context() + " " + std::to_string(tag));
-  if (map.count(tag) != 0) args.fail(args.lastPosition(), "tag", std::string(what) + " " +
-                                     std::to_string(tag) + " already exists");
+  if (map.count(tag) != 0)
+    args.fail(args.lastPosition(), "tag",
+              std::string(what) + " " + std::to_string(tag) + " already exists");
   return tag;
 }
 

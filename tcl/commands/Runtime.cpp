@@ -33,7 +33,8 @@ Runtime::Runtime(Tcl_Interp* interpreter)
 }
 
 Runtime::~Runtime() {
-  // Recorders flush in the domain's destructor; the analysis refers to the domain, so it goes first.
+  // Recorders flush in the domain's destructor; the analysis refers to the domain, so it goes
+  // first.
   analysis.reset();
 }
 

@@ -72,7 +72,8 @@ constexpr long long kMaxSectionFibers = 1000000;
 // Checks that adding `count` fibers (a product of subdivision counts) keeps the section in limits.
 void checkFiberCount(const FiberSectionUnderConstruction& s, ArgReader& args, long long count) {
   if (count > kMaxSectionFibers - static_cast<long long>(s.fibers.size()))
-    args.fail("would give the section " + std::to_string(count + static_cast<long long>(s.fibers.size())) +
+    args.fail("would give the section " +
+              std::to_string(count + static_cast<long long>(s.fibers.size())) +
               " fibers; at most " + std::to_string(kMaxSectionFibers) + " are allowed");
 }
 
@@ -178,8 +179,7 @@ std::unique_ptr<S> buildFiberSection(const Runtime& rt, int tag,
 }
 
 constexpr const char* kElasticSectionUsage2d = "section Elastic tag E A Iz ?G alphaY?";
-constexpr const char* kElasticSectionUsage3d =
-    "section Elastic tag E A Iz Iy G J ?alphaY alphaZ?";
+constexpr const char* kElasticSectionUsage3d = "section Elastic tag E A Iz Iy G J ?alphaY alphaZ?";
 constexpr const char* kAggregatorUsage =
     "section Aggregator tag matTag1 code1 ?matTag2 code2 ...? ?-section secTag? (codes P Mz Vy My "
     "Vz T)";
@@ -233,9 +233,9 @@ std::unique_ptr<materials::section::SectionForceDeformation> parseAggregator(Run
   while (args.hasPositional()) {
     const int mat = args.integer("matTag");
     const materials::section::SectionCode code = sectionCode(args);
-    if (rt.builder.ndm == 2 && (code == materials::section::SectionCode::My ||
-                                code == materials::section::SectionCode::Vz ||
-                                code == materials::section::SectionCode::T))
+    if (rt.builder.ndm == 2 &&
+        (code == materials::section::SectionCode::My ||
+         code == materials::section::SectionCode::Vz || code == materials::section::SectionCode::T))
       args.fail(args.lastPosition(), "code", "My, Vz and T are not available in a 2D model");
     parts.push_back({&rt.builder.uniaxialMaterial(mat), code});
   }
@@ -255,9 +255,9 @@ SectionPtr parseUniaxialSection(Runtime& rt, ArgReader& args, int tag) {
   const int mat = args.integer("matTag");
   const materials::section::SectionCode code = sectionCode(args);
   args.finish();
-  if (rt.builder.ndm == 2 && (code == materials::section::SectionCode::My ||
-                              code == materials::section::SectionCode::Vz ||
-                              code == materials::section::SectionCode::T))
+  if (rt.builder.ndm == 2 &&
+      (code == materials::section::SectionCode::My || code == materials::section::SectionCode::Vz ||
+       code == materials::section::SectionCode::T))
     args.fail(args.lastPosition(), "code", "My, Vz and T are not available in a 2D model");
   return std::make_unique<materials::section::SectionAggregator>(
       tag,
@@ -283,8 +283,8 @@ SectionPtr parseFiberSection(Runtime& rt, ArgReader& args, int tag) {
     Tcl_DecrRefCount(body);
   }
   if (code != TCL_OK)
-    throw ArgError(args.context() + ": error in the section body: " +
-                   Tcl_GetStringResult(rt.interp));
+    throw ArgError(args.context() +
+                   ": error in the section body: " + Tcl_GetStringResult(rt.interp));
   if (ndm == 2) return buildFiberSection<materials::section::FiberSection2d>(rt, tag, under, 0.0);
   return buildFiberSection<materials::section::FiberSection3d>(rt, tag, under, *gj);
 }

@@ -28,8 +28,10 @@ std::vector<double> parseNumberList(ArgReader& a, const std::string& text, std::
   for (int i = 0; i < count && bad.empty(); ++i) {
     char* end = nullptr;
     const double v = std::strtod(items[i], &end);
-    if (end == items[i] || *end != '\0' || !std::isfinite(v)) bad = items[i];
-    else out.push_back(v);
+    if (end == items[i] || *end != '\0' || !std::isfinite(v))
+      bad = items[i];
+    else
+      out.push_back(v);
   }
   Tcl_Free(reinterpret_cast<char*>(items));
   if (!bad.empty()) a.fail(std::string(key) + " expects numbers, got \"" + bad + "\"");
@@ -63,8 +65,10 @@ std::shared_ptr<const domain::TimeSeries> parsePath(ArgReader& a, int tag) {
   if (values.empty()) a.fail("the series has no values");
   if (timeText || fileTime) {
     std::vector<double> times;
-    if (timeText) times = parseNumberList(a, *timeText, "-time");
-    else times = domain::readRecordFile(*fileTime).values;
+    if (timeText)
+      times = parseNumberList(a, *timeText, "-time");
+    else
+      times = domain::readRecordFile(*fileTime).values;
     if (times.size() != values.size())
       a.fail("-time has " + std::to_string(times.size()) + " entries but there are " +
              std::to_string(values.size()) + " values");
@@ -74,12 +78,14 @@ std::shared_ptr<const domain::TimeSeries> parsePath(ArgReader& a, int tag) {
       times.insert(times.begin(), 0.0);
       values.insert(values.begin(), 0.0);
     }
-    return std::make_shared<domain::PathSeries>(tag, std::move(times), std::move(values), factor, useLast);
+    return std::make_shared<domain::PathSeries>(tag, std::move(times), std::move(values), factor,
+                                                useLast);
   }
   double step = dt.value_or(fileDt);
   if (!(step > 0.0)) a.fail("needs -dt (positive) or a file whose header gives DT");
   if (prependZero) values.insert(values.begin(), 0.0);
-  return std::make_shared<domain::PathSeries>(tag, step, std::move(values), factor, startTime, useLast);
+  return std::make_shared<domain::PathSeries>(tag, step, std::move(values), factor, startTime,
+                                              useLast);
 }
 
 using SeriesPtr = std::shared_ptr<const domain::TimeSeries>;
@@ -117,7 +123,8 @@ SeriesPtr parseRectangular(ArgReader& a, int tag) {
 
 SeriesPtr parseNearFaultPulse(ArgReader& a, int tag) {
   domain::NearFaultPulseSeries::Params p;
-  const auto Tp = a.optionalOption("-Tp"), Vp = a.optionalOption("-Vp"), gamma = a.optionalOption("-gamma");
+  const auto Tp = a.optionalOption("-Tp"), Vp = a.optionalOption("-Vp"),
+             gamma = a.optionalOption("-gamma");
   const auto nu = a.optionalOption("-nu"), t0 = a.optionalOption("-t0");
   p.factor = a.option("-factor", 1.0);
   p.velocity = a.flag("-velocity");
@@ -136,12 +143,12 @@ using SeriesParserFn = SeriesPtr (*)(ArgReader& a, int tag);
 
 // OpenSees' names with their synonyms (Sine for Trig, Series for Path, the *Series spellings).
 constexpr TypeEntry<SeriesParserFn> kSeries[] = {
-    {"Constant", "", parseConstant},     {"ConstantSeries", "", parseConstant},
-    {"Linear", "", parseLinear},         {"LinearSeries", "", parseLinear},
-    {"Trig", "", parseTrig},             {"Sine", "", parseTrig},
-    {"TrigSeries", "", parseTrig},       {"Rectangular", "", parseRectangular},
-    {"Path", "", parsePath},             {"Series", "", parsePath},
-    {"PathSeries", "", parsePath},       {"NearFaultPulse", "", parseNearFaultPulse},
+    {"Constant", "", parseConstant}, {"ConstantSeries", "", parseConstant},
+    {"Linear", "", parseLinear},     {"LinearSeries", "", parseLinear},
+    {"Trig", "", parseTrig},         {"Sine", "", parseTrig},
+    {"TrigSeries", "", parseTrig},   {"Rectangular", "", parseRectangular},
+    {"Path", "", parsePath},         {"Series", "", parsePath},
+    {"PathSeries", "", parsePath},   {"NearFaultPulse", "", parseNearFaultPulse},
 };
 
 }  // namespace
@@ -151,7 +158,9 @@ std::shared_ptr<const domain::TimeSeries> parseSeries(Runtime& rt, ArgReader& a,
   const auto* entry = findType<TypeEntry<SeriesParserFn>>({kSeries}, type);
   if (entry == nullptr)
     a.fail(a.positionOf("type"), "type",
-           "\"" + type + "\" is not a known time series (Constant, Linear, Trig, Rectangular, Path, NearFaultPulse)");
+           "\"" + type +
+               "\" is not a known time series (Constant, Linear, Trig, Rectangular, Path, "
+               "NearFaultPulse)");
   int tag = 0;
   if (withTag) {
     a.setContext(a.context() + " " + type);
@@ -160,11 +169,13 @@ std::shared_ptr<const domain::TimeSeries> parseSeries(Runtime& rt, ArgReader& a,
   return entry->parse(a, tag);
 }
 
-std::shared_ptr<const domain::TimeSeries> seriesArgument(Runtime& rt, ArgReader& a, std::string_view name) {
+std::shared_ptr<const domain::TimeSeries> seriesArgument(Runtime& rt, ArgReader& a,
+                                                         std::string_view name) {
   Tcl_Obj* obj = a.object(name);
   if (const auto tag = integerValue(obj)) return rt.builder.series(*tag);
   // A number is a tag, never a one-word spec: a tag out of range is reported as such.
-  if (isIntegerWord(Tcl_GetString(obj))) a.failArgument(name, integerExpectation(obj) + " (a time series tag)");
+  if (isIntegerWord(Tcl_GetString(obj)))
+    a.failArgument(name, integerExpectation(obj) + " (a time series tag)");
   int count = 0;
   Tcl_Obj** items = nullptr;
   if (Tcl_ListObjGetElements(nullptr, obj, &count, &items) != TCL_OK || count == 0)

@@ -15,7 +15,8 @@ namespace dabs::tcl {
 std::shared_ptr<const domain::TimeSeries> parseSeries(Runtime& rt, ArgReader& a, bool withTag);
 
 /// A series given to a pattern as a tag or as an inline spec list.
-std::shared_ptr<const domain::TimeSeries> seriesArgument(Runtime& rt, ArgReader& a, std::string_view name);
+std::shared_ptr<const domain::TimeSeries> seriesArgument(Runtime& rt, ArgReader& a,
+                                                         std::string_view name);
 
 /// Reads a Tcl list of numbers (e.g. the value of -values); throws ArgError naming `key`.
 std::vector<double> parseNumberList(ArgReader& a, const std::string& text, std::string_view key);

@@ -49,16 +49,18 @@ constexpr KindEntry<analysis::NumbererKind> kNumberers[] = {
 // alphaF = 1 - alpha_f (1 and 1 is Newmark), so: 1/2 <= alphaF <= alphaM.
 void checkAlphaStability(ArgReader& a, double alphaM, double alphaF, double gamma, double beta) {
   if (!(alphaF >= 0.5 && alphaF <= 1.0 && alphaM >= alphaF && alphaM <= 2.0))
-    a.fail("alphaM and alphaF must satisfy 1/2 <= alphaF <= alphaM <= 2 and alphaF <= 1 for unconditional "
-           "stability (Chung & Hulbert 1993), got alphaM " + std::to_string(alphaM) + ", alphaF " +
-           std::to_string(alphaF));
+    a.fail(
+        "alphaM and alphaF must satisfy 1/2 <= alphaF <= alphaM <= 2 and alphaF <= 1 for "
+        "unconditional "
+        "stability (Chung & Hulbert 1993), got alphaM " +
+        std::to_string(alphaM) + ", alphaF " + std::to_string(alphaF));
   const double d = alphaM - alphaF;
   constexpr double kRoundOff = 1e-12;
   if (gamma < 0.5 + d - kRoundOff || beta < 0.25 + 0.5 * d - kRoundOff)
     a.fail("gamma must be at least 1/2 + alphaM - alphaF = " + std::to_string(0.5 + d) +
            " and beta at least 1/4 + (alphaM - alphaF)/2 = " + std::to_string(0.25 + 0.5 * d) +
-           " for unconditional stability (Chung & Hulbert 1993), got gamma " + std::to_string(gamma) +
-           ", beta " + std::to_string(beta));
+           " for unconditional stability (Chung & Hulbert 1993), got gamma " +
+           std::to_string(gamma) + ", beta " + std::to_string(beta));
 }
 
 constexpr KindEntry<analysis::ConvergenceTest::Kind> kTests[] = {
@@ -76,8 +78,9 @@ using AlgorithmParser = AlgorithmPtr (*)(ArgReader& a);
 // option is refused rather than silently replaced by the tangent.
 void rejectSecant(ArgReader& a) {
   if (a.flag("-secant") || a.flag("-Secant"))
-    a.fail("-secant is not supported: the elements give no secant stiffness (use -initial or the "
-           "current tangent)");
+    a.fail(
+        "-secant is not supported: the elements give no secant stiffness (use -initial or the "
+        "current tangent)");
 }
 
 AlgorithmPtr parseLinear(ArgReader& a) {
@@ -116,8 +119,9 @@ AlgorithmPtr parseNewtonLineSearch(ArgReader& a) {
   if (auto t = a.optionalWordOption("-type")) {
     const auto* entry = findType<KindEntry<analysis::NewtonLineSearch::Search>>({kSearches}, *t);
     if (entry == nullptr)
-      a.failArgument("-type", "expected one of " +
-                                  typeNames<KindEntry<analysis::NewtonLineSearch::Search>>({kSearches}));
+      a.failArgument("-type",
+                     "expected one of " +
+                         typeNames<KindEntry<analysis::NewtonLineSearch::Search>>({kSearches}));
     search = entry->kind;
   }
   double tol = a.option("-tol", 0.8);
@@ -132,7 +136,8 @@ AlgorithmPtr parseNewtonLineSearch(ArgReader& a) {
   // OpenSees prints each line-search iteration when pFlag is 0 and is quiet otherwise (its
   // default is 1); dabs has no such output, so only the quiet setting is accepted.
   if (a.option("-pFlag", 1) == 0)
-    a.failArgument("-pFlag", "0 (print each line-search iteration) is not supported; use 1 (quiet)");
+    a.failArgument("-pFlag",
+                   "0 (print each line-search iteration) is not supported; use 1 (quiet)");
   if (!(tol > 0.0)) a.failArgument(tolName, "must be positive");
   if (maxIter < 1) a.failArgument("-maxIter", "must be at least 1");
   if (!(minEta > 0.0 && minEta <= 1.0)) a.failArgument("-minEta", "must be in (0, 1]");
@@ -194,7 +199,8 @@ IntegratorPtr parseDisplacementControl(Runtime& rt, ArgReader& a) {
   const domain::Node& n = rt.domain.node(node);
   if (dof < 1 || dof > n.ndf()) a.failArgument("dof", "must be 1.." + std::to_string(n.ndf()));
   if (Jd < 1) a.failArgument("Jd", "must be at least 1");
-  return std::make_unique<analysis::DisplacementControl>(node, dof - 1, incr, Jd, dUmin, dUmax, initial);
+  return std::make_unique<analysis::DisplacementControl>(node, dof - 1, incr, Jd, dUmin, dUmax,
+                                                         initial);
 }
 
 IntegratorPtr parseNewmark(Runtime& /*rt*/, ArgReader& a) {
@@ -220,8 +226,9 @@ IntegratorPtr parseHHT(Runtime& /*rt*/, ArgReader& a) {
   // Hilber, Hughes & Taylor (1977): unconditionally stable for alpha_HHT in [-1/3, 0], i.e.
   // OpenSees' alpha = 1 + alpha_HHT in [2/3, 1].
   if (!(alpha >= 2.0 / 3.0 && alpha <= 1.0))
-    a.failArgument("alpha", "must be in [2/3, 1] for unconditional stability (OpenSees convention: 1 is "
-                            "Newmark, 2/3 the most dissipative)");
+    a.failArgument("alpha",
+                   "must be in [2/3, 1] for unconditional stability (OpenSees convention: 1 is "
+                   "Newmark, 2/3 the most dissipative)");
   checkAlphaStability(a, 1.0, alpha, gamma, beta);
   return std::make_unique<analysis::GeneralizedAlpha>(1.0, alpha, gamma, beta);
 }
@@ -272,13 +279,15 @@ IntegratorPtr parseHSConstraint(Runtime& /*rt*/, ArgReader& a) {
 
 constexpr TypeEntry<IntegratorParser> kIntegrators[] = {
     {"LoadControl", "integrator LoadControl dLambda ?Jd minLambda maxLambda?", parseLoadControl},
-    {"DisplacementControl", "integrator DisplacementControl node dof incr ?Jd dUmin dUmax? ?-initial?",
+    {"DisplacementControl",
+     "integrator DisplacementControl node dof incr ?Jd dUmin dUmax? ?-initial?",
      parseDisplacementControl},
     {"ArcLength", "integrator ArcLength arcLength alpha", parseArcLength},
     {"HSConstraint", "integrator HSConstraint arcLength ?psiU? ?psiF? ?uRef?", parseHSConstraint},
     {"Newmark", "integrator Newmark gamma beta ?-form D|A?", parseNewmark},
     {"HHT", "integrator HHT alpha ?gamma beta?", parseHHT},
-    {"GeneralizedAlpha", "integrator GeneralizedAlpha alphaM alphaF ?gamma beta?", parseGeneralizedAlpha},
+    {"GeneralizedAlpha", "integrator GeneralizedAlpha alphaM alphaF ?gamma beta?",
+     parseGeneralizedAlpha},
     {"TRBDF2", "integrator TRBDF2", parseTRBDF2},
     {"Bathe", "integrator Bathe", parseTRBDF2},
     {"CentralDifference", "integrator CentralDifference", parseCentralDifference},
@@ -322,8 +331,10 @@ void systemCommand(Runtime& rt, ArgReader& a) {
     ignored += a.word("option");
   }
   if (!ignored.empty())
-    warn("system " + type + ": solver options are not supported (dabs' solvers have no such settings); "
-         "ignored:" + ignored + "\n");
+    warn("system " + type +
+         ": solver options are not supported (dabs' solvers have no such settings); "
+         "ignored:" +
+         ignored + "\n");
   rt.analysis->setSystem(kind);
 }
 

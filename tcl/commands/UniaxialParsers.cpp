@@ -50,7 +50,8 @@ std::vector<const UniaxialMaterial*> readComponents(ArgReader& args,
     try {
       out.push_back(&builder.uniaxialMaterial(tags[i]));
     } catch (const InputError&) {
-      args.failArgument("matTag", i, "uniaxialMaterial " + std::to_string(tags[i]) + " does not exist");
+      args.failArgument("matTag", i,
+                        "uniaxialMaterial " + std::to_string(tags[i]) + " does not exist");
     }
   }
   return out;
@@ -209,7 +210,8 @@ constexpr UniaxialEntry kRows[] = {
     {"ENT", "uniaxialMaterial ENT tag E", &plain<uniaxial::parseENT>},
     {"Parallel", "uniaxialMaterial Parallel tag matTag1 matTag2 ... ?-factors f1 f2 ...?",
      &composite<uniaxial::parseParallel>},
-    {"Series", "uniaxialMaterial Series tag matTag1 matTag2 ...", &composite<uniaxial::parseSeries>},
+    {"Series", "uniaxialMaterial Series tag matTag1 matTag2 ...",
+     &composite<uniaxial::parseSeries>},
 };
 
 }  // namespace

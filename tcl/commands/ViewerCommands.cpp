@@ -16,8 +16,10 @@ namespace {
 
 constexpr const char* kUsage =
     "recorder Viewer -file page.html ?-dT dt? ?-nodes tags? ?-title text? ?-plots {{label node tag "
-    "dof disp|vel|accel} {label ele tag response.. component} ..}? ?-beamSection {{rect width depth "
-    "tags..} {circle diameter tags..} ..}? ?-bearingPad {{lx ly tags..} ..}? ?-block {{lx ly lz ?-dz dz? "
+    "dof disp|vel|accel} {label ele tag response.. component} ..}? ?-beamSection {{rect width "
+    "depth "
+    "tags..} {circle diameter tags..} ..}? ?-bearingPad {{lx ly tags..} ..}? ?-block {{lx ly lz "
+    "?-dz dz? "
     "nodes..} ..}? ?-gaps {{label nodeA nodeB} ..}?";
 
 /// Words of a Tcl list; fails with the reader's context when `text` is not a list.
@@ -64,7 +66,10 @@ double toReal(const ArgReader& a, const std::string& word, const std::string& wh
 domain::ViewerPlot readPlot(Runtime& rt, const ArgReader& a, const std::string& text) {
   const auto w = listWords(rt, a, text, "-plots item");
   const std::string where = "-plots item {" + text + "}";
-  if (w.size() < 4) a.fail(where + ": expected {label node tag dof disp|vel|accel} or {label ele tag response.. component}");
+  if (w.size() < 4)
+    a.fail(
+        where +
+        ": expected {label node tag dof disp|vel|accel} or {label ele tag response.. component}");
   domain::ViewerPlot p;
   p.label = w[0];
   p.tag = toInteger(a, w[2], where + ": tag");
@@ -74,10 +79,14 @@ domain::ViewerPlot readPlot(Runtime& rt, const ArgReader& a, const std::string& 
     p.dof = toInteger(a, w[3], where + ": dof") - 1;
     if (p.dof < 0) a.fail(where + ": dofs start at 1");
     using Q = domain::ViewerPlot::NodeQuantity;
-    if (w[4] == "disp") p.quantity = Q::Disp;
-    else if (w[4] == "vel") p.quantity = Q::Vel;
-    else if (w[4] == "accel") p.quantity = Q::Accel;
-    else a.fail(where + ": expected disp, vel or accel, got \"" + w[4] + "\"");
+    if (w[4] == "disp")
+      p.quantity = Q::Disp;
+    else if (w[4] == "vel")
+      p.quantity = Q::Vel;
+    else if (w[4] == "accel")
+      p.quantity = Q::Accel;
+    else
+      a.fail(where + ": expected disp, vel or accel, got \"" + w[4] + "\"");
   } else if (w[1] == "ele" || w[1] == "element") {
     p.source = domain::ViewerPlot::Source::Element;
     p.response.assign(w.begin() + 3, w.end() - 1);
@@ -99,7 +108,8 @@ std::vector<int> toIntegers(const ArgReader& a, const std::vector<std::string>& 
 
 /// The first words of an option item read as positive sizes named `names`.
 std::vector<double> positiveSizes(const ArgReader& a, const std::vector<std::string>& w,
-                                  std::initializer_list<const char*> names, const std::string& option) {
+                                  std::initializer_list<const char*> names,
+                                  const std::string& option) {
   std::vector<double> out;
   for (const char* name : names) {
     const double v = toReal(a, w[out.size()], option + ": " + name);
@@ -138,7 +148,8 @@ void viewerRecorderCommand(Runtime& rt, ArgReader& a) {
     for (const std::string& item : listWords(rt, a, *plots, "-plots"))
       options.plots.push_back(readPlot(rt, a, item));
   if (auto text = a.optionalWordOption("-beamSection"))
-    for (const auto& w : listItems(rt, a, *text, "-beamSection", 3, "{rect width depth tags..} or {circle diameter tags..}")) {
+    for (const auto& w : listItems(rt, a, *text, "-beamSection", 3,
+                                   "{rect width depth tags..} or {circle diameter tags..}")) {
       domain::ViewerBeamSection s;
       const std::string where = "-beamSection item {" + w[0] + " ..}";
       if (w[0] == "rect") {
@@ -153,7 +164,8 @@ void viewerRecorderCommand(Runtime& rt, ArgReader& a) {
       } else {
         a.fail(where + ": expected rect or circle, got \"" + w[0] + "\"");
       }
-      if (!(s.width > 0.0) || (s.shape == domain::ViewerBeamSection::Shape::Rect && !(s.depth > 0.0)))
+      if (!(s.width > 0.0) ||
+          (s.shape == domain::ViewerBeamSection::Shape::Rect && !(s.depth > 0.0)))
         a.fail(where + ": sizes must be positive");
       options.sections.push_back(std::move(s));
     }
@@ -185,7 +197,8 @@ void viewerRecorderCommand(Runtime& rt, ArgReader& a) {
   if (auto text = a.optionalWordOption("-gaps"))
     for (const auto& w : listItems(rt, a, *text, "-gaps", 3, "{label nodeA nodeB}")) {
       if (w.size() != 3) a.fail("-gaps item {" + w[0] + " ..}: expected {label nodeA nodeB}");
-      options.gaps.push_back({w[0], toInteger(a, w[1], "-gaps: nodeA"), toInteger(a, w[2], "-gaps: nodeB")});
+      options.gaps.push_back(
+          {w[0], toInteger(a, w[1], "-gaps: nodeA"), toInteger(a, w[2], "-gaps: nodeB")});
     }
   a.finish();
   auto recorder = std::make_unique<domain::ViewerRecorder>(std::move(options));

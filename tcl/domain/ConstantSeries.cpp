@@ -3,6 +3,8 @@
 
 namespace dabs::domain {
 
-std::string ConstantSeries::describe() const { return "Constant factor " + std::to_string(factor_); }
+std::string ConstantSeries::describe() const {
+  return "Constant factor " + std::to_string(factor_);
+}
 
 }  // namespace dabs::domain

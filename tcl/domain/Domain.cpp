@@ -12,7 +12,8 @@ Domain::Domain() = default;
 Domain::~Domain() { flushRecorders(); }
 
 Node& Domain::addNode(int tag, int ndm, int ndf, const Eigen::Vector3d& coords) {
-  if (nodes_.count(tag) != 0) throw InputError("", "node " + std::to_string(tag) + " already exists");
+  if (nodes_.count(tag) != 0)
+    throw InputError("", "node " + std::to_string(tag) + " already exists");
   if (ndf < 1 || ndf > 6) throw InputError("ndf", "must be 1 to 6");
   auto [it, inserted] = nodes_.emplace(tag, Node(tag, ndm, ndf, coords));
   (void)inserted;
@@ -70,7 +71,8 @@ elements::Element* Domain::findElement(int tag) {
 }
 
 void Domain::removeElement(int tag) {
-  if (elements_.count(tag) == 0) throw InputError("element", std::to_string(tag) + " does not exist");
+  if (elements_.count(tag) == 0)
+    throw InputError("element", std::to_string(tag) + " does not exist");
   for (const auto& [ptag, p] : patterns_) {
     if (p->kind() != LoadPattern::Kind::Plain) continue;
     for (const auto& l : static_cast<const PlainPattern&>(*p).elementLoads)
@@ -103,11 +105,12 @@ void Domain::removeNode(int tag) {
       for (const auto& l : plain.loads) uses = uses || l.node == tag;
       for (const auto& d : plain.prescribed) uses = uses || d.node == tag;
     } else if (p->kind() == LoadPattern::Kind::MultipleSupport) {
-      for (const auto& m : static_cast<const MultipleSupportPattern&>(*p).imposed) uses = uses || m.node == tag;
+      for (const auto& m : static_cast<const MultipleSupportPattern&>(*p).imposed)
+        uses = uses || m.node == tag;
     }
     if (uses)
-      throw InputError("node", std::to_string(tag) + " is loaded by pattern " + std::to_string(ptag) +
-                                   "; remove the pattern first");
+      throw InputError("node", std::to_string(tag) + " is loaded by pattern " +
+                                   std::to_string(ptag) + "; remove the pattern first");
   }
   fixes_.erase(std::remove_if(fixes_.begin(), fixes_.end(),
                               [tag](const SPConstraint& sp) { return sp.node == tag; }),
@@ -129,7 +132,8 @@ void Domain::addFix(int nodeTag, int dof) {
   }
   for (const auto& mp : mps_) {
     if (mp.constrainedNode == nodeTag &&
-        std::find(mp.constrainedDofs.begin(), mp.constrainedDofs.end(), dof) != mp.constrainedDofs.end())
+        std::find(mp.constrainedDofs.begin(), mp.constrainedDofs.end(), dof) !=
+            mp.constrainedDofs.end())
       throw InputError("dof", std::to_string(dof + 1) + " of node " + std::to_string(nodeTag) +
                                   " is already constrained by a multi-point constraint");
   }
@@ -206,7 +210,8 @@ void Domain::removePattern(int tag) {
       const bool fixed = std::any_of(fixes_.begin(), fixes_.end(), [&m](const SPConstraint& sp) {
         return sp.node == m.node && sp.dof == m.dof;
       });
-      if (m.replacedFix && !fixed && nodes_.count(m.node) != 0) fixes_.push_back(SPConstraint{m.node, m.dof});
+      if (m.replacedFix && !fixed && nodes_.count(m.node) != 0)
+        fixes_.push_back(SPConstraint{m.node, m.dof});
     }
   }
   patterns_.erase(it);
@@ -357,7 +362,8 @@ Eigen::VectorXd Domain::nodalLoad(int nodeTag) const {
   return p;
 }
 
-Eigen::VectorXd Domain::gatherElement(const elements::Element& e, Eigen::VectorXd Node::*field) const {
+Eigen::VectorXd Domain::gatherElement(const elements::Element& e,
+                                      Eigen::VectorXd Node::*field) const {
   Eigen::VectorXd out(e.numDof());
   Eigen::Index offset = 0;
   for (int nt : e.nodeTags()) {
@@ -370,12 +376,14 @@ Eigen::VectorXd Domain::gatherElement(const elements::Element& e, Eigen::VectorX
 
 Eigen::VectorXd Domain::elementRayleighForce(int elementTag) const {
   const elements::Element* e = findElement(elementTag);
-  if (e == nullptr) throw InputError("eleTag", "element " + std::to_string(elementTag) + " does not exist");
+  if (e == nullptr)
+    throw InputError("eleTag", "element " + std::to_string(elementTag) + " does not exist");
   const RayleighFactors r = elementRayleigh(elementTag);
   if (!r.any()) return Eigen::VectorXd::Zero(e->numDof());
   const Eigen::VectorXd v = gatherElement(*e, &Node::vel);
   return (r.alphaM * e->mass() + r.betaK * e->tangentStiff() + r.betaK0 * e->initialStiff() +
-          r.betaKc * e->committedStiff()) * v;
+          r.betaKc * e->committedStiff()) *
+         v;
 }
 
 std::optional<Eigen::VectorXd> Domain::elementResponse(int elementTag,
@@ -392,7 +400,8 @@ void Domain::calculateNodalReactions(bool includeInertia) {
   for (auto& [tag, n] : nodes_) n.reaction = -nodalLoad(tag);
   for (const auto& [etag, e] : elements_) {
     Eigen::VectorXd f = e->resistingForce();
-    if (includeInertia) f += e->mass() * gatherElement(*e, &Node::accel) + elementRayleighForce(etag);
+    if (includeInertia)
+      f += e->mass() * gatherElement(*e, &Node::accel) + elementRayleighForce(etag);
     Eigen::Index offset = 0;
     for (int nt : e->nodeTags()) {
       Node& n = nodes_.at(nt);

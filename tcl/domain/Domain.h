@@ -17,20 +17,23 @@
 
 namespace dabs::domain {
 
-/// Rayleigh damping factors, C = alphaM M + betaK K_current + betaK0 K_initial + betaKc K_committed.
+/// Rayleigh damping factors, C = alphaM M + betaK K_current + betaK0 K_initial + betaKc
+/// K_committed.
 struct RayleighFactors {
   double alphaM = 0.0;
   double betaK = 0.0;
   double betaK0 = 0.0;
   double betaKc = 0.0;
-  bool any() const noexcept { return alphaM != 0.0 || betaK != 0.0 || betaK0 != 0.0 || betaKc != 0.0; }
+  bool any() const noexcept {
+    return alphaM != 0.0 || betaK != 0.0 || betaK0 != 0.0 || betaKc != 0.0;
+  }
 };
 
 /// The model: nodes, elements, constraints, load patterns, recorders and the (pseudo) time. It owns
 /// everything through std::map<int, ...> (style.md section 4). Every mutator checks its input first
-/// and throws InputError before changing anything, so a rejected command leaves the model as it was.
-/// The analysis (tcl/analysis) reads the model through this interface and writes trial responses
-/// into the nodes.
+/// and throws InputError before changing anything, so a rejected command leaves the model as it
+/// was. The analysis (tcl/analysis) reads the model through this interface and writes trial
+/// responses into the nodes.
 class Domain {
  public:
   Domain();
@@ -55,7 +58,9 @@ class Domain {
   elements::Element* findElement(int tag);
   const std::map<int, Node>& nodes() const noexcept { return nodes_; }
   std::map<int, Node>& nodes() noexcept { return nodes_; }
-  const std::map<int, std::unique_ptr<elements::Element>>& elements() const noexcept { return elements_; }
+  const std::map<int, std::unique_ptr<elements::Element>>& elements() const noexcept {
+    return elements_;
+  }
   /// Removes an element / a node (the node must not be used by an element); throws when absent.
   void removeElement(int tag);
   void removeNode(int tag);
@@ -96,7 +101,8 @@ class Domain {
   /// A named element response: the element's own responses, plus `dampingForces` (also
   /// `dampingForce`, `rayleighForces`, `RayleighForces`, as in OpenSees), the Rayleigh force,
   /// which the domain forms. nullopt when the element or the name is unknown.
-  std::optional<Eigen::VectorXd> elementResponse(int elementTag, std::span<const std::string> args) const;
+  std::optional<Eigen::VectorXd> elementResponse(int elementTag,
+                                                 std::span<const std::string> args) const;
   /// Modal damping ratio per mode (empty when none).
   std::vector<double> modalDamping;
 

@@ -12,14 +12,19 @@ namespace dabs::domain {
 DriftRecorder::DriftRecorder(RecorderOutput output, std::vector<int> iNodes,
                              std::vector<int> jNodes, std::vector<int> dofs,
                              std::vector<int> perpDirns)
-    : ResponseRecorder(std::move(output)), iNodes_(std::move(iNodes)), jNodes_(std::move(jNodes)),
-      dofs_(std::move(dofs)), perp_(std::move(perpDirns)) {}
+    : ResponseRecorder(std::move(output)),
+      iNodes_(std::move(iNodes)),
+      jNodes_(std::move(jNodes)),
+      dofs_(std::move(dofs)),
+      perp_(std::move(perpDirns)) {}
 
 void DriftRecorder::initialize(const Domain& domain) {
   const std::size_t n = iNodes_.size();
   if (jNodes_.size() != n) throw InputError("-jNode", "needs as many nodes as -iNode");
-  if (dofs_.size() != n && dofs_.size() != 1) throw InputError("-dof", "needs one dof or one per node pair");
-  if (perp_.size() != n && perp_.size() != 1) throw InputError("-perpDirn", "needs one direction or one per node pair");
+  if (dofs_.size() != n && dofs_.size() != 1)
+    throw InputError("-dof", "needs one dof or one per node pair");
+  if (perp_.size() != n && perp_.size() != 1)
+    throw InputError("-perpDirn", "needs one direction or one per node pair");
   lengths_.clear();
   for (std::size_t k = 0; k < n; ++k) {
     const Node& i = domain.node(iNodes_[k]);
@@ -29,8 +34,9 @@ void DriftRecorder::initialize(const Domain& domain) {
     const int d = dofs_[dofs_.size() == 1 ? 0 : k];
     const int ndf = std::min(i.ndf(), j.ndf());
     if (d < 0 || d >= ndf)
-      throw InputError("-dof", "must be 1 to " + std::to_string(ndf) + " for nodes " + std::to_string(iNodes_[k]) +
-                                   " and " + std::to_string(jNodes_[k]) + ", got " + std::to_string(d + 1));
+      throw InputError("-dof", "must be 1 to " + std::to_string(ndf) + " for nodes " +
+                                   std::to_string(iNodes_[k]) + " and " +
+                                   std::to_string(jNodes_[k]) + ", got " + std::to_string(d + 1));
     const double length = j.coords()(p) - i.coords()(p);
     if (length == 0.0)
       throw InputError("-perpDirn", "nodes " + std::to_string(iNodes_[k]) + " and " +

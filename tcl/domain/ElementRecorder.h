@@ -14,7 +14,8 @@ namespace dabs::domain {
 /// an unknown response is an input error when the recorder is created.
 class ElementRecorder final : public ResponseRecorder {
  public:
-  ElementRecorder(RecorderOutput output, std::vector<int> elements, std::vector<std::string> response);
+  ElementRecorder(RecorderOutput output, std::vector<int> elements,
+                  std::vector<std::string> response);
   void initialize(const Domain& domain) override;
 
  protected:

@@ -102,7 +102,7 @@ class GroundMotion {
   double integrated(const std::vector<double>& values, double t) const;
   std::shared_ptr<const TimeSeries> accel_, vel_, disp_;
   double fact_;
-  double step_ = 0.0;                 // sampling interval of the integrated histories
+  double step_ = 0.0;                        // sampling interval of the integrated histories
   mutable std::vector<double> velSamples_;   // integrated velocity at k*step_ (no vel series)
   mutable std::vector<double> dispSamples_;  // integrated displacement at k*step_ (no disp series)
 };
@@ -121,7 +121,8 @@ class MultipleSupportPattern : public LoadPattern {
     /// dof again.
     bool replacedFix = false;
   };
-  explicit MultipleSupportPattern(int tag) : LoadPattern(tag, Kind::MultipleSupport, nullptr, 1.0) {}
+  explicit MultipleSupportPattern(int tag)
+      : LoadPattern(tag, Kind::MultipleSupport, nullptr, 1.0) {}
   std::map<int, std::unique_ptr<GroundMotion>> groundMotions;
   std::vector<ImposedMotion> imposed;
 };

@@ -37,7 +37,8 @@ const elements::BeamIntegration& ModelBuilder::integration(int tag) const {
 }
 std::shared_ptr<const TimeSeries> ModelBuilder::series(int tag) const {
   auto it = timeSeries.find(tag);
-  if (it == timeSeries.end()) throw InputError("timeSeries", std::to_string(tag) + " does not exist");
+  if (it == timeSeries.end())
+    throw InputError("timeSeries", std::to_string(tag) + " does not exist");
   return it->second;
 }
 

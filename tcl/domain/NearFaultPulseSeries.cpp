@@ -13,7 +13,8 @@ void NearFaultPulseSeries::Params::validate() const {
   if (!std::isfinite(Vp)) throw InputError("-Vp", "must be a finite number");
   if (!(gamma > 1.0) || !std::isfinite(gamma)) throw InputError("-gamma", "must be greater than 1");
   if (!std::isfinite(nu)) throw InputError("-nu", "must be a finite number");
-  if (!(t0 >= 0.5 * gamma * Tp)) throw InputError("-t0", "must be at least gamma Tp / 2 so the pulse starts at t >= 0");
+  if (!(t0 >= 0.5 * gamma * Tp))
+    throw InputError("-t0", "must be at least gamma Tp / 2 so the pulse starts at t >= 0");
 }
 
 double NearFaultPulseSeries::velocity(double t) const {

@@ -4,10 +4,17 @@
 namespace dabs::domain {
 
 Node::Node(int tag, int ndm, int ndf, const Eigen::Vector3d& coords)
-    : disp(Eigen::VectorXd::Zero(ndf)), vel(Eigen::VectorXd::Zero(ndf)),
-      accel(Eigen::VectorXd::Zero(ndf)), committedDisp(Eigen::VectorXd::Zero(ndf)),
-      committedVel(Eigen::VectorXd::Zero(ndf)), committedAccel(Eigen::VectorXd::Zero(ndf)),
-      reaction(Eigen::VectorXd::Zero(ndf)), tag_(tag), ndm_(ndm), ndf_(ndf), coords_(coords),
+    : disp(Eigen::VectorXd::Zero(ndf)),
+      vel(Eigen::VectorXd::Zero(ndf)),
+      accel(Eigen::VectorXd::Zero(ndf)),
+      committedDisp(Eigen::VectorXd::Zero(ndf)),
+      committedVel(Eigen::VectorXd::Zero(ndf)),
+      committedAccel(Eigen::VectorXd::Zero(ndf)),
+      reaction(Eigen::VectorXd::Zero(ndf)),
+      tag_(tag),
+      ndm_(ndm),
+      ndf_(ndf),
+      coords_(coords),
       mass_(Eigen::MatrixXd::Zero(ndf, ndf)) {}
 
 void Node::commitState() {

@@ -11,8 +11,12 @@ namespace dabs::domain {
 NodeRecorder::NodeRecorder(RecorderOutput output, std::vector<int> nodes, std::vector<int> dofs,
                            Response response, int mode,
                            std::vector<std::shared_ptr<const TimeSeries>> series)
-    : ResponseRecorder(std::move(output)), nodes_(std::move(nodes)), dofs_(std::move(dofs)),
-      response_(response), mode_(mode), series_(std::move(series)) {}
+    : ResponseRecorder(std::move(output)),
+      nodes_(std::move(nodes)),
+      dofs_(std::move(dofs)),
+      response_(response),
+      mode_(mode),
+      series_(std::move(series)) {}
 
 void NodeRecorder::initialize(const Domain& domain) {
   for (int d : dofs_)

@@ -15,12 +15,19 @@ namespace dabs::domain {
 
 PathSeries::PathSeries(int tag, double dt, std::vector<double> values, double factor,
                        double startTime, bool useLast)
-    : TimeSeries(tag), dt_(dt), startTime_(startTime), values_(std::move(values)), factor_(factor),
+    : TimeSeries(tag),
+      dt_(dt),
+      startTime_(startTime),
+      values_(std::move(values)),
+      factor_(factor),
       useLast_(useLast) {}
 
 PathSeries::PathSeries(int tag, std::vector<double> times, std::vector<double> values,
                        double factor, bool useLast)
-    : TimeSeries(tag), times_(std::move(times)), values_(std::move(values)), factor_(factor),
+    : TimeSeries(tag),
+      times_(std::move(times)),
+      values_(std::move(values)),
+      factor_(factor),
       useLast_(useLast) {}
 
 double PathSeries::factor(double t) const {
@@ -29,7 +36,8 @@ double PathSeries::factor(double t) const {
     if (t < startTime_) return 0.0;
     const double x = (t - startTime_) / dt_;
     // Compared as doubles before the cast: with a tiny dt, x can exceed any index (1e20).
-    if (!(x < static_cast<double>(values_.size() - 1))) return useLast_ ? factor_ * values_.back() : 0.0;
+    if (!(x < static_cast<double>(values_.size() - 1)))
+      return useLast_ ? factor_ * values_.back() : 0.0;
     const auto i1 = static_cast<std::size_t>(std::floor(x));
     const std::size_t i2 = i1 + 1;
     const double frac = x - static_cast<double>(i1);
@@ -54,7 +62,8 @@ double PathSeries::duration() const {
 double PathSeries::samplingInterval() const {
   if (dt_ > 0.0) return dt_;
   double smallest = duration();
-  for (std::size_t i = 1; i < times_.size(); ++i) smallest = std::min(smallest, times_[i] - times_[i - 1]);
+  for (std::size_t i = 1; i < times_.size(); ++i)
+    smallest = std::min(smallest, times_[i] - times_[i - 1]);
   return smallest > 0.0 ? smallest : 0.01;
 }
 
@@ -148,7 +157,8 @@ RecordFile readRecordFile(const std::string& path) {
   if (ec || !std::filesystem::exists(status))
     throw InputError("-filePath", "cannot open \"" + path + "\": no such file");
   if (!std::filesystem::is_regular_file(status))
-    throw InputError("-filePath", "\"" + path + "\" is not a regular file; a record is a text file of numbers");
+    throw InputError("-filePath",
+                     "\"" + path + "\" is not a regular file; a record is a text file of numbers");
   std::ifstream in(path, std::ios::binary);
   if (!in) throw InputError("-filePath", "cannot open \"" + path + "\"");
   RecordFile out;
@@ -176,7 +186,8 @@ RecordFile readRecordFile(const std::string& path) {
   // Numbers until the first non-number (a trailer such as "*** End Data ***" ends the record);
   // with a header, exactly NPTS values.
   bool more = true;
-  for (std::size_t i = first; more && i < head.size(); ++i) more = takeNumbers(head[i], out.values, npts);
+  for (std::size_t i = first; more && i < head.size(); ++i)
+    more = takeNumbers(head[i], out.values, npts);
   constexpr std::size_t kChunk = 1 << 16;
   std::string pending;
   char buffer[kChunk];
@@ -196,12 +207,14 @@ RecordFile readRecordFile(const std::string& path) {
   if (npts >= 0) {
     if (static_cast<long>(out.values.size()) < npts)
       throw InputError("-filePath", "\"" + path + "\" announces NPTS=" + std::to_string(npts) +
-                                        " but holds " + std::to_string(out.values.size()) + " values");
+                                        " but holds " + std::to_string(out.values.size()) +
+                                        " values");
     out.values.resize(static_cast<std::size_t>(npts));
   }
   if (out.values.empty())
-    throw InputError("-filePath", "\"" + path + "\" holds no numbers; a record is a text file of numbers "
-                                  "(optionally after a PEER header with NPTS= and DT=)");
+    throw InputError("-filePath", "\"" + path +
+                                      "\" holds no numbers; a record is a text file of numbers "
+                                      "(optionally after a PEER header with NPTS= and DT=)");
   return out;
 }
 

@@ -32,7 +32,8 @@ class RecorderFile {
 
   /// Writes `parts` to `path + ".tmp"` and renames it to `path`, so a reader never sees half a
   /// file (the viewer page); throws InputError on any failure.
-  static void replaceAtomically(const std::string& path, std::initializer_list<std::string_view> parts);
+  static void replaceAtomically(const std::string& path,
+                                std::initializer_list<std::string_view> parts);
 
  private:
   std::string path_;

@@ -22,7 +22,8 @@ void ResponseRecorder::appendNumber(double v) {
   // std::to_chars with a precision formats as printf's %.*g does (C++17 [charconv]), several
   // times faster, which matters for recorders of every node.
   char text[64];
-  const auto result = std::to_chars(text, text + sizeof text, v, std::chars_format::general, output_.precision);
+  const auto result =
+      std::to_chars(text, text + sizeof text, v, std::chars_format::general, output_.precision);
   file_.buffer().append(text, result.ptr);
 }
 

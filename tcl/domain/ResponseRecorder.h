@@ -12,10 +12,10 @@ namespace dabs::domain {
 /// Output options shared by the Node, Element and Drift recorders.
 struct RecorderOutput {
   std::string file;
-  bool time = false;       ///< -time: first column is the time
-  double deltaT = 0.0;     ///< -dT: record only when at least dT passed since the last record
-  int precision = 6;       ///< -precision: significant digits (C++ stream default, like %g)
-  bool envelope = false;   ///< Envelope recorders: min, max and max |value| rows, written at flush
+  bool time = false;      ///< -time: first column is the time
+  double deltaT = 0.0;    ///< -dT: record only when at least dT passed since the last record
+  int precision = 6;      ///< -precision: significant digits (C++ stream default, like %g)
+  bool envelope = false;  ///< Envelope recorders: min, max and max |value| rows, written at flush
 };
 
 /// A recorder writing one row of numbers per recorded step, OpenSees' layout: optional time, then

@@ -12,8 +12,13 @@ class TrigSeries final : public TimeSeries {
  public:
   TrigSeries(int tag, double tStart, double tEnd, double period, double factor, double shift,
              double zeroShift)
-      : TimeSeries(tag), tStart_(tStart), tEnd_(tEnd), period_(period), factor_(factor),
-        shift_(shift), zeroShift_(zeroShift) {}
+      : TimeSeries(tag),
+        tStart_(tStart),
+        tEnd_(tEnd),
+        period_(period),
+        factor_(factor),
+        shift_(shift),
+        zeroShift_(zeroShift) {}
   double factor(double t) const override;
   double duration() const override { return tEnd_; }
   double samplingInterval() const override { return period_ / 200.0; }

@@ -29,7 +29,8 @@ class Communicator {
   virtual int size() const = 0;
   /// Returns when every process has called it.
   virtual void barrier() = 0;
-  /// Sends `text` to process `dest` (not this one) under `tag`; returns once the text is handed over.
+  /// Sends `text` to process `dest` (not this one) under `tag`; returns once the text is handed
+  /// over.
   virtual void send(int dest, int tag, std::string_view text) = 0;
   /// Waits for a message under `tag` from `source` (or kAnySource) and returns it.
   virtual Message receive(int source, int tag) = 0;

@@ -42,7 +42,8 @@ std::string text(Tcl_Obj* obj) {
   return std::string(s, static_cast<std::size_t>(size));
 }
 
-// Reads a dict-shaped list into (key, value) pairs; nullopt when its length is odd or it is no list.
+// Reads a dict-shaped list into (key, value) pairs; nullopt when its length is odd or it is no
+// list.
 std::optional<Record> pairs(Tcl_Obj* obj) {
   int n = 0;
   Tcl_Obj** items = nullptr;
@@ -69,23 +70,28 @@ std::vector<Job> readJobs(ArgReader& a, Tcl_Obj* list) {
   for (int i = 0; i < n; ++i) {
     std::optional<Record> params = pairs(items[i]);
     if (!params)
-      a.fail(1, "jobList", "job " + std::to_string(i + 1) +
-                               " expected a dict of parameters (key value ...), got \"" +
-                               text(items[i]) + "\"");
+      a.fail(1, "jobList",
+             "job " + std::to_string(i + 1) +
+                 " expected a dict of parameters (key value ...), got \"" + text(items[i]) + "\"");
     Job job;
     const std::string number = std::to_string(i + 1);
-    job.id = "job" + std::string(static_cast<std::size_t>(width) - std::min(number.size(), static_cast<std::size_t>(width)), '0') + number;
+    job.id = "job" +
+             std::string(static_cast<std::size_t>(width) -
+                             std::min(number.size(), static_cast<std::size_t>(width)),
+                         '0') +
+             number;
     for (const auto& [key, value] : *params) {
       if (key == "id") job.id = value;
       if (isFixedColumn(key))
-        a.fail(1, "jobList", "job " + std::to_string(i + 1) + " has a parameter named \"" + key +
-                                 "\", a column the ensemble writes itself");
+        a.fail(1, "jobList",
+               "job " + std::to_string(i + 1) + " has a parameter named \"" + key +
+                   "\", a column the ensemble writes itself");
     }
     if (!validId(job.id))
-      a.fail(1, "jobList", "job " + std::to_string(i + 1) + " id \"" + job.id +
-                               "\" expected letters, digits, '.', '_' and '-' (it names a file)");
-    if (!ids.insert(job.id).second)
-      a.fail(1, "jobList", "job id \"" + job.id + "\" appears twice");
+      a.fail(1, "jobList",
+             "job " + std::to_string(i + 1) + " id \"" + job.id +
+                 "\" expected letters, digits, '.', '_' and '-' (it names a file)");
+    if (!ids.insert(job.id).second) a.fail(1, "jobList", "job id \"" + job.id + "\" appears twice");
     job.dict = items[i];
     job.params = std::move(*params);
     jobs.push_back(std::move(job));
@@ -99,7 +105,8 @@ std::optional<std::string> valueOf(const Record& record, const std::string& key)
   return std::nullopt;
 }
 
-// A stored result that a rerun keeps: the job finished (ok or failed analysis) with these parameters.
+// A stored result that a rerun keeps: the job finished (ok or failed analysis) with these
+// parameters.
 bool isDone(const std::optional<Record>& record, const Job& job) {
   if (!record || valueOf(*record, "job") != job.id) return false;
   const std::optional<std::string> status = valueOf(*record, "status");
@@ -163,8 +170,12 @@ std::string runJob(Runtime& rt, ParallelState& state, Tcl_Obj* command, const Jo
   Tcl_DecrRefCount(result);
   char secondsText[32];
   std::snprintf(secondsText, sizeof secondsText, "%.3f", seconds);
-  Record record = {{"job", job.id},     {"status", status},         {"code", code},
-                   {"error", error},    {"rank", std::to_string(rank)}, {"seconds", secondsText}};
+  Record record = {{"job", job.id},
+                   {"status", status},
+                   {"code", code},
+                   {"error", error},
+                   {"rank", std::to_string(rank)},
+                   {"seconds", secondsText}};
   record.insert(record.end(), job.params.begin(), job.params.end());
   record.insert(record.end(), results.begin(), results.end());
   return ResultStore::toCsv(record);
@@ -225,7 +236,9 @@ void ensembleCmd(Runtime& rt, ArgReader& a) {
   JobFarm farm(comm);
   farm.run(
       pending,
-      [&](int index) { return runJob(rt, state, command, jobs[static_cast<std::size_t>(index)], rank); },
+      [&](int index) {
+        return runJob(rt, state, command, jobs[static_cast<std::size_t>(index)], rank);
+      },
       [&](int index, const std::string& csv) {
         const auto i = static_cast<std::size_t>(index);
         records[i] = ResultStore::fromCsv(csv);

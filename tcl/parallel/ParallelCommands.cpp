@@ -5,11 +5,13 @@
 //   getNP                       number of processes
 //   barrier                     waits until every process has reached it
 //   send -pid p value           sends value to process p (not this one)
-//   send value                  process 0 only: to every other process, each taking it with `recv varName`
-//   recv -pid p|ANY varName     waits for a value from p (or any process), sets varName to it and
+//   send value                  process 0 only: to every other process, each taking it with `recv
+//   varName` recv -pid p|ANY varName     waits for a value from p (or any process), sets varName to
+//   it and
 //                               returns the sender's number (OpenSees returns nothing)
-//   recv varName                processes other than 0: takes the value process 0 sent with `send value`
-//   Bcast ?value ...?           collective: every process returns process 0's value(s) (OpenSees
+//   recv varName                processes other than 0: takes the value process 0 sent with `send
+//   value` Bcast ?value ...?           collective: every process returns process 0's value(s)
+//   (OpenSees
 //                               returns them on the other processes only)
 #include "tcl/parallel/ParallelCommands.h"
 
@@ -31,7 +33,8 @@ constexpr int kMessageTag = 0;
 Communicator& messages(Runtime& rt, ArgReader& a) {
   ParallelState& state = ParallelState::of(rt.interp);
   if (state.inJob)
-    a.fail("not available inside an ensemble job (jobs are independent; process 0 collects results)");
+    a.fail(
+        "not available inside an ensemble job (jobs are independent; process 0 collects results)");
   return *state.messages;
 }
 
@@ -41,10 +44,10 @@ void setInt(Runtime& rt, int value) { Tcl_SetObjResult(rt.interp, Tcl_NewIntObj(
 int readPid(ArgReader& a, const Communicator& comm, const std::string& token, bool any) {
   if (any && (token == "ANY" || token == "ANY_SOURCE" || token == "MPI_ANY_SOURCE"))
     return Communicator::kAnySource;
-  const std::string range = comm.size() == 1
-                                ? " other than this process, the only one (getNP is 1)"
-                                : " from 0 to " + std::to_string(comm.size() - 1) +
-                                      " other than this process (" + std::to_string(comm.rank()) + ")";
+  const std::string range = comm.size() == 1 ? " other than this process, the only one (getNP is 1)"
+                                             : " from 0 to " + std::to_string(comm.size() - 1) +
+                                                   " other than this process (" +
+                                                   std::to_string(comm.rank()) + ")";
   std::size_t used = 0;
   int pid = -1;
   try {
@@ -83,8 +86,10 @@ void sendCmd(Runtime& rt, ArgReader& a) {
     return;
   }
   if (comm.rank() != 0)
-    a.fail("without -pid only process 0 sends (to every other process, which takes it with "
-           "`recv varName`); this is process " + std::to_string(comm.rank()));
+    a.fail(
+        "without -pid only process 0 sends (to every other process, which takes it with "
+        "`recv varName`); this is process " +
+        std::to_string(comm.rank()));
   comm.broadcast(value, 0);
 }
 
@@ -101,15 +106,16 @@ void recvCmd(Runtime& rt, ArgReader& a) {
     message = comm.receive(source, kMessageTag);
   } else {
     if (comm.rank() == 0)
-      a.fail("without -pid a process takes what process 0 sent with `send value`; process 0 "
-             "cannot receive from itself");
+      a.fail(
+          "without -pid a process takes what process 0 sent with `send value`; process 0 "
+          "cannot receive from itself");
     message.text = comm.broadcast(std::string(), 0);
     message.source = 0;
   }
   Tcl_Obj* value = Tcl_NewStringObj(message.text.data(), static_cast<int>(message.text.size()));
   if (Tcl_ObjSetVar2(rt.interp, var, nullptr, value, TCL_LEAVE_ERR_MSG) == nullptr)
-    a.fail(std::string("cannot set variable \"") + Tcl_GetString(var) + "\": " +
-           Tcl_GetStringResult(rt.interp));
+    a.fail(std::string("cannot set variable \"") + Tcl_GetString(var) +
+           "\": " + Tcl_GetStringResult(rt.interp));
   setInt(rt, message.source);
 }
 
@@ -121,8 +127,9 @@ void bcastCmd(Runtime& rt, ArgReader& a) {
     std::vector<Tcl_Obj*> values;
     while (a.hasMore()) values.push_back(a.object("value"));
     // One value goes as it is; several as a Tcl list (OpenSees sends several numbers).
-    Tcl_Obj* list = values.size() == 1 ? values[0] : Tcl_NewListObj(static_cast<int>(values.size()),
-                                                                     values.data());
+    Tcl_Obj* list = values.size() == 1
+                        ? values[0]
+                        : Tcl_NewListObj(static_cast<int>(values.size()), values.data());
     Tcl_IncrRefCount(list);
     value = Tcl_GetString(list);
     Tcl_DecrRefCount(list);

@@ -9,7 +9,9 @@ namespace {
 
 constexpr const char* kKey = "dabs::parallel";
 
-void deleteState(ClientData data, Tcl_Interp* /*interp*/) { delete static_cast<ParallelState*>(data); }
+void deleteState(ClientData data, Tcl_Interp* /*interp*/) {
+  delete static_cast<ParallelState*>(data);
+}
 
 ParallelState* find(Tcl_Interp* interp) {
   return static_cast<ParallelState*>(Tcl_GetAssocData(interp, kKey, nullptr));

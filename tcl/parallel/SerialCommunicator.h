@@ -17,7 +17,9 @@ class SerialCommunicator final : public Communicator {
   Message receive(int source, int tag) override;
   std::optional<Message> tryReceive(int /*tag*/) override { return std::nullopt; }
   std::string broadcast(std::string text, int /*root*/) override { return text; }
-  std::unique_ptr<Communicator> duplicate() override { return std::make_unique<SerialCommunicator>(); }
+  std::unique_ptr<Communicator> duplicate() override {
+    return std::make_unique<SerialCommunicator>();
+  }
   bool allowsServiceThread() const override { return true; }
 };
 

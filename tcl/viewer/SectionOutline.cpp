@@ -19,7 +19,9 @@ std::vector<double> circleOutline(double d) {
 }
 
 std::vector<double> fiberOutline(const materials::section::FiberSection3d& s) {
-  struct P { double y, z; };
+  struct P {
+    double y, z;
+  };
   std::vector<P> p;
   double area = 0.0, cy = 0.0, cz = 0.0;
   for (int i = 0; i < s.numFibers(); ++i) {

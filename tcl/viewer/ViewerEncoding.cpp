@@ -67,8 +67,7 @@ void appendSeries(std::string& json, std::string& bytes, const std::vector<doubl
     const double v = data[first + k * stride];
     if (std::isfinite(v)) peak = std::max(peak, std::abs(v));
   }
-  const double q =
-      integers || peak == 0.0 ? 1.0 : peak / levels;
+  const double q = integers || peak == 0.0 ? 1.0 : peak / levels;
   json += '[';
   appendNumber(json, q, 17);
   json += ',';

@@ -25,7 +25,6 @@ namespace {
 // Relative tolerance on -dT, as in ResponseRecorder: round-off in accumulated time skips no frame.
 constexpr double kDeltaTTolerance = 1e-10;
 
-
 double nodeValue(const Node& n, int dof, ViewerPlot::NodeQuantity quantity) {
   if (dof >= n.ndf()) return 0.0;
   switch (quantity) {
@@ -35,7 +34,6 @@ double nodeValue(const Node& n, int dof, ViewerPlot::NodeQuantity quantity) {
   }
   return 0.0;
 }
-
 
 }  // namespace
 
@@ -105,8 +103,8 @@ void ViewerRecorder::initialize(const Domain& domain) {
     for (DrawnElement& d : elements_)
       if (d.tag == tag) {
         if (d.kind != kind)
-          throw InputError(option, "element " + std::to_string(tag) + " (" + d.type + ") is not a " +
-                                       std::string(kind));
+          throw InputError(option, "element " + std::to_string(tag) + " (" + d.type +
+                                       ") is not a " + std::string(kind));
         return d;
       }
     throw InputError(option, "element " + std::to_string(tag) +
@@ -139,7 +137,8 @@ void ViewerRecorder::initialize(const Domain& domain) {
   for (const ViewerGap& g : options_.gaps)
     for (int n : {g.nodeA, g.nodeB})
       if (drawn.count(n) == 0)
-        throw InputError("-gaps", "\"" + g.label + "\": node " + std::to_string(n) + " is not drawn");
+        throw InputError("-gaps",
+                         "\"" + g.label + "\": node " + std::to_string(n) + " is not drawn");
   for (const ViewerPlot& p : options_.plots) {
     if (p.source == ViewerPlot::Source::Node) {
       const Node& n = domain.node(p.tag);
@@ -150,8 +149,8 @@ void ViewerRecorder::initialize(const Domain& domain) {
     }
     const elements::Element* e = domain.findElement(p.tag);
     if (e == nullptr)
-      throw InputError("-plots", "\"" + p.label + "\": element " + std::to_string(p.tag) +
-                                     " does not exist");
+      throw InputError("-plots",
+                       "\"" + p.label + "\": element " + std::to_string(p.tag) + " does not exist");
     const auto r = domain.elementResponse(p.tag, p.response);
     if (!r || p.component < 0 || p.component >= r->size())
       throw InputError("-plots", "\"" + p.label + "\": element " + std::to_string(p.tag) + " (" +
@@ -173,7 +172,8 @@ void ViewerRecorder::record(const Domain& domain) {
     // after the recorder); the recorded series keep one value per pattern per frame.
     ground_.clear();
     for (const auto& [tag, p] : domain.patterns())
-      if (const auto* u = dynamic_cast<const UniformExcitation*>(p.get()); u != nullptr && u->dof() < 3)
+      if (const auto* u = dynamic_cast<const UniformExcitation*>(p.get());
+          u != nullptr && u->dof() < 3)
         ground_.emplace_back(tag, u->dof());
   }
   time_.push_back(t);
@@ -353,9 +353,8 @@ void ViewerRecorder::write() {
   // Written to a temporary file and renamed, so a browser never reads half a page.
   const std::string json = dataJson();
   const std::size_t after = at + viewer::kViewerDataMarker.size();
-  RecorderFile::replaceAtomically(
-      options_.file, {std::string_view(template_).substr(0, at), json,
-                      std::string_view(template_).substr(after)});
+  RecorderFile::replaceAtomically(options_.file, {std::string_view(template_).substr(0, at), json,
+                                                  std::string_view(template_).substr(after)});
   written_ = frames();
   everWritten_ = true;
   lastWrite_ = std::chrono::steady_clock::now();

@@ -15,13 +15,13 @@ namespace dabs::domain {
 struct ViewerPlot {
   enum class Source { Node, Element };
   enum class NodeQuantity { Disp, Vel, Accel };
-  std::string label;                   ///< name shown above the plot
+  std::string label;  ///< name shown above the plot
   Source source = Source::Node;
-  int tag = 0;                         ///< node or element tag
-  int dof = 0;                         ///< node dof, 0-based
+  int tag = 0;  ///< node or element tag
+  int dof = 0;  ///< node dof, 0-based
   NodeQuantity quantity = NodeQuantity::Disp;
-  std::vector<std::string> response;   ///< element response words, e.g. {"gap"}
-  int component = 0;                   ///< element response component, 0-based
+  std::vector<std::string> response;  ///< element response words, e.g. {"gap"}
+  int component = 0;                  ///< element response component, 0-based
 };
 
 /// Cross-section drawn for beam elements (`-beamSection`): a rectangle width x depth (local y x
@@ -29,21 +29,21 @@ struct ViewerPlot {
 struct ViewerBeamSection {
   enum class Shape { Rect, Circle };
   Shape shape = Shape::Rect;
-  double width = 0.0;                  ///< rectangle width along local y, or circle diameter (m)
-  double depth = 0.0;                  ///< rectangle depth along local z (m)
-  std::vector<int> elements;           ///< beam element tags
+  double width = 0.0;         ///< rectangle width along local y, or circle diameter (m)
+  double depth = 0.0;         ///< rectangle depth along local z (m)
+  std::vector<int> elements;  ///< beam element tags
 };
 
 /// Bearing pads drawn between the two nodes of bearing elements (`-bearingPad`).
 struct ViewerPad {
-  double lx = 0.0, ly = 0.0;           ///< plan size along global X and Y (m)
-  std::vector<int> elements;           ///< bearing element tags
+  double lx = 0.0, ly = 0.0;  ///< plan size along global X and Y (m)
+  std::vector<int> elements;  ///< bearing element tags
 };
 
 /// Solid blocks drawn at nodes and moving with them (`-block`): pier caps, footings.
 struct ViewerBlock {
-  double lx = 0.0, ly = 0.0, lz = 0.0; ///< size along global X, Y, Z (m)
-  double dz = 0.0;                     ///< centre of the block above the node (m)
+  double lx = 0.0, ly = 0.0, lz = 0.0;  ///< size along global X, Y, Z (m)
+  double dz = 0.0;                      ///< centre of the block above the node (m)
   std::vector<int> nodes;
 };
 
@@ -55,11 +55,11 @@ struct ViewerGap {
 
 /// Options of `recorder Viewer`.
 struct ViewerOptions {
-  std::string file;                    ///< output HTML page
-  double deltaT = 0.0;                 ///< record a frame only when at least dT passed (0: every step)
-  std::vector<int> nodes;              ///< nodes drawn (empty: all nodes when the recorder is created)
-  std::vector<ViewerPlot> plots;       ///< plotted time histories
-  std::string title;                   ///< page title
+  std::string file;               ///< output HTML page
+  double deltaT = 0.0;            ///< record a frame only when at least dT passed (0: every step)
+  std::vector<int> nodes;         ///< nodes drawn (empty: all nodes when the recorder is created)
+  std::vector<ViewerPlot> plots;  ///< plotted time histories
+  std::string title;              ///< page title
   std::vector<ViewerBeamSection> sections;  ///< drawn beam sections (fiber sections: automatic)
   std::vector<ViewerPad> pads;              ///< drawn bearing pads
   std::vector<ViewerBlock> blocks;          ///< drawn blocks at nodes
@@ -123,8 +123,8 @@ class ViewerRecorder final : public Recorder {
   int ndm_ = 1;
   bool initialized_ = false;  // initialize() succeeded
   std::vector<DrawnElement> elements_;
-  std::vector<int> contacts_;  // nodeToSurface element tags
-  std::vector<int> bearings_;  // yoshidaBearing element tags
+  std::vector<int> contacts_;                // nodeToSurface element tags
+  std::vector<int> bearings_;                // yoshidaBearing element tags
   std::vector<std::pair<int, int>> ground_;  // UniformExcitation pattern tag, dof (0-based)
   // Recorded values, frame by frame: time; 3 translations per node; status, gap and normal force
   // per contact; damage and shear strain per bearing; ground acceleration per pattern; one value

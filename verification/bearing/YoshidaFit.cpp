@@ -12,10 +12,10 @@
 
 namespace dabs::calibration {
 
-constexpr double kLocalXtol = 1e-4;   // BOBYQA: step in the scaled variables [0, 1]
-constexpr double kLocalFtol = 1e-7;   // BOBYQA: relative change of the objective
+constexpr double kLocalXtol = 1e-4;  // BOBYQA: step in the scaled variables [0, 1]
+constexpr double kLocalFtol = 1e-7;  // BOBYQA: relative change of the objective
 constexpr int kLocalRestarts = 6;
-constexpr double kLocalInitialStep = 0.02;  // BOBYQA's first trust region (scaled variables)
+constexpr double kLocalInitialStep = 0.02;    // BOBYQA's first trust region (scaled variables)
 constexpr double kPolishSubIncrement = 0.05;  // sub-step (fraction of U0) of the restarts
 constexpr int kFinalEvaluations = 150;        // last BOBYQA round, on the shipped sub-step
 constexpr double kFinalInitialStep = 0.002;
@@ -60,7 +60,8 @@ Params fromScaled(const Target& t, const std::vector<double>& s) {
   std::array<double, kNumParams> v{};
   for (int i = 0; i < kNumParams; ++i) {
     const double w = std::clamp(s[i], 0.0, 1.0);
-    v[i] = kLogScale[i] ? t.lo[i] * std::pow(t.hi[i] / t.lo[i], w) : t.lo[i] + w * (t.hi[i] - t.lo[i]);
+    v[i] =
+        kLogScale[i] ? t.lo[i] * std::pow(t.hi[i] / t.lo[i], w) : t.lo[i] + w * (t.hi[i] - t.lo[i]);
   }
   Params p;
   p.Y0 = v[0];
@@ -135,8 +136,8 @@ LoopResult bridgestoneX06(double g) {
 
 LoopResult leadRubber(double x) {
   LoopResult r;
-  r.keq = kKd + kQd / x;                                  // secant through (X, Qd + Kd X)
-  const double loop = 4.0 * kQd * (x - kUyLrb);           // area of the bilinear loop
+  r.keq = kKd + kQd / x;                         // secant through (X, Qd + Kd X)
+  const double loop = 4.0 * kQd * (x - kUyLrb);  // area of the bilinear loop
   r.heq = loop / (2 * std::numbers::pi * r.keq * x * x);
   return r;
 }
@@ -179,7 +180,7 @@ FitResult fit(const Target& t, const std::vector<double>* start, int globalBudge
     const std::vector<double>* amplitudes;
     double subIncrement;
     int evaluations;
-    double bestF;               // best of the local stage so far, and where
+    double bestF;  // best of the local stage so far, and where
     std::vector<double> bestX;
   } ctx{&t, &t.amplitudes, kGlobalSubIncrement, 0, HUGE_VAL, {}};
   auto objective = [](const std::vector<double>& s, std::vector<double>&, void* data) {

@@ -16,9 +16,11 @@ using Params = materials::YoshidaBearingMaterial::Params;
 inline constexpr int kNumParams = 7;
 inline constexpr unsigned long kSeed = 20261123;  // NLopt's random generator (CRS2-LM population)
 inline constexpr int kGlobalEvaluations = 3000;
-inline constexpr double kGlobalSubIncrement = 0.25;  // sub-step (fraction of U0) of the global stage
+inline constexpr double kGlobalSubIncrement =
+    0.25;  // sub-step (fraction of U0) of the global stage
 inline constexpr int kLocalEvaluations = 800;
-inline constexpr double kFailureStrain = 3.0;  // shear strain at which the hardening bound is stated
+inline constexpr double kFailureStrain =
+    3.0;  // shear strain at which the hardening bound is stated
 // (b) Lead-rubber bearing, bilinear: Qd = 150 kN, Kd = 1500 kN/m, K1 = 6.5 Kd, Tr = 0.2 m.
 inline constexpr double kQd = 150.0, kKd = 1500.0, kK1 = 6.5 * kKd, kTrLrb = 0.2;
 inline constexpr double kUyLrb = kQd / (kK1 - kKd);  // yield displacement of the bilinear loop
@@ -29,7 +31,7 @@ struct LoopResult {
 
 /// One fit: its target curve, amplitudes, units and the physical range of each parameter.
 struct Target {
-  const char* key;   // "hdr" or "lrb"
+  const char* key;  // "hdr" or "lrb"
   const char* name;
   std::vector<double> amplitudes;
   std::function<LoopResult(double)> curve;
@@ -56,7 +58,8 @@ struct FitResult {
 
 /// Six triangular cycles of amplitude `x` along one axis; the last cycle gives Keq and Heq.
 /// `loop`, when given, receives the (U, F) points of the last cycle.
-LoopResult cyclicTest(const Params& p, double x, std::vector<std::array<double, 2>>* loop = nullptr);
+LoopResult cyclicTest(const Params& p, double x,
+                      std::vector<std::array<double, 2>>* loop = nullptr);
 /// Material parameters from the scaled optimiser variables s in [0, 1]^7, and back.
 Params fromScaled(const Target& t, const std::vector<double>& s);
 std::vector<double> toScaled(const Target& t, const Params& p);

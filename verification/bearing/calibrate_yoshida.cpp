@@ -21,8 +21,9 @@
 // squared relative errors of Keq and Heq.
 //
 // Usage: yoshida_calibration fit ?hdr|lrb? ?-plots dir? ?-seed s?   fit and print the sets
-//        yoshida_calibration check ?-plots dir?         evaluate the shipped sets; fail above bounds
-//        yoshida_calibration refit ?hdr|lrb?            rerun the fit; fail unless it prints the
+//        yoshida_calibration check ?-plots dir?         evaluate the shipped sets; fail above
+//        bounds yoshida_calibration refit ?hdr|lrb?            rerun the fit; fail unless it prints
+//        the
 //                                                       shipped sets digit for digit
 //        yoshida_calibration stiffen                    HDR set with gamma raised to the target
 //                                                       Geq at 300 % (bridge sensitivity case)
@@ -51,12 +52,14 @@ void print(const Target& t, const Params& p, const FitError& e, const FitError& 
   std::printf("%s: Y0 %.6g U0 %.6g n %.6g alpha0 %.6g beta %.6g q %.6g gamma %.6g\n", t.name, p.Y0,
               p.U0, p.n, p.alpha0, p.beta, p.q, p.gamma);
   const double s = t.strainUnit;
-  std::printf("  fitted amplitudes: Keq error rms %.2f %%, max %.2f %% (at strain %.3g); Heq error "
-              "rms %.2f %%, max %.2f %% (at %.3g)\n",
-              100 * e.rmsK, 100 * e.maxK, e.atMaxK / s, 100 * e.rmsH, 100 * e.maxH, e.atMaxH / s);
-  std::printf("  every 5 %% from 10 %% to 300 %%: Keq max %.2f %% (at %.3g), Heq max %.2f %% (at "
-              "%.3g)\n",
-              100 * dense.maxK, dense.atMaxK / s, 100 * dense.maxH, dense.atMaxH / s);
+  std::printf(
+      "  fitted amplitudes: Keq error rms %.2f %%, max %.2f %% (at strain %.3g); Heq error "
+      "rms %.2f %%, max %.2f %% (at %.3g)\n",
+      100 * e.rmsK, 100 * e.maxK, e.atMaxK / s, 100 * e.rmsH, 100 * e.maxH, e.atMaxH / s);
+  std::printf(
+      "  every 5 %% from 10 %% to 300 %%: Keq max %.2f %% (at %.3g), Heq max %.2f %% (at "
+      "%.3g)\n",
+      100 * dense.maxK, dense.atMaxK / s, 100 * dense.maxH, dense.atMaxH / s);
   const std::vector<double> sc = toScaled(t, p);
   const char* names[kNumParams] = {"Y0", "U0", "n", "A0", "r", "q", "H"};
   std::string active;
@@ -109,15 +112,17 @@ void writePlots(const Target& t, const Params& p, const std::string& dir) {
       if (std::strcmp(t.key, "lrb") == 0) {
         // bilinear loop: upper branch (unloading side) and lower branch as function of u
         const double down = th <= std::numbers::pi ? 1.0 : -1.0;  // 1: from +X to -X
-        const double fTop = kKd * x + kQd;                           // force at +X
-        const double elastic = down * (fTop - kK1 * (x - down * ut));  // unloading line from the tip
-        const double yielded = kKd * ut - down * kQd;               // post-yield line
+        const double fTop = kKd * x + kQd;                        // force at +X
+        const double elastic =
+            down * (fTop - kK1 * (x - down * ut));     // unloading line from the tip
+        const double yielded = kKd * ut - down * kQd;  // post-yield line
         ft = down > 0 ? std::max(elastic, yielded) : std::min(elastic, yielded);
       } else {
         // equivalent linear loop: F = Keq u + Keq 2 Heq sqrt(X^2 - u^2) (sign with the motion)
         ft = g.keq * (ut + 2 * g.heq * x * std::sin(th));
       }
-      std::fprintf(f, "%g %g %g %g\n", loop[i][0] / t.strainUnit, loop[i][1], ut / t.strainUnit, ft);
+      std::fprintf(f, "%g %g %g %g\n", loop[i][0] / t.strainUnit, loop[i][1], ut / t.strainUnit,
+                   ft);
     }
     std::fclose(f);
   }
@@ -132,14 +137,18 @@ void writePlots(const Target& t, const Params& p, const std::string& dir) {
   std::fprintf(f, "set terminal pngcairo size 760,330 font ',9'\nset grid\nset key top right\n");
   std::fprintf(f, "set output '%s-curves.png'\nset multiplot layout 1,2\n", base.c_str());
   std::fprintf(f, "set xlabel 'shear strain amplitude'\nset ylabel '%s'\n", unitK);
-  std::fprintf(f, "plot '%s-curves.dat' u 1:3 w l lw 2 t '%s', '' u 1:2 w lp pt 7 ps 0.4 t 'model'\n",
+  std::fprintf(f,
+               "plot '%s-curves.dat' u 1:3 w l lw 2 t '%s', '' u 1:2 w lp pt 7 ps 0.4 t 'model'\n",
                base.c_str(), targetName);
   std::fprintf(f, "set ylabel 'Heq'\nset yrange [0:*]\n");
-  std::fprintf(f, "plot '%s-curves.dat' u 1:5 w l lw 2 t '%s', '' u 1:4 w lp pt 7 ps 0.4 t 'model'\n",
+  std::fprintf(f,
+               "plot '%s-curves.dat' u 1:5 w l lw 2 t '%s', '' u 1:4 w lp pt 7 ps 0.4 t 'model'\n",
                base.c_str(), targetName);
   std::fprintf(f, "unset multiplot\nset yrange [*:*]\n");
-  std::fprintf(f, "set output '%s-loops.png'\nset terminal pngcairo size 760,300 font ',9'\n"
-               "set multiplot layout 1,3\nset key bottom right font ',8'\n", base.c_str());
+  std::fprintf(f,
+               "set output '%s-loops.png'\nset terminal pngcairo size 760,300 font ',9'\n"
+               "set multiplot layout 1,3\nset key bottom right font ',8'\n",
+               base.c_str());
   for (int pct : {100, 200, 300}) {
     std::fprintf(f, "set title '%d %%'\nset xlabel 'shear strain'\nset ylabel '%s'\n", pct, unitF);
     std::fprintf(f, "plot '%s-loop%d.dat' u 3:4 w l lw 2 t '%s', '' u 1:2 w l t 'model'\n",
@@ -199,7 +208,8 @@ void printLoopShape(const Target& t, const Params& p) {
     for (std::size_t i = 1; i < loop.size(); ++i) {
       fmax = std::max(fmax, loop[i][1]);
       if (loop[i - 1][0] > 0.0 && loop[i][0] <= 0.0)  // unloading branch crosses U = 0
-        f0 = loop[i - 1][1] + (loop[i][1] - loop[i - 1][1]) * loop[i - 1][0] / (loop[i - 1][0] - loop[i][0]);
+        f0 = loop[i - 1][1] +
+             (loop[i][1] - loop[i - 1][1]) * loop[i - 1][0] / (loop[i - 1][0] - loop[i][0]);
     }
     std::printf(" %.0f %%: model %.3f, X0.6 %.3f;", 100 * g, -f0 / fmax,
                 0.44236 - 0.062943 * g - 0.0037571 * g * g);
@@ -232,7 +242,16 @@ const Target* findTarget(const std::vector<Target>& ts, const std::string& key) 
 Params stiffened(const Target& t, Params p) {
   const double x = kFailureStrain * t.strainUnit, goal = t.curve(x).keq;
   double lo = p.gamma, hi = std::max(p.gamma, 1e-6);
-  while (cyclicTest(p = [&] { Params q = p; q.gamma = hi; return q; }(), x).keq < goal) hi *= 2.0;
+  while (cyclicTest(
+             p =
+                 [&] {
+                   Params q = p;
+                   q.gamma = hi;
+                   return q;
+                 }(),
+             x)
+             .keq < goal)
+    hi *= 2.0;
   for (int it = 0; it < 60; ++it) {
     p.gamma = 0.5 * (lo + hi);
     (cyclicTest(p, x).keq < goal ? lo : hi) = p.gamma;
@@ -283,7 +302,8 @@ int main(int argc, char** argv) {
   if (mode == "stiffen") {
     const Params p = stiffened(ts[0], sets[0].p);
     std::printf("gamma raised until Geq(300 %%) = target:\n");
-    print(ts[0], p, evaluate(ts[0], p, ts[0].amplitudes), evaluate(ts[0], p, denseAmplitudes(ts[0])));
+    print(ts[0], p, evaluate(ts[0], p, ts[0].amplitudes),
+          evaluate(ts[0], p, denseAmplitudes(ts[0])));
     printTable(ts[0], p);
     return 0;
   }
@@ -299,17 +319,19 @@ int main(int argc, char** argv) {
       if (!which.empty() && which != ts[i].key) continue;
       const FitResult r = fit(ts[i], nullptr, kGlobalEvaluations, kLocalEvaluations, kSeed);
       const Params& w = sets[i].p;
-      const bool same = r.p.Y0 == w.Y0 && r.p.U0 == w.U0 && r.p.n == w.n && r.p.alpha0 == w.alpha0 &&
-                        r.p.beta == w.beta && r.p.q == w.q && r.p.gamma == w.gamma;
+      const bool same = r.p.Y0 == w.Y0 && r.p.U0 == w.U0 && r.p.n == w.n &&
+                        r.p.alpha0 == w.alpha0 && r.p.beta == w.beta && r.p.q == w.q &&
+                        r.p.gamma == w.gamma;
       const bool withinBounds = same || withinDocumented(ts[i], r.p, sets[i]);
-      std::printf("%s  %s: the fit (%d + %d evaluations, %.1f s) %s\n",
-                  withinBounds ? "PASSED" : "FAILED", ts[i].name, r.globalEvaluations,
-                  r.localEvaluations, r.seconds,
-                  same ? "reproduces the shipped set"
-                       : (withinBounds ? "gives another set (below), within the documented bounds"
-                                       : "gives another set (below), outside the documented bounds"));
-      if (!same) print(ts[i], r.p, evaluate(ts[i], r.p, ts[i].amplitudes),
-                       evaluate(ts[i], r.p, denseAmplitudes(ts[i])));
+      std::printf(
+          "%s  %s: the fit (%d + %d evaluations, %.1f s) %s\n", withinBounds ? "PASSED" : "FAILED",
+          ts[i].name, r.globalEvaluations, r.localEvaluations, r.seconds,
+          same ? "reproduces the shipped set"
+               : (withinBounds ? "gives another set (below), within the documented bounds"
+                               : "gives another set (below), outside the documented bounds"));
+      if (!same)
+        print(ts[i], r.p, evaluate(ts[i], r.p, ts[i].amplitudes),
+              evaluate(ts[i], r.p, denseAmplitudes(ts[i])));
       failed += withinBounds ? 0 : 1;
     }
     return failed > 0 ? 1 : 0;
@@ -322,10 +344,11 @@ int main(int argc, char** argv) {
             evaluate(ts[i], sets[i].p, denseAmplitudes(ts[i])));
       printLoopShape(ts[i], sets[i].p);
       const bool pass = withinDocumented(ts[i], sets[i].p, sets[i]);
-      std::printf("%s  %s: errors within the documented rms %.1f %% / max %.1f %% (Keq) and rms "
-                  "%.1f %% / max %.1f %% (Heq)\n",
-                  pass ? "PASSED" : "FAILED", ts[i].name, sets[i].rmsK, sets[i].maxK, sets[i].rmsH,
-                  sets[i].maxH);
+      std::printf(
+          "%s  %s: errors within the documented rms %.1f %% / max %.1f %% (Keq) and rms "
+          "%.1f %% / max %.1f %% (Heq)\n",
+          pass ? "PASSED" : "FAILED", ts[i].name, sets[i].rmsK, sets[i].maxK, sets[i].rmsH,
+          sets[i].maxH);
       failed += pass ? 0 : 1;
       if (!plots.empty()) writePlots(ts[i], sets[i].p, plots);
     }

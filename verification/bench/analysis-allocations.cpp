@@ -26,7 +26,8 @@ namespace {
 std::atomic<long> gMallocs{0};
 
 long statistic(Tcl_Interp* interp, const char* key) {
-  if (Tcl_Eval(interp, (std::string("dict get [analysisStatistics] ") + key).c_str()) != TCL_OK) return -1;
+  if (Tcl_Eval(interp, (std::string("dict get [analysisStatistics] ") + key).c_str()) != TCL_OK)
+    return -1;
   return std::atol(Tcl_GetStringResult(interp));
 }
 
@@ -43,9 +44,10 @@ bool measure(Tcl_Interp* interp, const char* label, int steps) {
   if (!eval(interp, "analyze " + std::to_string(steps) + " 0.005")) return false;
   const long mallocs = gMallocs.load() - before;
   const long iterations = statistic(interp, "iterations") - iterationsBefore;
-  std::printf("%-18s steps %5d  iterations %6ld  allocations %8ld  per step %8.3f  per iteration %8.3f\n",
-              label, steps, iterations, mallocs, double(mallocs) / steps,
-              iterations > 0 ? double(mallocs) / double(iterations) : 0.0);
+  std::printf(
+      "%-18s steps %5d  iterations %6ld  allocations %8ld  per step %8.3f  per iteration %8.3f\n",
+      label, steps, iterations, mallocs, double(mallocs) / steps,
+      iterations > 0 ? double(mallocs) / double(iterations) : 0.0);
   return true;
 }
 }  // namespace
@@ -72,10 +74,12 @@ int main(int argc, char** argv) {
   Tcl_Interp* interp = Tcl_CreateInterp();
   (void)Tcl_Init(interp);
   if (dabs::tcl::registerCommands(interp) != TCL_OK) return 2;
-  const std::string script = std::string(DABS_SOURCE_DIR) + "/verification/bench/opensees/bridge.tcl";
+  const std::string script =
+      std::string(DABS_SOURCE_DIR) + "/verification/bench/opensees/bridge.tcl";
   // Build the model and run 200 warm-up steps (first factorisations, recorder buffers).
-  if (!eval(interp, "set argv {" + std::to_string(spans) + " 200 [file join [pwd] allocations-out]}; set argc 3; source {" +
-                        script + "}"))
+  if (!eval(interp, "set argv {" + std::to_string(spans) +
+                        " 200 [file join [pwd] allocations-out]}; set argc 3; source {" + script +
+                        "}"))
     return 1;
   if (!measure(interp, "with recorders", steps)) return 1;
   if (!eval(interp, "remove recorders")) return 1;

@@ -34,10 +34,10 @@ using materials::section::FiberSection3d;
 /// Circular RC section D = 1.5 m, 200 fibers: core 16 x 8 (128) and cover 16 x 2 (32)
 /// annular-sector Concrete02 fibers and 40 Steel02 bars.
 struct RcSection {
-  materials::Concrete02 core{1, materials::Concrete02::Params{-35000.0, -0.0025, -7000.0, -0.02,
-                                                              0.1, 2800.0, 1.4e6}};
-  materials::Concrete02 cover{2, materials::Concrete02::Params{-30000.0, -0.002, -6000.0, -0.005,
-                                                               0.1, 2500.0, 1.2e6}};
+  materials::Concrete02 core{
+      1, materials::Concrete02::Params{-35000.0, -0.0025, -7000.0, -0.02, 0.1, 2800.0, 1.4e6}};
+  materials::Concrete02 cover{
+      2, materials::Concrete02::Params{-30000.0, -0.002, -6000.0, -0.005, 0.1, 2500.0, 1.2e6}};
   materials::Steel02 steel{3, [] {
                              materials::Steel02::Params p;
                              p.Fy = 420000.0;
@@ -70,7 +70,7 @@ struct RcSection {
     std::vector<FiberSection3d::Fiber> fibers;
     for (const auto& p : pts) {
       const materials::UniaxialMaterial* m =
-          p.materialTag == 1 ? static_cast<const materials::UniaxialMaterial*>(&core)
+          p.materialTag == 1   ? static_cast<const materials::UniaxialMaterial*>(&core)
           : p.materialTag == 2 ? static_cast<const materials::UniaxialMaterial*>(&cover)
                                : &steel;
       fibers.push_back({p.y, p.z, p.area, m});
@@ -151,8 +151,10 @@ void BM_BeamColumn5(benchmark::State& state) {
   long k = 0, failures = 0;
   auto step = [&] {
     const elements::Kinematics kin{path[static_cast<std::size_t>(k % 2000)], zero, zero, 0.0, 0.0};
-    if (!ok(e->update(kin))) ++failures;
-    else if (k % 4 == 0) e->commitState();
+    if (!ok(e->update(kin)))
+      ++failures;
+    else if (k % 4 == 0)
+      e->commitState();
     ++k;
   };
   for (int w = 0; w < 50; ++w) step();
@@ -175,8 +177,8 @@ BENCHMARK(BM_BeamColumn5<elements::DispBeamColumn3d, false>)->Name("BM_DispBeamC
 
 void BM_ElasticBeam3dLinear(benchmark::State& state) {
   elements::ElasticBeam3d::Params p{0.5, 3.0e7, 1.2e7, 0.05, 0.04, 0.04, 0.0, false};
-  elements::ElasticBeam3d e(1, 1, 2, p,
-                            std::make_unique<elements::LinearTransf3d>(1, Eigen::Vector3d(1, 0, 0)));
+  elements::ElasticBeam3d e(
+      1, 1, 2, p, std::make_unique<elements::LinearTransf3d>(1, Eigen::Vector3d(1, 0, 0)));
   e.initialize({Eigen::Vector3d::Zero(), Eigen::Vector3d(0.0, 0.0, 8.0)});
   const Eigen::VectorXd zero = Eigen::VectorXd::Zero(12);
   Eigen::VectorXd u = elementPath(77);

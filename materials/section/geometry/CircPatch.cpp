@@ -28,8 +28,8 @@ void CircPatch::discretize(FiberList& out) const {
       // Exact annular sector: area d/2 (r1^2 - r0^2), centroid on the bisector at radius
       // (2/3)(r1^3 - r0^3)/(r1^2 - r0^2) sin(d/2)/(d/2).
       const double half = 0.5 * dTheta, mid = t0 + half;
-      const double rc = 2.0 / 3.0 * (r1 * r1 * r1 - r0 * r0 * r0) / (r1 * r1 - r0 * r0) *
-                        std::sin(half) / half;
+      const double rc =
+          2.0 / 3.0 * (r1 * r1 * r1 - r0 * r0 * r0) / (r1 * r1 - r0 * r0) * std::sin(half) / half;
       FiberPoint f{yCenter + rc * std::cos(mid), zCenter + rc * std::sin(mid),
                    half * (r1 * r1 - r0 * r0), materialTag};
       out.push_back(f);

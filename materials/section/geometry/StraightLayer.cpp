@@ -20,8 +20,8 @@ void StraightLayer::discretize(FiberList& out) const {
   }
   for (int i = 0; i < numBars; ++i) {
     const double s = double(i) / (numBars - 1);
-    out.push_back({yStart + s * (yEnd - yStart), zStart + s * (zEnd - zStart), barArea,
-                   materialTag});
+    out.push_back(
+        {yStart + s * (yEnd - yStart), zStart + s * (zEnd - zStart), barArea, materialTag});
   }
 }
 
@@ -38,8 +38,8 @@ void CircLayer::discretize(FiberList& out) const {
   const double step = full ? span / numBars : (numBars > 1 ? span / (numBars - 1) : 0.0);
   for (int i = 0; i < numBars; ++i) {
     const double t = (startAngle + i * step) * deg;
-    out.push_back({yCenter + radius * std::cos(t), zCenter + radius * std::sin(t), barArea,
-                   materialTag});
+    out.push_back(
+        {yCenter + radius * std::cos(t), zCenter + radius * std::sin(t), barArea, materialTag});
   }
 }
 

@@ -21,9 +21,9 @@ namespace dabs::materials::section {
 namespace {
 
 constexpr double kE = 2.0e8, kFy = 4.0e5, kB = 0.3, kH = 0.5;
-constexpr int kN = 400;             // fibers through the depth
-constexpr double kFdTol = 1e-6;     // finite-difference tangent, relative
-constexpr double kMpTol = 1e-4;     // discretisation error of the plastic moment (O(1/n^2))
+constexpr int kN = 400;          // fibers through the depth
+constexpr double kFdTol = 1e-6;  // finite-difference tangent, relative
+constexpr double kMpTol = 1e-4;  // discretisation error of the plastic moment (O(1/n^2))
 
 ElasticPP epp() {
   ElasticPP::Params p;
@@ -164,8 +164,9 @@ TEST(SectionGeometryTest, QuadPatchAndLayers) {
   double area = 0.0;
   for (const auto& p : f) area += p.area;
   // Shoelace area of the quadrilateral.
-  EXPECT_NEAR(area, 0.5 * ((0 * 0 - 2 * 0) + (2 * 1 - 2.5 * 0) + (2.5 * 1.5 - (-0.5) * 1) +
-                           ((-0.5) * 0 - 0 * 1.5)),
+  EXPECT_NEAR(area,
+              0.5 * ((0 * 0 - 2 * 0) + (2 * 1 - 2.5 * 0) + (2.5 * 1.5 - (-0.5) * 1) +
+                     ((-0.5) * 0 - 0 * 1.5)),
               1e-12);
   std::swap(q.y[1], q.y[3]);  // clockwise
   std::swap(q.z[1], q.z[3]);
@@ -188,7 +189,6 @@ TEST(SectionGeometryTest, QuadPatchAndLayers) {
   EXPECT_NEAR(std::atan2(bars[1].z, bars[1].y), std::numbers::pi / 4, 1e-12);
 }
 
-
 TEST(FiberSectionTest, MixedMaterialsSumLikeTheFibersOneByOne) {
   // Fibers of three material types given interleaved (Concrete02 and Steel02 are kept in typed
   // groups, ENT in the general one): resultants, tangent and the fiber order must be those of
@@ -207,13 +207,15 @@ TEST(FiberSectionTest, MixedMaterialsSumLikeTheFibersOneByOne) {
   std::vector<FiberSection3d::Fiber> fibers;
   std::vector<std::unique_ptr<UniaxialMaterial>> alone;
   for (int i = 0; i < 30; ++i) {
-    const double y = 0.4 * std::cos(0.7 * i), z = 0.3 * std::sin(1.3 * i), area = 0.01 + 0.001 * (i % 4);
+    const double y = 0.4 * std::cos(0.7 * i), z = 0.3 * std::sin(1.3 * i),
+                 area = 0.01 + 0.001 * (i % 4);
     fibers.push_back({y, z, area, kinds[i % 3]});
     alone.push_back(kinds[i % 3]->clone());
   }
   FiberSection3d sec(7, fibers, 100.0);
   ASSERT_EQ(sec.numFibers(), 30);
-  for (const Eigen::Vector4d& e : {Eigen::Vector4d(-4e-4, 2e-3, -1e-3, 1e-3), Eigen::Vector4d(1e-4, -3e-3, 2e-3, 0.0)}) {
+  for (const Eigen::Vector4d& e :
+       {Eigen::Vector4d(-4e-4, 2e-3, -1e-3, 1e-3), Eigen::Vector4d(1e-4, -3e-3, 2e-3, 0.0)}) {
     ASSERT_TRUE(ok(sec.setTrialDeformation(e)));
     Eigen::Vector4d s = Eigen::Vector4d::Zero();
     Eigen::Matrix4d k = Eigen::Matrix4d::Zero();

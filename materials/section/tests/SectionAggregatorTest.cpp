@@ -152,7 +152,7 @@ TEST(SectionAggregatorTest, RejectsBadInput) {
   const ElasticSection base(1, params3d());
   EXPECT_THROW(SectionAggregator(2, {}, nullptr), InputError);
   EXPECT_THROW(SectionAggregator(2, {{&s, SectionCode::P}, {&s, SectionCode::P}}, nullptr),
-               InputError);  // repeated code
+               InputError);                                                        // repeated code
   EXPECT_THROW(SectionAggregator(2, {{&s, SectionCode::Mz}}, &base), InputError);  // in base
   EXPECT_THROW(SectionAggregator(2, {{nullptr, SectionCode::Vy}}, nullptr), InputError);
 }

@@ -42,7 +42,8 @@ void traceSpring(double wU, double wF, bool loadScaled, double s) {
   testing::buildSpring(domain, std::make_unique<materials::Steel01>(1, p), 0.0, kP0);
   AnalysisBuilder builder(domain);
   builder.setConstraints(ConstraintKind::Plain);
-  builder.setTest(std::make_unique<ConvergenceTest>(ConvergenceTest::Kind::NormDispIncr, 1e-13, 50));
+  builder.setTest(
+      std::make_unique<ConvergenceTest>(ConvergenceTest::Kind::NormDispIncr, 1e-13, 50));
   builder.setIntegrator(std::make_unique<ArcLength>(s, wU, wF, loadScaled));
   builder.setAnalysis(AnalysisBuilder::Kind::Static);
   const double wFe = loadScaled ? wF * kP0 * kP0 : wF;
@@ -60,9 +61,12 @@ void traceSpring(double wU, double wF, bool loadScaled, double s) {
 }
 
 // `integrator ArcLength s alpha`: dU.dU + alpha^2 dlambda^2 = s^2.
-TEST(ArcLengthTest, ArcLengthFollowsTheSpringAcrossYield) { traceSpring(1.0, 0.04 * 0.04, false, 0.03); }
+TEST(ArcLengthTest, ArcLengthFollowsTheSpringAcrossYield) {
+  traceSpring(1.0, 0.04 * 0.04, false, 0.03);
+}
 
-// `integrator HSConstraint s psiU psiF uRef`: psiU^2/uRef^2 dU.dU + psiF^2 phat.phat dlambda^2 = s^2.
+// `integrator HSConstraint s psiU psiF uRef`: psiU^2/uRef^2 dU.dU + psiF^2 phat.phat dlambda^2 =
+// s^2.
 TEST(ArcLengthTest, HSConstraintWeightsDisplacementAndLoad) {
   const double psiU = 2.0, uRef = 0.5, psiF = 0.01;
   traceSpring(psiU * psiU / (uRef * uRef), psiF * psiF, true, 0.08);

@@ -24,7 +24,9 @@ class CubicSpring final : public materials::UniaxialMaterial {
   void commitState() override { committed_ = trial_; }
   void revertToLastCommit() override { trial_ = committed_; }
   void revertToStart() override { trial_ = committed_ = 0.0; }
-  std::unique_ptr<UniaxialMaterial> clone() const override { return std::make_unique<CubicSpring>(*this); }
+  std::unique_ptr<UniaxialMaterial> clone() const override {
+    return std::make_unique<CubicSpring>(*this);
+  }
 
  private:
   double k_, c_;

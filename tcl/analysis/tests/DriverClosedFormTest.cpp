@@ -30,7 +30,8 @@ void buildStepLoadedSpring(domain::Domain& domain, double k, double m, double P0
   materials::Elastic::Params p;
   p.E = k;
   testing::buildSpring(domain, std::make_unique<materials::Elastic>(1, p), m, 0.0);
-  auto pattern = std::make_unique<domain::PlainPattern>(2, std::make_shared<domain::ConstantSeries>(2, 1.0), 1.0);
+  auto pattern = std::make_unique<domain::PlainPattern>(
+      2, std::make_shared<domain::ConstantSeries>(2, 1.0), 1.0);
   pattern->loads.push_back({2, Eigen::VectorXd::Constant(1, P0)});
   domain.addPattern(std::move(pattern));
 }
@@ -43,7 +44,8 @@ void buildStepLoadedSpring(domain::Domain& domain, double k, double m, double P0
 // satisfies equilibrium.
 TEST(NewmarkTest, AverageAccelerationKeepsAmplitudeAndLengthensThePeriod) {
   constexpr double kK = 400.0, kM = 1.0, kP0 = 4.0;
-  const double omega = std::sqrt(kK / kM), dt = 0.05;  // omega dt = 1: a coarse step, visible elongation
+  const double omega = std::sqrt(kK / kM),
+               dt = 0.05;  // omega dt = 1: a coarse step, visible elongation
   domain::Domain domain;
   buildStepLoadedSpring(domain, kK, kM, kP0);
   AnalysisBuilder builder(domain);

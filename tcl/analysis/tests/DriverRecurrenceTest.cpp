@@ -75,7 +75,9 @@ TEST(GeneralizedAlphaTest, NewmarkFollowsItsRecurrence) { checkAlpha(1.0, 1.0, 0
 TEST(GeneralizedAlphaTest, HHTFollowsItsRecurrence) { checkAlpha(1.0, 0.8, 0.7, 0.36); }
 
 // alphaM != 1: the inertia force at n + alphaM.
-TEST(GeneralizedAlphaTest, GeneralizedAlphaFollowsItsRecurrence) { checkAlpha(1.2, 0.8, 0.9, 0.49); }
+TEST(GeneralizedAlphaTest, GeneralizedAlphaFollowsItsRecurrence) {
+  checkAlpha(1.2, 0.8, 0.9, 0.49);
+}
 
 // Displacement control on a linear spring: after n steps the controlled displacement is n incr
 // and the load factor the one that holds it, lambda = k u / P0.
@@ -151,8 +153,8 @@ TEST(NewtonLineSearchTest, InitialInterpolatedStepIsTheSecantRootOfTheProjectedR
   testing::buildSpring(domain, std::make_unique<CubicSpring>(kCubicK, kCubicC), 0.0, kCubicP);
   AnalysisBuilder builder(domain);
   builder.setTest(dispTest(1.0, 1));
-  builder.setAlgorithm(std::make_unique<NewtonLineSearch>(NewtonLineSearch::Search::InitialInterpolated,
-                                                          0.8, 1, 0.01, 10.0));
+  builder.setAlgorithm(std::make_unique<NewtonLineSearch>(
+      NewtonLineSearch::Search::InitialInterpolated, 0.8, 1, 0.01, 10.0));
   builder.setIntegrator(std::make_unique<LoadControl>(1.0, 1, 1.0, 1.0));
   builder.setAnalysis(AnalysisBuilder::Kind::Static);
   ASSERT_EQ(builder.analyze(1, 0.0), 0);
@@ -179,7 +181,8 @@ TEST(KrylovNewtonTest, AcceleratesTheInitialTangentIteration) {
     EXPECT_NEAR(100.0 * u + 500.0 * u * u * u, 25.0, 1e-9);
     return builder.test()->iterations();
   };
-  const int modified = run(d1, std::make_unique<NewtonRaphson>(NewtonRaphson::Tangent::Initial, true));
+  const int modified =
+      run(d1, std::make_unique<NewtonRaphson>(NewtonRaphson::Tangent::Initial, true));
   const int krylov = run(d2, std::make_unique<KrylovNewton>(true, 3));
   EXPECT_GT(modified, 30);
   EXPECT_LT(krylov, modified / 3);

@@ -9,10 +9,10 @@
 namespace dabs::analysis {
 namespace {
 
-// Fixed-free chain of n equal springs k and masses m: omega_j^2 = 4 k/m sin^2((2j-1) pi / (2(2n+1)))
-// (e.g. Meirovitch, Fundamentals of Vibrations, sec. 8.x, lumped chain).
-void chain(int n, double k, double m, Eigen::SparseMatrix<double>& K, Eigen::SparseMatrix<double>& M,
-           int massless = 0) {
+// Fixed-free chain of n equal springs k and masses m: omega_j^2 = 4 k/m sin^2((2j-1) pi /
+// (2(2n+1))) (e.g. Meirovitch, Fundamentals of Vibrations, sec. 8.x, lumped chain).
+void chain(int n, double k, double m, Eigen::SparseMatrix<double>& K,
+           Eigen::SparseMatrix<double>& M, int massless = 0) {
   const int size = n + massless;
   std::vector<Eigen::Triplet<double>> kt, mt;
   for (int i = 0; i < n; ++i) {

@@ -33,7 +33,8 @@ struct Outcome {
   long iterations = 0;
 };
 
-Outcome run(std::unique_ptr<SolutionAlgorithm> algorithm, std::unique_ptr<materials::UniaxialMaterial> spring) {
+Outcome run(std::unique_ptr<SolutionAlgorithm> algorithm,
+            std::unique_ptr<materials::UniaxialMaterial> spring) {
   domain::Domain domain;
   testing::buildSpring(domain, std::move(spring), 0.0, kP);
   AnalysisBuilder builder(domain);
@@ -63,18 +64,21 @@ std::vector<double> scalarLinear(bool initial) {
 
 void expectSame(const std::vector<double>& got, const std::vector<double>& expected) {
   ASSERT_EQ(got.size(), expected.size());
-  for (std::size_t i = 0; i < got.size(); ++i) EXPECT_NEAR(got[i], expected[i], 1e-14) << "step " << i + 1;
+  for (std::size_t i = 0; i < got.size(); ++i)
+    EXPECT_NEAR(got[i], expected[i], 1e-14) << "step " << i + 1;
 }
 
 TEST(LinearAlgorithmTest, CurrentTangentOneSolveAndOneFactorisationPerStep) {
-  const Outcome r = run(std::make_unique<LinearAlgorithm>(false, false), std::make_unique<CubicSpring>(kK, kC));
+  const Outcome r =
+      run(std::make_unique<LinearAlgorithm>(false, false), std::make_unique<CubicSpring>(kK, kC));
   expectSame(r.u, scalarLinear(false));
   EXPECT_EQ(r.iterations, kSteps);
   EXPECT_EQ(r.factorizations, kSteps);
 }
 
 TEST(LinearAlgorithmTest, InitialTangentAndFactorOnceFactoriseOnce) {
-  Outcome r = run(std::make_unique<LinearAlgorithm>(true, false), std::make_unique<CubicSpring>(kK, kC));
+  Outcome r =
+      run(std::make_unique<LinearAlgorithm>(true, false), std::make_unique<CubicSpring>(kK, kC));
   expectSame(r.u, scalarLinear(true));
   EXPECT_EQ(r.factorizations, 1);
   // -factorOnce keeps the first step's tangent, here the initial one (u = 0).
@@ -85,10 +89,12 @@ TEST(LinearAlgorithmTest, InitialTangentAndFactorOnceFactoriseOnce) {
 
 TEST(NewtonRaphsonTest, NewtonFactorisesPerIterationModifiedNewtonPerStep) {
   const Outcome newton =
-      run(std::make_unique<NewtonRaphson>(NewtonRaphson::Tangent::Current, false), std::make_unique<CubicSpring>(kK, kC));
+      run(std::make_unique<NewtonRaphson>(NewtonRaphson::Tangent::Current, false),
+          std::make_unique<CubicSpring>(kK, kC));
   EXPECT_EQ(newton.factorizations, newton.iterations);
   const Outcome modified =
-      run(std::make_unique<NewtonRaphson>(NewtonRaphson::Tangent::Current, true), std::make_unique<CubicSpring>(kK, kC));
+      run(std::make_unique<NewtonRaphson>(NewtonRaphson::Tangent::Current, true),
+          std::make_unique<CubicSpring>(kK, kC));
   EXPECT_EQ(modified.factorizations, kSteps);
   EXPECT_GT(modified.iterations, newton.iterations);
   // Both converge to the same points on the curve: f(u_n) = n dLambda P.

@@ -23,7 +23,8 @@ Eigen::SparseMatrix<double> tridiagonal(int n, double diagonalShift, double skew
       t.emplace_back(i + 1, i, -1.0);
     }
   }
-  t.emplace_back(0, n - 1, skew);  // adds an explicit (possibly zero) entry: same pattern either way
+  t.emplace_back(0, n - 1,
+                 skew);  // adds an explicit (possibly zero) entry: same pattern either way
   Eigen::SparseMatrix<double> A(n, n);
   A.setFromTriplets(t.begin(), t.end());
   return A;
@@ -60,7 +61,8 @@ TEST_P(LinearSolverTest, SolvesAKnownSolutionAndRefactorisesNewNumbers) {
 TEST_P(LinearSolverTest, SingularMatrixIsReportedNotSolved) {
   const Case c = GetParam();
   // Rows 0 and 1 equal: [1 1 0; 1 1 0; 0 0 1] has rank 2.
-  std::vector<Eigen::Triplet<double>> t = {{0, 0, 1.0}, {0, 1, 1.0}, {1, 0, 1.0}, {1, 1, 1.0}, {2, 2, 1.0}};
+  std::vector<Eigen::Triplet<double>> t = {
+      {0, 0, 1.0}, {0, 1, 1.0}, {1, 0, 1.0}, {1, 1, 1.0}, {2, 2, 1.0}};
   Eigen::SparseMatrix<double> A(3, 3);
   A.setFromTriplets(t.begin(), t.end());
   auto solver = LinearSolver::create(c.kind, c.nonSymmetric);
@@ -75,8 +77,10 @@ std::string caseName(const ::testing::TestParamInfo<Case>& info) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Kinds, LinearSolverTest,
-                         ::testing::Values(Case{SolverKind::SparseLDLT, false}, Case{SolverKind::SparseLU, false},
-                                           Case{SolverKind::SparseLU, true}, Case{SolverKind::DenseLU, false},
+                         ::testing::Values(Case{SolverKind::SparseLDLT, false},
+                                           Case{SolverKind::SparseLU, false},
+                                           Case{SolverKind::SparseLU, true},
+                                           Case{SolverKind::DenseLU, false},
                                            Case{SolverKind::DenseLU, true}),
                          caseName);
 

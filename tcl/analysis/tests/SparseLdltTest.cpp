@@ -93,7 +93,8 @@ TEST(SparseLdltTest, IndefiniteMatrixGivesNegativePivotsAndTheRightSolution) {
   SparseLdlt ldlt;
   ldlt.analyze(A);
   ASSERT_TRUE(ok(ldlt.factorize(A)));
-  EXPECT_LT(ldlt.pivots().minCoeff(), 0.0);  // Sylvester: one negative eigenvalue, one negative pivot
+  EXPECT_LT(ldlt.pivots().minCoeff(),
+            0.0);  // Sylvester: one negative eigenvalue, one negative pivot
   EXPECT_EQ((ldlt.pivots().array() < 0.0).count(), 1);
   const Eigen::VectorXd b = Eigen::VectorXd::LinSpaced(A.rows(), 1.0, 3.0);
   Eigen::VectorXd x;

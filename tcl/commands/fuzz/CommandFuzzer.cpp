@@ -72,7 +72,8 @@ extern "C" int LLVMFuzzerInitialize(int* /*argc*/, char*** argv) {
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   Tcl_Interp* interp = Tcl_CreateInterp();
   if (Tcl_MakeSafe(interp) != TCL_OK || dabs::tcl::registerCommands(interp) != TCL_OK ||
-      Tcl_Eval(interp, ("namespace eval ::fuzz {variable dir " + gFolder + "}").c_str()) != TCL_OK ||
+      Tcl_Eval(interp, ("namespace eval ::fuzz {variable dir " + gFolder + "}").c_str()) !=
+          TCL_OK ||
       Tcl_Eval(interp, kPrelude) != TCL_OK)
     std::abort();
   Tcl_LimitSetCommands(interp, kCommandLimit);

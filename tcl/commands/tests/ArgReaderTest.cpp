@@ -106,7 +106,9 @@ TEST(ArgReaderTest, FailArgumentWithAnIndexPointsIntoAList) {
   } catch (const ArgError& e) {
     message = e.what();
   }
-  EXPECT_EQ(message, "equalDOF: argument 5 (dof) is given twice, got \"1\"; usage: equalDOF rNode cNode dofs..");
+  EXPECT_EQ(
+      message,
+      "equalDOF: argument 5 (dof) is given twice, got \"1\"; usage: equalDOF rNode cNode dofs..");
 }
 
 std::string inputFailure(const ArgReader& args, const InputError& error) {

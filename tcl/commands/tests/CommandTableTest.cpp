@@ -25,7 +25,8 @@ using CommandTableTest = TclFixture;
 TEST_F(CommandTableTest, NonNumberNamesCommandArgumentAndToken) {
   ok("model basic -ndm 2 -ndf 3");
   const std::string msg = error("node 1 0.0 abc");
-  EXPECT_NE(msg.find("node 1: argument 3 (y) expected a number, got \"abc\""), std::string::npos) << msg;
+  EXPECT_NE(msg.find("node 1: argument 3 (y) expected a number, got \"abc\""), std::string::npos)
+      << msg;
   EXPECT_NE(msg.find("usage: node tag"), std::string::npos) << msg;
   EXPECT_EQ(ok("getNodeTags"), "");
 }
@@ -62,9 +63,11 @@ TEST_F(CommandTableTest, DuplicateTagsAreRejectedAndModelKept) {
 
 TEST_F(CommandTableTest, UnknownTagsAndTypes) {
   ok("model basic -ndm 1 -ndf 1; node 1 0.0; node 2 1.0; uniaxialMaterial Elastic 1 100.0");
-  EXPECT_NE(error("element zeroLength 1 1 3 -mat 1 -dir 1").find("node 3 does not exist"), std::string::npos);
-  EXPECT_NE(error("element zeroLength 1 1 2 -mat 9 -dir 1").find("uniaxialMaterial 9 does not exist"),
+  EXPECT_NE(error("element zeroLength 1 1 3 -mat 1 -dir 1").find("node 3 does not exist"),
             std::string::npos);
+  EXPECT_NE(
+      error("element zeroLength 1 1 2 -mat 9 -dir 1").find("uniaxialMaterial 9 does not exist"),
+      std::string::npos);
   const std::string msg = error("element noSuchElement 1 1 2");
   EXPECT_NE(msg.find("\"noSuchElement\" is not a known element"), std::string::npos) << msg;
   EXPECT_NE(msg.find("zeroLength"), std::string::npos) << msg;
@@ -105,7 +108,8 @@ TEST_F(CommandTableTest, SingularSystemIsAStatusNotAnError) {
   ok("model basic -ndm 1 -ndf 1; node 1 0.0; node 2 1.0; fix 1 1; node 3 2.0");
   ok("uniaxialMaterial Elastic 1 100.0; element zeroLength 1 1 2 -mat 1 -dir 1");
   ok("timeSeries Linear 1; pattern Plain 1 1 { load 2 1.0; load 3 1.0 }");
-  ok("system BandGeneral; test NormDispIncr 1e-10 10; algorithm Newton; integrator LoadControl 1.0; analysis Static");
+  ok("system BandGeneral; test NormDispIncr 1e-10 10; algorithm Newton; integrator LoadControl "
+     "1.0; analysis Static");
   EXPECT_LT(number("analyze 1"), 0.0);
   EXPECT_EQ(number("nodeDisp 2 1"), 0.0);
   EXPECT_EQ(number("getTime"), 0.0);
@@ -116,7 +120,8 @@ TEST_F(CommandTableTest, StaticSpringGivesHookesLaw) {
   ok("model basic -ndm 1 -ndf 1; node 1 0.0; node 2 0.0; fix 1 1");
   ok("uniaxialMaterial Elastic 1 100.0; element zeroLength 1 1 2 -mat 1 -dir 1");
   ok("timeSeries Linear 1; pattern Plain 1 1 { load 2 3.0 }");
-  ok("system BandSPD; test NormUnbalance 1e-12 5; algorithm Newton; integrator LoadControl 1.0; analysis Static");
+  ok("system BandSPD; test NormUnbalance 1e-12 5; algorithm Newton; integrator LoadControl 1.0; "
+     "analysis Static");
   EXPECT_EQ(number("analyze 1"), 0.0);
   EXPECT_NEAR(number("nodeDisp 2 1"), 0.03, 1e-14);
   ok("reactions");
@@ -187,7 +192,8 @@ TEST_F(CommandTableTest, ModelWithoutFreeDofsAnalysesTrivially) {
 TEST_F(CommandTableTest, PathSeriesWithTimesGivesLastValueAtLastTime) {
   // OpenSees PathTimeSeries interpolates up to and including the last time, and is zero after.
   ok("model basic -ndm 1 -ndf 1; timeSeries Path 1 -time {0 1 2} -values {0 1 3}");
-  ok("node 1 0.0; node 2 0.0; fix 1 1; uniaxialMaterial Elastic 1 1.0; element zeroLength 1 1 2 -mat 1 -dir 1");
+  ok("node 1 0.0; node 2 0.0; fix 1 1; uniaxialMaterial Elastic 1 1.0; element zeroLength 1 1 2 "
+     "-mat 1 -dir 1");
   ok("pattern Plain 1 1 { load 2 1.0 }; integrator LoadControl 1.0; analysis Static");
   ok("analyze 2");
   EXPECT_NEAR(number("nodeDisp 2 1"), 3.0, 1e-12);
@@ -205,7 +211,8 @@ TEST_F(CommandTableTest, DampingForcesResponseIsTheElementRayleighForce) {
   ok("uniaxialMaterial Elastic 9 50.0; element zeroLength 2 1 2 -mat 9 -dir 1");
   ok("rayleigh 0.3 0.0 0.01 0.0");
   ok("timeSeries Constant 1; pattern Plain 1 1 { load 2 10.0 0 0 }");
-  ok("system FullGeneral; test NormDispIncr 1e-12 10; algorithm Newton; integrator Newmark 0.5 0.25");
+  ok("system FullGeneral; test NormDispIncr 1e-12 10; algorithm Newton; integrator Newmark 0.5 "
+     "0.25");
   ok("analysis Transient");
   EXPECT_EQ(number("analyze 3 0.01"), 0.0);
   const double v = number("nodeVel 2 1");
@@ -219,7 +226,8 @@ TEST_F(CommandTableTest, DampingForcesResponseIsTheElementRayleighForce) {
   EXPECT_EQ(ok("eleResponse 1 rayleighForces"), ok("eleResponse 1 dampingForces"));
   // A zeroLength declines Rayleigh damping (OpenSees' default): its damping force is zero.
   EXPECT_EQ(ok("eleResponse 2 dampingForces"), "0.0 0.0 0.0 0.0 0.0 0.0");
-  EXPECT_NE(error("eleResponse 7 dampingForces").find("element 7 does not exist"), std::string::npos);
+  EXPECT_NE(error("eleResponse 7 dampingForces").find("element 7 does not exist"),
+            std::string::npos);
 }
 
 TEST_F(CommandTableTest, GetLoadFactorGivesSeriesTimesFactor) {
@@ -238,15 +246,19 @@ TEST_F(CommandTableTest, YoshidaBearingTakesOneOrTwoRockingStiffnesses) {
   // by M / Kry and about Y by M / Krz.
   ok("model basic -ndm 3 -ndf 6; node 1 0 0 0; node 2 0 0 0; fix 1 1 1 1 1 1 1");
   ok("biaxialMaterial Yoshida 1 300.0 0.02 2.0 0.0 0.0 1.0 0.0");
-  EXPECT_NE(error("element yoshidaBearing 1 1 2 1 -Tr 0.2 -Kv 1e6 -Kt 50.0 -Kr 1 2 3").find("-Kr takes one value"),
+  EXPECT_NE(error("element yoshidaBearing 1 1 2 1 -Tr 0.2 -Kv 1e6 -Kt 50.0 -Kr 1 2 3")
+                .find("-Kr takes one value"),
             std::string::npos);
-  EXPECT_NE(error("element yoshidaBearing 1 1 2 1 -Tr 0.2 -Kv 1e6 -Kt 50.0 -Kr -1").find("Kr"), std::string::npos);
-  EXPECT_NE(error("biaxialMaterial Yoshida 2 300.0 0.02 2.0 0.0 0.0 1.0 0.0 -subIncrement 0").find("subIncrement"),
+  EXPECT_NE(error("element yoshidaBearing 1 1 2 1 -Tr 0.2 -Kv 1e6 -Kt 50.0 -Kr -1").find("Kr"),
+            std::string::npos);
+  EXPECT_NE(error("biaxialMaterial Yoshida 2 300.0 0.02 2.0 0.0 0.0 1.0 0.0 -subIncrement 0")
+                .find("subIncrement"),
             std::string::npos);
   ok("biaxialMaterial Yoshida 3 300.0 0.02 2.0 0.0 0.0 1.0 0.0 -subIncrement 0.005");
   ok("element yoshidaBearing 1 1 2 1 -Tr 0.2 -Kv 1e6 -Kt 50.0 -Kr 100.0 400.0");
   ok("timeSeries Linear 1; pattern Plain 1 1 { load 2 0 0 0 2.0 3.0 0 }");
-  ok("system FullGeneral; test NormDispIncr 1e-12 10; algorithm Newton; integrator LoadControl 1.0; analysis Static");
+  ok("system FullGeneral; test NormDispIncr 1e-12 10; algorithm Newton; integrator LoadControl "
+     "1.0; analysis Static");
   EXPECT_EQ(number("analyze 1"), 0.0);
   EXPECT_NEAR(number("nodeDisp 2 4"), 2.0 / 100.0, 1e-12);
   EXPECT_NEAR(number("nodeDisp 2 5"), 3.0 / 400.0, 1e-12);

@@ -18,7 +18,8 @@ constexpr const char* kBeam2d =
 
 TEST_F(ElementLoadCommandsTest, EleLoadNeedsAPatternElementsAndAType) {
   ok(kBeam2d);
-  EXPECT_NE(error("eleLoad -ele 1 -type -beamUniform -1.0").find("no load pattern"), std::string::npos);
+  EXPECT_NE(error("eleLoad -ele 1 -type -beamUniform -1.0").find("no load pattern"),
+            std::string::npos);
   ok("pattern Plain 1 1 {}");
   EXPECT_NE(error("eleLoad -type -beamUniform -1.0").find("-ele tags"), std::string::npos);
   EXPECT_NE(error("eleLoad -ele 1 -beamUniform -1.0").find("-type"), std::string::npos);
@@ -26,19 +27,22 @@ TEST_F(ElementLoadCommandsTest, EleLoadNeedsAPatternElementsAndAType) {
             std::string::npos);
   EXPECT_NE(error("eleLoad -ele 7 -type -beamUniform -1.0").find("element 7 does not exist"),
             std::string::npos);
-  EXPECT_NE(error("eleLoad -range 3 1 -type -beamUniform -1.0").find("last tag"), std::string::npos);
+  EXPECT_NE(error("eleLoad -range 3 1 -type -beamUniform -1.0").find("last tag"),
+            std::string::npos);
 }
 
 TEST_F(ElementLoadCommandsTest, EleLoadChecksItsValues) {
   ok(kBeam2d);
   ok("pattern Plain 1 1 {}");
-  EXPECT_NE(error("eleLoad -ele 1 -type -beamPoint -1.0 1.5").find("0 <= xL <= 1"), std::string::npos);
+  EXPECT_NE(error("eleLoad -ele 1 -type -beamPoint -1.0 1.5").find("0 <= xL <= 1"),
+            std::string::npos);
   EXPECT_NE(error("eleLoad -ele 1 -type -beamPoint -1.0").find("Py xL"), std::string::npos);
   EXPECT_NE(error("eleLoad -ele 1 -type -beamUniform -1.0 0 0.6 0.4").find("aOverL < bOverL"),
             std::string::npos);
   EXPECT_NE(error("eleLoad -ele 1 -type -beamUniform -1.0 0 0 1 -2.0 0 7").find("at most 6 values"),
             std::string::npos);
-  EXPECT_NE(error("eleLoad -ele 1 -type -beamUniform abc").find("expected a number"), std::string::npos);
+  EXPECT_NE(error("eleLoad -ele 1 -type -beamUniform abc").find("expected a number"),
+            std::string::npos);
   // Good loads on both elements, with -ele and -range.
   ok("eleLoad -ele 1 2 -type -beamUniform -1.0; eleLoad -range 1 2 -type -beamPoint 2.0 0.5 1.0");
 }

@@ -134,29 +134,40 @@ TEST_F(UniaxialParsersTest, ErrorsNameTheArgument) {
   const std::string bad = error(uniaxial::parseSteel02, "uniaxialMaterial Steel02 7 abc 2e5 0.01");
   EXPECT_TRUE(Contains(bad, "uniaxialMaterial Steel02 7: argument 3 (Fy) expected a number"));
   EXPECT_TRUE(Contains(bad, "usage: uniaxialMaterial Steel02 tag Fy E b"));
-  EXPECT_TRUE(Contains(error(uniaxial::parseSteel02, "uniaxialMaterial Steel02 7 -400 2e5 0.01"), "argument 3: Fy must be positive, got \"-400\""));
-  EXPECT_TRUE(Contains(error(uniaxial::parseSteel02, "uniaxialMaterial Steel02 7 400 2e5 0.01 18"), "(cR1)"));
-  EXPECT_TRUE(Contains(error(uniaxial::parseSteel01, "uniaxialMaterial Steel01 7 400 2e5 0.01 0.1 5"), "(a3)"));
-  EXPECT_TRUE(Contains(error(uniaxial::parseConcrete01,
-                    "uniaxialMaterial Concrete01 4 -30 -0.002 -6 -0.001"), "argument 6: epsU must exceed epsc0"));
-  EXPECT_TRUE(Contains(error(uniaxial::parseConcrete02,
-                    "uniaxialMaterial Concrete02 4 -30 -0.002 -6 -0.006 0.1 3"), "(Ets)"));
-  EXPECT_TRUE(Contains(error(uniaxial::parseElastic, "uniaxialMaterial Elastic 1 100 1 2 3"), "unexpected argument \"3\""));
-  EXPECT_TRUE(Contains(error(uniaxial::parseViscous, "uniaxialMaterial Viscous 1 10 -1"), "argument 4: alpha must be positive, got \"-1\""));
+  EXPECT_TRUE(Contains(error(uniaxial::parseSteel02, "uniaxialMaterial Steel02 7 -400 2e5 0.01"),
+                       "argument 3: Fy must be positive, got \"-400\""));
+  EXPECT_TRUE(Contains(error(uniaxial::parseSteel02, "uniaxialMaterial Steel02 7 400 2e5 0.01 18"),
+                       "(cR1)"));
+  EXPECT_TRUE(Contains(
+      error(uniaxial::parseSteel01, "uniaxialMaterial Steel01 7 400 2e5 0.01 0.1 5"), "(a3)"));
+  EXPECT_TRUE(Contains(
+      error(uniaxial::parseConcrete01, "uniaxialMaterial Concrete01 4 -30 -0.002 -6 -0.001"),
+      "argument 6: epsU must exceed epsc0"));
+  EXPECT_TRUE(Contains(
+      error(uniaxial::parseConcrete02, "uniaxialMaterial Concrete02 4 -30 -0.002 -6 -0.006 0.1 3"),
+      "(Ets)"));
+  EXPECT_TRUE(Contains(error(uniaxial::parseElastic, "uniaxialMaterial Elastic 1 100 1 2 3"),
+                       "unexpected argument \"3\""));
+  EXPECT_TRUE(Contains(error(uniaxial::parseViscous, "uniaxialMaterial Viscous 1 10 -1"),
+                       "argument 4: alpha must be positive, got \"-1\""));
   EXPECT_TRUE(Contains(error(uniaxial::parseENT, "uniaxialMaterial ENT 1"), "(E)"));
 }
 
 TEST_F(UniaxialParsersTest, ElasticPPGapDamageWord) {
   auto a = parse(uniaxial::parseElasticPPGap, "uniaxialMaterial ElasticPPGap 6 1000 -50 -0.001");
   EXPECT_FALSE(dynamic_cast<const materials::ElasticPPGap&>(*a).params().damage);
-  auto b = parse(uniaxial::parseElasticPPGap,
-                 "uniaxialMaterial ElasticPPGap 7 1000 5 0.002 0.0 damage");
+  auto b =
+      parse(uniaxial::parseElasticPPGap, "uniaxialMaterial ElasticPPGap 7 1000 5 0.002 0.0 damage");
   EXPECT_TRUE(dynamic_cast<const materials::ElasticPPGap&>(*b).params().damage);
-  auto c = parse(uniaxial::parseElasticPPGap, "uniaxialMaterial ElasticPPGap 8 1000 5 0.002 damage");
+  auto c =
+      parse(uniaxial::parseElasticPPGap, "uniaxialMaterial ElasticPPGap 8 1000 5 0.002 damage");
   EXPECT_TRUE(dynamic_cast<const materials::ElasticPPGap&>(*c).params().damage);
-  EXPECT_TRUE(Contains(error(uniaxial::parseElasticPPGap,
-                    "uniaxialMaterial ElasticPPGap 9 1000 5 0.002 0.1 broken"), "unexpected argument \"broken\""));
-  EXPECT_TRUE(Contains(error(uniaxial::parseElasticPPGap, "uniaxialMaterial ElasticPPGap 9 1000 5 0.002 1.5"), "argument 6: eta must be less than 1, got \"1.5\""));
+  EXPECT_TRUE(Contains(
+      error(uniaxial::parseElasticPPGap, "uniaxialMaterial ElasticPPGap 9 1000 5 0.002 0.1 broken"),
+      "unexpected argument \"broken\""));
+  EXPECT_TRUE(Contains(
+      error(uniaxial::parseElasticPPGap, "uniaxialMaterial ElasticPPGap 9 1000 5 0.002 1.5"),
+      "argument 6: eta must be less than 1, got \"1.5\""));
 }
 
 TEST_F(UniaxialParsersTest, Concrete02DefaultsAsOpenSees) {
@@ -181,14 +192,19 @@ TEST_F(UniaxialParsersTest, ParallelAndSeriesUsePrototypes) {
     auto m = uniaxial::parseSeries(args, tag, builder_);
     EXPECT_DOUBLE_EQ(m->getInitialTangent(), 75.0);
   }
-  EXPECT_TRUE(Contains(compositeError(uniaxial::parseParallel, "uniaxialMaterial Parallel 3 1 9"), "argument 4 (matTag) uniaxialMaterial 9 does not exist"));
-  EXPECT_TRUE(Contains(compositeError(uniaxial::parseParallel, "uniaxialMaterial Parallel 3 1 2 -factors 1"), "-factors"));
-  EXPECT_TRUE(Contains(compositeError(uniaxial::parseSeries, "uniaxialMaterial Series 4 1"), "(matTag) expected at least 2 integers"));
+  EXPECT_TRUE(Contains(compositeError(uniaxial::parseParallel, "uniaxialMaterial Parallel 3 1 9"),
+                       "argument 4 (matTag) uniaxialMaterial 9 does not exist"));
+  EXPECT_TRUE(Contains(
+      compositeError(uniaxial::parseParallel, "uniaxialMaterial Parallel 3 1 2 -factors 1"),
+      "-factors"));
+  EXPECT_TRUE(Contains(compositeError(uniaxial::parseSeries, "uniaxialMaterial Series 4 1"),
+                       "(matTag) expected at least 2 integers"));
 }
 
 TEST_F(UniaxialParsersTest, DuplicateTagIsRejectedByReadNewTag) {
   builder_.uniaxial[1] = parse(uniaxial::parseENT, "uniaxialMaterial ENT 1 100");
-  EXPECT_TRUE(Contains(error(uniaxial::parseENT, "uniaxialMaterial ENT 1 100"), "uniaxialMaterial 1 already exists"));
+  EXPECT_TRUE(Contains(error(uniaxial::parseENT, "uniaxialMaterial ENT 1 100"),
+                       "uniaxialMaterial 1 already exists"));
 }
 
 }  // namespace

@@ -20,14 +20,15 @@ TEST(PathSeriesTest, InterpolatesLinearlyAndFollowsOpenSeesAtTheEnd) {
   PathSeries s(1, 0.5, {0.0, 2.0, 4.0, 3.0}, 10.0, 0.0, false);
   EXPECT_NEAR(s.factor(0.25), 10.0, kExact);
   EXPECT_NEAR(s.factor(1.25), 35.0, kExact);
-  EXPECT_EQ(s.factor(1.5), 0.0);   // OpenSees PathSeries: zero from the last sample on
+  EXPECT_EQ(s.factor(1.5), 0.0);  // OpenSees PathSeries: zero from the last sample on
   PathSeries last(2, 0.5, {0.0, 2.0, 4.0, 3.0}, 10.0, 0.0, true);
   EXPECT_NEAR(last.factor(7.0), 30.0, kExact);
   EXPECT_EQ(s.factor(-0.1), 0.0);
 }
 
 TEST(PathSeriesTest, ReadsPeerNgaRecordHeader) {
-  // Kobe Takatori EW: NPTS = 4096, DT = 0.01 s, PGA 0.671 g at 2.82 s (verification/data/README.md).
+  // Kobe Takatori EW: NPTS = 4096, DT = 0.01 s, PGA 0.671 g at 2.82 s
+  // (verification/data/README.md).
   const RecordFile r = readRecordFile(std::string(DABS_DATA_DIR) + "/RSN1120_KOBE_TAK090.AT2");
   EXPECT_EQ(r.values.size(), 4096u);
   EXPECT_NEAR(r.dt, 0.01, kExact);
@@ -53,8 +54,10 @@ TEST(TrigSeriesTest, SineInsideItsWindowOnly) {
 }
 
 TEST(GroundMotionTest, IntegratesConstantAccelerationExactly) {
-  // a = 2 from t = 0: v = 2t, d = t^2 (trapezoid rule is exact for linear v, and second order for d).
-  auto accel = std::make_shared<PathSeries>(1, 0.01, std::vector<double>(1001, 2.0), 1.0, 0.0, true);
+  // a = 2 from t = 0: v = 2t, d = t^2 (trapezoid rule is exact for linear v, and second order for
+  // d).
+  auto accel =
+      std::make_shared<PathSeries>(1, 0.01, std::vector<double>(1001, 2.0), 1.0, 0.0, true);
   GroundMotion gm(accel, nullptr, nullptr, 1.0);
   EXPECT_NEAR(gm.vel(3.0), 6.0, 1e-9);
   EXPECT_NEAR(gm.disp(3.0), 9.0, 1e-9);
@@ -62,7 +65,8 @@ TEST(GroundMotionTest, IntegratesConstantAccelerationExactly) {
 }
 
 TEST(LoadPatternTest, LoadConstFreezesTheFactor) {
-  auto series = std::make_shared<PathSeries>(1, 1.0, std::vector<double>{0.0, 1.0, 2.0, 3.0}, 1.0, 0.0, false);
+  auto series = std::make_shared<PathSeries>(1, 1.0, std::vector<double>{0.0, 1.0, 2.0, 3.0}, 1.0,
+                                             0.0, false);
   PlainPattern p(1, series, 2.0);
   EXPECT_NEAR(p.factor(1.5), 3.0, kExact);
   p.setConstant(1.5);

@@ -17,8 +17,9 @@ TEST(EnsembleCommandTest, RefusesToRunInASafeInterpreter) {
   Tcl_Interp* interp = Tcl_CreateInterp();
   ASSERT_EQ(Tcl_MakeSafe(interp), TCL_OK);
   ASSERT_EQ(tcl::registerCommands(interp), TCL_OK);
-  const int rc = Tcl_Eval(interp, "set ran 0; proc job {j} {incr ::ran; list}; "
-                                  "ensemble run {{a 1}} job -out dabs-ensemble-safe-test");
+  const int rc = Tcl_Eval(interp,
+                          "set ran 0; proc job {j} {incr ::ran; list}; "
+                          "ensemble run {{a 1}} job -out dabs-ensemble-safe-test");
   EXPECT_EQ(rc, TCL_ERROR);
   const std::string message = Tcl_GetStringResult(interp);
   EXPECT_NE(message.find("ensemble run"), std::string::npos) << message;

@@ -19,7 +19,8 @@ namespace {
 struct Mailboxes {
   std::mutex mutex;
   std::condition_variable arrived;
-  std::map<std::pair<int, int>, std::deque<Communicator::Message>> boxes;  // (dest, tag) -> messages
+  std::map<std::pair<int, int>, std::deque<Communicator::Message>>
+      boxes;  // (dest, tag) -> messages
 };
 
 /// One simulated process's view of the mailboxes (point-to-point only: what the farm uses).
@@ -71,8 +72,13 @@ TEST(JobFarmTest, OneProcessRunsEveryJobInOrder) {
   JobFarm farm(comm);
   std::vector<int> ran;
   std::map<int, std::string> stored;
-  const int count = farm.run({2, 0, 1}, [&](int i) { ran.push_back(i); return std::string("r").append(std::to_string(i)); },
-                             [&](int i, const std::string& r) { stored[i] = r; });
+  const int count = farm.run(
+      {2, 0, 1},
+      [&](int i) {
+        ran.push_back(i);
+        return std::string("r").append(std::to_string(i));
+      },
+      [&](int i, const std::string& r) { stored[i] = r; });
   EXPECT_EQ(count, 3);
   EXPECT_EQ(ran, (std::vector<int>{2, 0, 1}));
   EXPECT_EQ(stored, (std::map<int, std::string>{{0, "r0"}, {1, "r1"}, {2, "r2"}}));
@@ -109,7 +115,8 @@ TEST(JobFarmTest, FreeProcessesTakeTheNextJobAndEveryResultIsStoredOnce) {
   }
   for (auto& p : processes) p.join();
   ASSERT_EQ(stored.size(), static_cast<std::size_t>(kJobs));
-  for (int i = 0; i < kJobs; ++i) EXPECT_EQ(stored[i].rfind("job " + std::to_string(i) + " on ", 0), 0u);
+  for (int i = 0; i < kJobs; ++i)
+    EXPECT_EQ(stored[i].rfind("job " + std::to_string(i) + " on ", 0), 0u);
   EXPECT_EQ(ranByProcess[0] + ranByProcess[1] + ranByProcess[2], kJobs);
   EXPECT_GT(ranByProcess[0], 0);
   EXPECT_GT(ranByProcess[2], ranByProcess[1]);

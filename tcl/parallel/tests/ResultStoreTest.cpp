@@ -10,8 +10,8 @@ namespace dabs::parallel {
 namespace {
 
 std::filesystem::path freshDir(const std::string& name) {
-  const auto dir = std::filesystem::temp_directory_path() / ("dabs-store-" + name + "-" +
-                                                             std::to_string(::getpid()));
+  const auto dir = std::filesystem::temp_directory_path() /
+                   ("dabs-store-" + name + "-" + std::to_string(::getpid()));
   std::filesystem::remove_all(dir);
   return dir;
 }
@@ -34,11 +34,11 @@ TEST(ResultStoreTest, CsvQuotesFieldsWithCommasQuotesAndLineBreaks) {
 }
 
 TEST(ResultStoreTest, RejectsTextThatIsNotOneWholeRecord) {
-  EXPECT_FALSE(ResultStore::fromCsv("job,peak\na,1").has_value());           // no final newline
-  EXPECT_FALSE(ResultStore::fromCsv("job,peak\na\n").has_value());           // fields differ
-  EXPECT_FALSE(ResultStore::fromCsv("job,peak\n").has_value());              // header only
-  EXPECT_FALSE(ResultStore::fromCsv("job,peak\na,\"1\n").has_value());       // open quote
-  EXPECT_FALSE(ResultStore::fromCsv("job\na\nb\n").has_value());             // two rows
+  EXPECT_FALSE(ResultStore::fromCsv("job,peak\na,1").has_value());      // no final newline
+  EXPECT_FALSE(ResultStore::fromCsv("job,peak\na\n").has_value());      // fields differ
+  EXPECT_FALSE(ResultStore::fromCsv("job,peak\n").has_value());         // header only
+  EXPECT_FALSE(ResultStore::fromCsv("job,peak\na,\"1\n").has_value());  // open quote
+  EXPECT_FALSE(ResultStore::fromCsv("job\na\nb\n").has_value());        // two rows
 }
 
 TEST(ResultStoreTest, WritesEachJobAtomicallyAndReadsItBack) {

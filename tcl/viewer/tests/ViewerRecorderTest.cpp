@@ -31,7 +31,8 @@ namespace {
 
 // --- a minimal JSON reader (objects, arrays, strings, numbers) -------------------------------
 struct Json {
-  std::variant<std::nullptr_t, double, std::string, std::vector<Json>, std::map<std::string, Json>> v;
+  std::variant<std::nullptr_t, double, std::string, std::vector<Json>, std::map<std::string, Json>>
+      v;
   const Json& operator[](const std::string& key) const {
     return std::get<std::map<std::string, Json>>(v).at(key);
   }
@@ -122,12 +123,18 @@ std::vector<unsigned char> fromBase64(const std::string& text) {
   int bits = 0;
   for (char c : text) {
     int v;
-    if (c >= 'A' && c <= 'Z') v = c - 'A';
-    else if (c >= 'a' && c <= 'z') v = c - 'a' + 26;
-    else if (c >= '0' && c <= '9') v = c - '0' + 52;
-    else if (c == '+') v = 62;
-    else if (c == '/') v = 63;
-    else continue;  // padding
+    if (c >= 'A' && c <= 'Z')
+      v = c - 'A';
+    else if (c >= 'a' && c <= 'z')
+      v = c - 'a' + 26;
+    else if (c >= '0' && c <= '9')
+      v = c - '0' + 52;
+    else if (c == '+')
+      v = 62;
+    else if (c == '/')
+      v = 63;
+    else
+      continue;  // padding
     buffer = buffer << 6 | static_cast<unsigned>(v);
     bits += 6;
     if (bits >= 8) {
@@ -157,7 +164,8 @@ struct PageData {
         zz |= static_cast<unsigned long long>(b & 0x7f) << shift;
         shift += 7;
       } while (b & 0x80);
-      const long long delta = (zz & 1) ? -static_cast<long long>((zz + 1) / 2) : static_cast<long long>(zz / 2);
+      const long long delta =
+          (zz & 1) ? -static_cast<long long>((zz + 1) / 2) : static_cast<long long>(zz / 2);
       level += delta;
       out.push_back(static_cast<double>(level) * q);
     }
@@ -181,7 +189,8 @@ PageData readPage(const std::string& path) {
   if (a == std::string::npos) throw std::runtime_error("no data block in " + path);
   const std::size_t b = page.find("</script>", a);
   PageData d;
-  d.json = JsonReader(std::string_view(page).substr(a + kOpen.size(), b - a - kOpen.size())).parse();
+  d.json =
+      JsonReader(std::string_view(page).substr(a + kOpen.size(), b - a - kOpen.size())).parse();
   d.bytes = fromBase64(d.json["bytes"].str());
   d.frames = static_cast<std::size_t>(d.json["frames"].num());
   return d;
@@ -212,10 +221,11 @@ std::string tempPath(const std::string& name) {
 /// Imposed displacement of a node component: a sine with a distinct amplitude, frequency and
 /// phase per node and component (m).
 double imposed(int node, int c, double t) {
-  return 0.01 * (node + 1) * (c + 1) * std::sin((1.0 + 0.3 * c) * 2.0 * std::numbers::pi * t + node);
+  return 0.01 * (node + 1) * (c + 1) *
+         std::sin((1.0 + 0.3 * c) * 2.0 * std::numbers::pi * t + node);
 }
 
-constexpr double kDt = 0.02;             // s
+constexpr double kDt = 0.02;  // s
 constexpr int kSteps = 60;
 constexpr double kTimeTolerance = 1e-9;  // s, time printed with 10 digits
 // Quantization: each value is kept to half its series' q = peak / kQuantizationLevels; the Node
@@ -232,7 +242,8 @@ void buildModel(Domain& domain) {
   elements::Truss::Params tp;
   tp.nodes = {1, 2};
   tp.area = 0.01;
-  domain.addElement(std::make_unique<elements::Truss>(7, tp, std::make_unique<materials::Elastic>(1, mp)));
+  domain.addElement(
+      std::make_unique<elements::Truss>(7, tp, std::make_unique<materials::Elastic>(1, mp)));
 }
 
 /// Imposes the displacements of step k, updates the truss and commits (which records).
@@ -260,10 +271,9 @@ TEST(ViewerRecorderTest, DisplacementsRoundTripTheNodeRecorderFile) {
     out.file = nodeFile;
     out.time = true;
     out.precision = 12;
-    domain.addRecorder(std::make_unique<NodeRecorder>(out, std::vector<int>{1, 2, 3},
-                                                      std::vector<int>{0, 1, 2},
-                                                      NodeRecorder::Response::Disp, 0,
-                                                      std::vector<std::shared_ptr<const TimeSeries>>{}));
+    domain.addRecorder(std::make_unique<NodeRecorder>(
+        out, std::vector<int>{1, 2, 3}, std::vector<int>{0, 1, 2}, NodeRecorder::Response::Disp, 0,
+        std::vector<std::shared_ptr<const TimeSeries>>{}));
     ViewerOptions options;
     options.file = page;
     domain.addRecorder(std::make_unique<ViewerRecorder>(options, kTemplate));
@@ -340,12 +350,14 @@ TEST(ViewerRecorderTest, PlotsHoldNodeAndElementResponses) {
     const auto f = static_cast<std::size_t>(k - 1);
     EXPECT_NEAR(v[f], 0.5 * imposed(3, 1, t), kHalfLevel * qv);
     // Small-displacement truss along x: N = EA/L (u2x - u1x).
-    EXPECT_NEAR(n[f], kEA_L * (imposed(2, 0, t) - imposed(1, 0, t)), kHalfLevel * qn + 1e-6 * std::abs(n[f]));
+    EXPECT_NEAR(n[f], kEA_L * (imposed(2, 0, t) - imposed(1, 0, t)),
+                kHalfLevel * qn + 1e-6 * std::abs(n[f]));
   }
 }
 
 // The drawing data: beam sections, blocks and gaps as given; the ground acceleration of a
-// UniformExcitation pattern defined after the recorder, at every frame: fact * t for a Linear series.
+// UniformExcitation pattern defined after the recorder, at every frame: fact * t for a Linear
+// series.
 TEST(ViewerRecorderTest, DrawingDataAndGroundAcceleration) {
   const std::string page = tempPath("drawing.html");
   constexpr double kFact = 2.5;
@@ -360,12 +372,16 @@ TEST(ViewerRecorderTest, DrawingDataAndGroundAcceleration) {
     rect.elements = {7};
     options.sections = {rect};
     ViewerBlock block;
-    block.lx = 1.0; block.ly = 2.0; block.lz = 3.0; block.dz = -1.5;
+    block.lx = 1.0;
+    block.ly = 2.0;
+    block.lz = 3.0;
+    block.dz = -1.5;
     block.nodes = {1, 3};
     options.blocks = {block};
     options.gaps = {{"Gap1", 1, 2}};
     domain.addRecorder(std::make_unique<ViewerRecorder>(options, kTemplate));
-    domain.addPattern(std::make_unique<UniformExcitation>(5, 1, std::make_shared<LinearSeries>(1, 1.0), kFact, 0.0));
+    domain.addPattern(std::make_unique<UniformExcitation>(
+        5, 1, std::make_shared<LinearSeries>(1, 1.0), kFact, 0.0));
     for (int k = 1; k <= kSteps; ++k) step(domain, k);
     domain.flushRecorders();
   }
@@ -384,7 +400,8 @@ TEST(ViewerRecorderTest, DrawingDataAndGroundAcceleration) {
   EXPECT_EQ(d.json["ground"][0][0].num(), 1.0);  // dof 2 (Y), 0-based
   const auto a = d.series(d.json["ground"][0][1]);
   const double q = d.q(d.json["ground"][0][1]);
-  for (int k = 1; k <= kSteps; ++k) EXPECT_NEAR(a[static_cast<std::size_t>(k - 1)], kFact * kDt * k, kHalfLevel * q);
+  for (int k = 1; k <= kSteps; ++k)
+    EXPECT_NEAR(a[static_cast<std::size_t>(k - 1)], kFact * kDt * k, kHalfLevel * q);
 }
 
 TEST(ViewerRecorderTest, RejectsShapesOnTheWrongElements) {
@@ -396,10 +413,12 @@ TEST(ViewerRecorderTest, RejectsShapesOnTheWrongElements) {
   pad.lx = pad.ly = 1.0;
   pad.elements = {7};  // a truss, not a bearing
   options.pads = {pad};
-  EXPECT_THROW(domain.addRecorder(std::make_unique<ViewerRecorder>(options, kTemplate)), InputError);
+  EXPECT_THROW(domain.addRecorder(std::make_unique<ViewerRecorder>(options, kTemplate)),
+               InputError);
   options.pads.clear();
   options.gaps = {{"G", 1, 99}};
-  EXPECT_THROW(domain.addRecorder(std::make_unique<ViewerRecorder>(options, kTemplate)), InputError);
+  EXPECT_THROW(domain.addRecorder(std::make_unique<ViewerRecorder>(options, kTemplate)),
+               InputError);
 }
 
 TEST(ViewerRecorderTest, DeltaTRecordsTheSameFramesAsTheNodeRecorder) {
@@ -412,9 +431,9 @@ TEST(ViewerRecorderTest, DeltaTRecordsTheSameFramesAsTheNodeRecorder) {
     out.file = nodeFile;
     out.time = true;
     out.deltaT = 0.1;
-    domain.addRecorder(std::make_unique<NodeRecorder>(out, std::vector<int>{2}, std::vector<int>{0},
-                                                      NodeRecorder::Response::Disp, 0,
-                                                      std::vector<std::shared_ptr<const TimeSeries>>{}));
+    domain.addRecorder(std::make_unique<NodeRecorder>(
+        out, std::vector<int>{2}, std::vector<int>{0}, NodeRecorder::Response::Disp, 0,
+        std::vector<std::shared_ptr<const TimeSeries>>{}));
     ViewerOptions options;
     options.file = page;
     options.deltaT = 0.1;
@@ -439,7 +458,8 @@ TEST(ViewerRecorderTest, RejectsUnknownNodesAndResponses) {
   ViewerOptions options;
   options.file = tempPath("bad.html");
   options.nodes = {1, 99};
-  EXPECT_THROW(domain.addRecorder(std::make_unique<ViewerRecorder>(options, kTemplate)), InputError);
+  EXPECT_THROW(domain.addRecorder(std::make_unique<ViewerRecorder>(options, kTemplate)),
+               InputError);
   options.nodes = {};
   ViewerPlot p;
   p.label = "bad";
@@ -447,7 +467,8 @@ TEST(ViewerRecorderTest, RejectsUnknownNodesAndResponses) {
   p.tag = 7;
   p.response = {"noSuchResponse"};
   options.plots = {p};
-  EXPECT_THROW(domain.addRecorder(std::make_unique<ViewerRecorder>(options, kTemplate)), InputError);
+  EXPECT_THROW(domain.addRecorder(std::make_unique<ViewerRecorder>(options, kTemplate)),
+               InputError);
   options.plots = {};
   EXPECT_THROW(ViewerRecorder(options, "<html>no marker</html>"), InputError);
 }
@@ -471,7 +492,8 @@ TEST(ViewerRecorderTest, CaseStudySizedPageStaysUnderTenMegabytes) {
   const std::string page = tempPath("large.html");
   {
     Domain domain;
-    for (int i = 0; i < kNodes; ++i) domain.addNode(i + 1, 3, 6, Eigen::Vector3d(10.0 * i, 0.0, 0.0));
+    for (int i = 0; i < kNodes; ++i)
+      domain.addNode(i + 1, 3, 6, Eigen::Vector3d(10.0 * i, 0.0, 0.0));
     ViewerOptions options;
     options.file = page;
     domain.addRecorder(std::make_unique<ViewerRecorder>(options));
@@ -491,10 +513,12 @@ TEST(ViewerRecorderTest, CaseStudySizedPageStaysUnderTenMegabytes) {
   EXPECT_EQ(d.frames, static_cast<std::size_t>(kFrames));
   const auto last = d.series(d.json["disp"][3 * (kNodes - 1) + 2]);
   const double t = 0.005 * kFrames;
-  const double expected = 0.2 * std::sin(2.0 * std::numbers::pi * t / 1.0 + 0.05 * kNodes) * std::exp(-0.05 * t);
+  const double expected =
+      0.2 * std::sin(2.0 * std::numbers::pi * t / 1.0 + 0.05 * kNodes) * std::exp(-0.05 * t);
   EXPECT_NEAR(last.back(), expected, kHalfLevel * d.q(d.json["disp"][3 * (kNodes - 1) + 2]));
   if (viewer::viewerBundleBuilt()) {
-    EXPECT_NE(readFile(page).find("dabsViewer"), std::string::npos) << "the page holds the viewer script";
+    EXPECT_NE(readFile(page).find("dabsViewer"), std::string::npos)
+        << "the page holds the viewer script";
   }
 }
 
