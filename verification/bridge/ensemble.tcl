@@ -14,8 +14,8 @@
 # A rerun skips the runs already done (killed studies resume).
 #
 # Motions
-#   records  every .AT2 file in verification/data (Takatori EW, El Centro NS) and, when present,
-#            in ../shared/data/ground-motions beside the checkout (a file name counted once)
+#   records  every .AT2 file in verification/data (Takatori EW, El Centro NS, Northridge Arleta
+#            360: copies of the measured records, headers kept)
 #   pulses   the Mavroeidis-Papageorgiou pulse (timeSeries NearFaultPulse) with periods Tp from
 #            0.5 to 4 s, inside the 0.4-12.9 s of the 91 pulse-like NGA records Baker (2007, BSSA
 #            97(5):1486-1501) found and around the isolated periods; gamma and nu as fitted to
@@ -57,7 +57,7 @@ set cases {nopound pound countermeasure}
 set pulsePeriods {0.5 0.75 1.0 1.5 2.0 3.0 4.0}  ;# s
 set pgvLadder {0.3 0.5 0.75 1.0 1.25 1.5 1.75 2.0} ;# m/s
 set studyDuration $duration                        ;# s of each analysis (bridge.tcl: 20 s)
-set recordFolders [list [file join $here .. data] [file join $here .. .. .. shared data ground-motions]]
+set recordFolders [list [file join $here .. data]]
 set recordPatterns {*.AT2 *.at2}
 if {$study eq "smoke"} {
   set cases {pound countermeasure}
