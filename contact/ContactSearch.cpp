@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 #include "contact/ContactSearch.h"
 
+#include <algorithm>
+
 namespace dabs::contact {
 
 double ContactSearch::distanceLowerBound(const Eigen::Vector3d& contactor,
@@ -9,17 +11,21 @@ double ContactSearch::distanceLowerBound(const Eigen::Vector3d& contactor,
   return (contactor - s.center).norm() - s.radius;
 }
 
+namespace {
+/// Height of the contactor above the face's highest corner along the outward normal n. One-sided:
+/// only the outward side counts (behind the face is penetration, never far).
+double slabDistance(const Eigen::Vector3d& contactor, const std::array<Eigen::Vector3d, 4>& quad,
+                    const Eigen::Vector3d& n) noexcept {
+  double zMax = n.dot(quad[0]);
+  for (std::size_t i = 1; i < 4; ++i) zMax = std::max(zMax, n.dot(quad[i]));
+  return n.dot(contactor) - zMax;
+}
+}  // namespace
+
 double ContactSearch::distanceLowerBound(const Eigen::Vector3d& contactor,
                                          const std::array<Eigen::Vector3d, 4>& quad,
                                          const Eigen::Vector3d& n) noexcept {
-  const double zk = n.dot(contactor);
-  double zMax = n.dot(quad[0]);
-  for (std::size_t i = 1; i < 4; ++i) {
-    const double z = n.dot(quad[i]);
-    zMax = z > zMax ? z : zMax;
-  }
-  // One-sided: only the outward side counts (behind the face is penetration, never far).
-  const double slab = zk - zMax;
+  const double slab = slabDistance(contactor, quad, n);
   const double sphere = distanceLowerBound(contactor, quad);
   return slab > sphere ? slab : sphere;
 }
@@ -29,14 +35,7 @@ bool ContactSearch::isFar(const Eigen::Vector3d& contactor,
                           double& bound) const noexcept {
   if (!enabled()) return false;
   // The slab alone first: it settles most far pairs (faces across a gap) without the sphere.
-  const double zk = n.dot(contactor);
-  double zMax = n.dot(quad[0]);
-  for (std::size_t i = 1; i < 4; ++i) {
-    const double z = n.dot(quad[i]);
-    zMax = z > zMax ? z : zMax;
-  }
-  // One-sided: only the outward side counts (behind the face is penetration, never far).
-  const double slab = zk - zMax;
+  const double slab = slabDistance(contactor, quad, n);
   if (slab > distance_) {
     bound = slab;
     return true;

@@ -11,16 +11,8 @@ ArcLength::ArcLength(double arcLength, double wU, double wF, bool loadScaled)
 void ArcLength::domainChanged(LinearSystem& system) {
   StaticIntegrator::domainChanged(system);
   AnalysisModel& model = system.model();
-  // Reference load: the unbalance at lambda + 1 with the committed (equilibrated) state.
   lambda_ = model.domain().committedTime();
-  model.applyLoad(lambda_ + 1.0);
-  if (ok(push(system))) {
-    system.formResidual(coefficients(StiffnessKind::Current));
-    phat_ = system.B;
-  } else {
-    phat_ = Eigen::VectorXd::Zero(model.numEquations());
-  }
-  model.applyLoad(lambda_);
+  phat_ = referenceLoad(system, lambda_);
   wFEffective_ = loadScaled_ ? wF_ * phat_.squaredNorm() : wF_;
   dUstep_ = Eigen::VectorXd::Zero(phat_.size());
 }

@@ -20,17 +20,8 @@ void DisplacementControl::domainChanged(LinearSystem& system) {
   StaticIntegrator::domainChanged(system);
   AnalysisModel& model = system.model();
   equation_ = model.equationOf(node_, dof_);
-  // Reference load: unbalance at lambda_c + 1 with the committed state (OpenSees
-  // DisplacementControl::domainChanged), which for an equilibrated state is the load pattern.
   lambda_ = model.domain().committedTime();
-  model.applyLoad(lambda_ + 1.0);
-  if (ok(push(system))) {
-    system.formResidual(coefficients(StiffnessKind::Current));
-    phat_ = system.B;
-  } else {
-    phat_ = Eigen::VectorXd::Zero(model.numEquations());
-  }
-  model.applyLoad(lambda_);
+  phat_ = referenceLoad(system, lambda_);
 }
 
 Status DisplacementControl::newStep(LinearSystem& system, double /*dt*/) {

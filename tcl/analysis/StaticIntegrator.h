@@ -25,6 +25,11 @@ class StaticIntegrator : public Integrator {
   void countIteration() noexcept { ++iterationsLastStep_; }
   /// Makes the next step use `step` unscaled (OpenSees setDeltaLambda).
   void resetAdaptation() noexcept { iterationsLastStep_ = Jd_; }
+  /// Reference load of the path-following integrators: the unbalance at load factor lambda + 1
+  /// with the committed state (for an equilibrated state, the load pattern; OpenSees
+  /// DisplacementControl::domainChanged), zero when the model cannot be pushed there. The load is
+  /// left at lambda.
+  Eigen::VectorXd referenceLoad(LinearSystem& system, double lambda);
 
  private:
   int Jd_;

@@ -271,12 +271,14 @@ void setTimeCmd(Runtime& rt, ArgReader& a) {
 void getTimeCmd(Runtime& rt, ArgReader& a) {
   const std::string format = a.hasMore() ? a.word("format") : "%f";
   a.finish();
-  Tcl_Obj* args[] = {Tcl_NewStringObj("format", -1), Tcl_NewStringObj(format.c_str(), -1),
-                     Tcl_NewDoubleObj(rt.domain.committedTime())};
-  for (Tcl_Obj* o : args) Tcl_IncrRefCount(o);
-  const int code = Tcl_EvalObjv(rt.interp, 3, args, TCL_EVAL_GLOBAL);
-  for (Tcl_Obj* o : args) Tcl_DecrRefCount(o);
-  if (code != TCL_OK) a.fail(1, "format", std::string(Tcl_GetStringResult(rt.interp)));
+  Tcl_Obj* time = Tcl_NewDoubleObj(rt.domain.committedTime());
+  Tcl_IncrRefCount(time);
+  // Tcl's own formatter (the `format` command's), so a format the script could pass to `format`
+  // gives the same text, and a bad one is reported as such.
+  Tcl_Obj* text = Tcl_Format(rt.interp, format.c_str(), 1, &time);
+  Tcl_DecrRefCount(time);
+  if (text == nullptr) a.failArgument("format", std::string(Tcl_GetStringResult(rt.interp)));
+  Tcl_SetObjResult(rt.interp, text);
 }
 
 // getLoadFactor patternTag: the pattern's factor at the current time. For a UniformExcitation
