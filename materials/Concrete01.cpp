@@ -25,6 +25,8 @@ Concrete01::Params Concrete01::Params::normalized() const {
 Concrete01::Concrete01(int tag, const Params& params)
     : StatefulUniaxial(tag), params_(params.normalized()) {
   assert(params_.fpc < 0.0 && params_.epsc0 < 0.0 && params_.epsU < params_.epsc0);
+  Ec0_ = 2.0 * params_.fpc / params_.epsc0;
+  descentSlope_ = (params_.fpc - params_.fpcu) / (params_.epsc0 - params_.epsU);
   revertToStart();
 }
 

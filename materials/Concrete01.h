@@ -47,7 +47,7 @@ class Concrete01 final : public StatefulUniaxial<Concrete01, Concrete01State> {
   [[nodiscard]] Status computeTrial(const State& committed, State& trial, double strain) const;
   /// The virgin state.
   State virginState() const { return initialState(); }
-  double getInitialTangent() const override { return 2.0 * params_.fpc / params_.epsc0; }
+  double getInitialTangent() const override { return Ec0_; }
   /// Parameters with negative (compressive) signs.
   const Params& params() const noexcept { return params_; }
 
@@ -57,6 +57,10 @@ class Concrete01 final : public StatefulUniaxial<Concrete01, Concrete01State> {
   void unload(State& s) const;
   void reload(State& s) const;
   Params params_;
+  // Constants of the parameters, formed once with the expressions the update used to evaluate
+  // (so the same bits): divisions are much of this law's cost in a fiber loop.
+  double Ec0_ = 0.0;            ///< initial tangent 2 fpc / epsc0
+  double descentSlope_ = 0.0;  ///< (fpc - fpcu) / (epsc0 - epsU)
 };
 
 // The update and its branches are defined here, inline, so that a fiber section's loop over
@@ -68,9 +72,9 @@ inline void Concrete01::envelope(State& s) const {
   if (s.strain > p.epsc0) {
     const double eta = s.strain / p.epsc0;
     s.stress = p.fpc * (2.0 * eta - eta * eta);
-    s.tangent = 2.0 * p.fpc / p.epsc0 * (1.0 - eta);
+    s.tangent = Ec0_ * (1.0 - eta);
   } else if (s.strain > p.epsU) {
-    s.tangent = (p.fpc - p.fpcu) / (p.epsc0 - p.epsU);
+    s.tangent = descentSlope_;
     s.stress = p.fpc + s.tangent * (s.strain - p.epsc0);
   } else {
     s.stress = p.fpcu;
@@ -88,7 +92,7 @@ inline void Concrete01::unload(State& s) const {
   const double ratio = eta < 2.0 ? 0.145 * eta * eta + 0.13 * eta : 0.707 * (eta - 2.0) + 0.834;
   s.endStrain = ratio * p.epsc0;
   const double span = s.minStrain - s.endStrain;  // negative
-  const double Ec0 = getInitialTangent();
+  const double Ec0 = Ec0_;
   const double elasticSpan = s.stress / Ec0;
   if (span > -DBL_EPSILON) {
     s.unloadSlope = Ec0;

@@ -78,6 +78,9 @@ class TypedFiberGroup final : public FiberGroup {
     addTo(sums, false);
     return status;
   }
+  Status setTrialPlanar(double e0, double kz, FiberSums& sums) override {
+    return setTrial(e0, kz, 0.0, sums);
+  }
 
   void addTo(FiberSums& sums, bool initial) const override {
     FiberSums local = sums;
@@ -141,21 +144,10 @@ class StateFiberGroup final : public FiberGroup {
   bool accepts(const UniaxialMaterial& material) const override { return &material == source_; }
 
   Status setTrial(double e0, double kz, double ky, FiberSums& sums) override {
-    // One pass: the update is inlined (no call to save the accumulators around), and each fiber's
-    // state is summed while it is in cache; on large models the state arrays do not fit in it.
-    FiberSums local = sums;
-    Status status = Status::Ok;
-    const std::size_t n = trial_.size();
-    for (std::size_t i = 0; i < n; ++i) {
-      const double y = y_[i], z = z_[i], a = area_[i];
-      State& t = trial_[i];
-      const Status s = law_.computeTrial(committed_[i], t, e0 - y * kz + z * ky);
-      if (!ok(s)) status = s;
-      local.add(y, z, t.stress * a, t.tangent * a);
-    }
-    sums = local;
-    trialIsNew_ = true;
-    return status;
+    return sweep<false>(e0, kz, ky, sums);
+  }
+  Status setTrialPlanar(double e0, double kz, FiberSums& sums) override {
+    return sweep<true>(e0, kz, 0.0, sums);
   }
   void addTo(FiberSums& sums, bool initial) const override {
     FiberSums local = sums;
@@ -187,6 +179,33 @@ class StateFiberGroup final : public FiberGroup {
   }
 
  private:
+  /// One pass: the update is inlined (no call to save the accumulators around), and each fiber's
+  /// state is summed while it is in cache; on large models the state arrays do not fit in it. A
+  /// plane section skips the z terms (a third of the sums).
+  template <bool Planar>
+  Status sweep(double e0, double kz, double ky, FiberSums& sums) {
+    FiberSums local = sums;
+    Status status = Status::Ok;
+    const std::size_t n = trial_.size();
+    for (std::size_t i = 0; i < n; ++i) {
+      const double y = y_[i], a = area_[i];
+      State& t = trial_[i];
+      if constexpr (Planar) {
+        const Status s = law_.computeTrial(committed_[i], t, e0 - y * kz);
+        if (!ok(s)) status = s;
+        local.addPlanar(y, t.stress * a, t.tangent * a);
+      } else {
+        const double z = z_[i];
+        const Status s = law_.computeTrial(committed_[i], t, e0 - y * kz + z * ky);
+        if (!ok(s)) status = s;
+        local.add(y, z, t.stress * a, t.tangent * a);
+      }
+    }
+    sums = local;
+    trialIsNew_ = true;
+    return status;
+  }
+
   /// The states the fibers are in: the trial ones after a setTrial, the committed ones after a
   /// commit or revert (then trial_ holds stale values, overwritten by the next setTrial).
   const std::vector<State>& current() const { return trialIsNew_ ? trial_ : committed_; }

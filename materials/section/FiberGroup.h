@@ -27,6 +27,14 @@ struct FiberSums {
     kzy -= stiffness * y * z;
     kyy += stiffness * z * z;
   }
+  /// The same for a plane section (z and ky absent): the five sums a 2D section uses.
+  void addPlanar(double y, double force, double stiffness) noexcept {
+    p += force;
+    mz -= force * y;
+    kPP += stiffness;
+    kPz -= stiffness * y;
+    kzz += stiffness * y * y;
+  }
 };
 
 /// The fibers of one section that share a material type: coordinates, areas and material states
@@ -51,6 +59,8 @@ class FiberGroup {
   /// Sets every fiber's trial strain e0 - y kz + z ky and adds the fibers' trial forces and
   /// tangents to `sums`. Returns the last failed status, or Ok.
   [[nodiscard]] virtual Status setTrial(double e0, double kz, double ky, FiberSums& sums) = 0;
+  /// The same for a 2D section: strains e0 - y kz, and only the sums addPlanar forms.
+  [[nodiscard]] virtual Status setTrialPlanar(double e0, double kz, FiberSums& sums) = 0;
   /// Adds the current trial forces and tangents (`initial`: the initial tangents, no forces).
   virtual void addTo(FiberSums& sums, bool initial) const = 0;
 

@@ -97,7 +97,8 @@ Status FiberSection<Ndm>::setTrialDeformation(const Eigen::Ref<const Eigen::Vect
   Status status = Status::Ok;
   FiberSums sums;
   for (const auto& g : groups_) {
-    const Status s = g->setTrial(e_(0), kz, ky, sums);
+    const Status s =
+        Ndm == 2 ? g->setTrialPlanar(e_(0), kz, sums) : g->setTrial(e_(0), kz, ky, sums);
     if (!ok(s)) status = s;
   }
   materialUpdates_ += numFibers();
