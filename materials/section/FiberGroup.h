@@ -57,7 +57,8 @@ class FiberGroup {
   virtual void add(double y, double z, double area, const UniaxialMaterial& prototype) = 0;
 
   /// Sets every fiber's trial strain e0 - y kz + z ky and adds the fibers' trial forces and
-  /// tangents to `sums`. Returns the last failed status, or Ok.
+  /// tangents to `sums`. Returns the last failed status, or Ok; a non-finite fiber stress or
+  /// tangent may instead show only as non-finite sums, which the caller checks.
   [[nodiscard]] virtual Status setTrial(double e0, double kz, double ky, FiberSums& sums) = 0;
   /// The same for a 2D section: strains e0 - y kz, and only the sums addPlanar forms.
   [[nodiscard]] virtual Status setTrialPlanar(double e0, double kz, FiberSums& sums) = 0;

@@ -103,7 +103,7 @@ Status FiberSection<Ndm>::setTrialDeformation(const Eigen::Ref<const Eigen::Vect
   }
   materialUpdates_ += numFibers();
   store(sums, false);
-  if (ok(status) && !s_.allFinite()) status = Status::NonFinite;
+  if (ok(status) && !(s_.allFinite() && k_.allFinite())) status = Status::NonFinite;
   return status;
 }
 
