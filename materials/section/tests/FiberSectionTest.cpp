@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <limits>
 #include <numbers>
 
 #include "materials/Concrete02.h"
@@ -239,6 +240,27 @@ TEST(FiberSectionTest, MixedMaterialsSumLikeTheFibersOneByOne) {
     for (auto& m : alone) m->commitState();
   }
   EXPECT_EQ(sec.materialUpdates(), 60);
+}
+
+TEST(FiberSectionTest, NonFiniteFiberStressFailsTheSection) {
+  // An infinite strain drives Steel02's Menegotto-Pinto ratio to inf / inf (NaN), which the
+  // material alone reports as NonFinite; the section must report the same, in 2D and in 3D, and
+  // a later finite deformation must work again from the committed state.
+  Steel02::Params sp;
+  sp.Fy = 4e5;
+  sp.E = 2e8;
+  sp.b = 0.01;
+  const Steel02 steel(2, sp);
+  auto alone = steel.clone();
+  const double inf = std::numeric_limits<double>::infinity();
+  ASSERT_EQ(alone->setTrialStrain(inf), Status::NonFinite);
+  auto sec2 = rectangle<2>(steel);
+  EXPECT_EQ(sec2.setTrialDeformation(Eigen::Vector2d(inf, 0.0)), Status::NonFinite);
+  sec2.revertToLastCommit();
+  EXPECT_TRUE(ok(sec2.setTrialDeformation(Eigen::Vector2d(1e-4, 0.0))));
+  EXPECT_NEAR(sec2.getStressResultant()(0), sp.E * 1e-4 * kB * kH, 1e-9 * sp.E * 1e-4 * kB * kH);
+  auto sec3 = rectangle<3>(steel, 1.0);
+  EXPECT_EQ(sec3.setTrialDeformation(Eigen::Vector4d(0.0, inf, 0.0, 0.0)), Status::NonFinite);
 }
 
 }  // namespace
