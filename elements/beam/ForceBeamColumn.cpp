@@ -9,8 +9,8 @@ namespace dabs::elements {
 namespace {
 /// Inverse of a fixed-size matrix by Eigen's closed form (cofactors up to 4x4); false when the
 /// determinant is zero or not finite.
-template <int N>
-bool invertFixed(const Eigen::Ref<const Eigen::MatrixXd>& k, Eigen::Ref<Eigen::MatrixXd> f) {
+template <int N, class Result>
+bool invertFixed(const Eigen::Ref<const Eigen::MatrixXd>& k, Result&& f) {
   const Eigen::Matrix<double, N, N> a = k;
   Eigen::Matrix<double, N, N> inverse;
   double det = 0.0;
@@ -61,6 +61,9 @@ void ForceBeamColumn<Ndm>::initialize(const NodalCoordinates& x) {
     s.sr[i] = p.section->getStressResultant();
     fe_ += p.weight * length * bmat_[i].transpose() * f * bmat_[i];
   }
+  uniformOrder_ = this->points_.front().section->order();
+  for (const auto& p : this->points_)
+    if (p.section->order() != uniformOrder_) uniformOrder_ = 0;
   const Eigen::FullPivLU<BasicMatrix> lu(fe_);
   if (!lu.isInvertible())
     throw InputError("integration", "gives a singular element flexibility (too few points?)");
@@ -81,9 +84,52 @@ void ForceBeamColumn<Ndm>::startFromVirginState() {
   this->kc_ = this->k_;
 }
 
+namespace {
+/// Views of one integration point's arrays for the section loop: fixed-size maps when every
+/// section of the element has order `Order` (the arrays then hold Order rows each, stored
+/// contiguously), the arrays themselves when the orders differ (Order = Eigen::Dynamic).
+template <int Order, int Nb>
+struct PointView {
+  using Vec = Eigen::Matrix<double, Order, 1>;
+  using Mat = Eigen::Matrix<double, Order, Order>;
+  static Eigen::Map<Vec> vec(SectionVector& v) { return Eigen::Map<Vec>(v.data()); }
+  static Eigen::Map<const Vec> vec(const SectionVector& v) {
+    return Eigen::Map<const Vec>(v.data());
+  }
+  static Eigen::Map<Mat> mat(SectionMatrix& m) { return Eigen::Map<Mat>(m.data()); }
+  static Eigen::Map<const Eigen::Matrix<double, Order, Nb>> interp(
+      const SectionBasicMatrix<Nb>& b) {
+    return Eigen::Map<const Eigen::Matrix<double, Order, Nb>>(b.data());
+  }
+  static bool invert(const Eigen::Ref<const Eigen::MatrixXd>& k, Eigen::Map<Mat>& f) {
+    return invertFixed<Order>(k, f);
+  }
+};
+template <int Nb>
+struct PointView<Eigen::Dynamic, Nb> {
+  using Vec = SectionVector;
+  static SectionVector& vec(SectionVector& v) { return v; }
+  static const SectionVector& vec(const SectionVector& v) { return v; }
+  static SectionMatrix& mat(SectionMatrix& m) { return m; }
+  static const SectionBasicMatrix<Nb>& interp(const SectionBasicMatrix<Nb>& b) { return b; }
+  static bool invert(const SectionMatrix& k, SectionMatrix& f) { return dabs::elements::invert(k, f); }
+};
+}  // namespace
+
 // One solve from state s (which holds the start point) to basic deformations `target`.
 template <int Ndm>
 Status ForceBeamColumn<Ndm>::iterate(State& s, const Basic& target) const {
+  // Fiber sections (P-Mz in 2D, P-Mz-My-T in 3D) on fixed-size matrices: the section loop is
+  // most of the element's own work.
+  if (uniformOrder_ == 2) return iterateWith<2>(s, target);
+  if (uniformOrder_ == 4) return iterateWith<4>(s, target);
+  return iterateWith<Eigen::Dynamic>(s, target);
+}
+
+template <int Ndm>
+template <int Order>
+Status ForceBeamColumn<Ndm>::iterateWith(State& s, const Basic& target) const {
+  using View = PointView<Order, kBasic>;
   const double length = this->transf_->initialLength();
   const int n = static_cast<int>(this->points_.size());
   s.q += s.kb * (target - s.v);
@@ -92,18 +138,21 @@ Status ForceBeamColumn<Ndm>::iterate(State& s, const Basic& target) const {
     Basic vr = Basic::Zero();
     for (int i = 0; i < n; ++i) {
       auto& sec = *this->points_[i].section;
-      const auto& b = bmat_[i];
-      SectionVector force = b * s.q;
-      if (!sp_.empty()) force += sp_[static_cast<std::size_t>(i)];
-      s.e[i] += s.fs[i] * (force - s.sr[i]);
+      const auto& b = View::interp(bmat_[i]);
+      auto&& e = View::vec(s.e[i]);
+      auto&& sr = View::vec(s.sr[i]);
+      auto&& fs = View::mat(s.fs[i]);
+      typename View::Vec force = b * s.q;
+      if (!sp_.empty()) force += View::vec(sp_[static_cast<std::size_t>(i)]);
+      e += fs * (force - sr);
       const Status st = sec.setTrialDeformation(s.e[i]);
       if (!ok(st)) return st;
-      s.sr[i] = sec.getStressResultant();
-      if (!invert(sec.getSectionTangent(), s.fs[i])) return Status::NotConverged;
+      sr = sec.getStressResultant();
+      if (!View::invert(sec.getSectionTangent(), fs)) return Status::NotConverged;
       const double wl = this->points_[i].weight * length;
-      flex += wl * b.transpose() * s.fs[i] * b;
+      flex += wl * b.transpose() * fs * b;
       // Compatible deformations plus the residual (unbalanced) section deformations.
-      vr += wl * b.transpose() * (s.e[i] + s.fs[i] * (force - s.sr[i]));
+      vr += wl * b.transpose() * (e + fs * (force - sr));
     }
     if constexpr (kBasic <= 4) {
       double det = 0.0;

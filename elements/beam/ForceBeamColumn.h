@@ -70,6 +70,10 @@ class ForceBeamColumn final : public SectionBeamColumn<Ndm> {
   };
   void loadsChanged() override;
   Status iterate(State& s, const Basic& target) const;
+  /// iterate() with the section arrays seen as fixed-size matrices of `Order` rows (all sections
+  /// of that order) or as they are (Eigen::Dynamic).
+  template <int Order>
+  Status iterateWith(State& s, const Basic& target) const;
   Status solve(const Basic& target);
   void finish();
   /// Trial and committed states at the virgin state formed by initialize() (no deformation).
@@ -79,6 +83,7 @@ class ForceBeamColumn final : public SectionBeamColumn<Ndm> {
   double tol_;
   std::vector<SectionBasicMatrix<kBasic>> bmat_;
   BasicMatrix fe_ = BasicMatrix::Zero();  ///< initial (elastic) flexibility
+  int uniformOrder_ = 0;  ///< the order all sections share, or 0 when they differ
   /// Section forces of the member loads in the basic system, per point (empty without loads).
   std::vector<SectionVector> sp_;
   State trial_, committed_;
