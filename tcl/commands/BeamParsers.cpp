@@ -17,10 +17,8 @@
 #include "elements/beam/ZeroLengthSection.h"
 #include "elements/transform/CorotationalTransf2d.h"
 #include "elements/transform/CorotationalTransf3d.h"
-#include "elements/transform/LinearTransf2d.h"
-#include "elements/transform/LinearTransf3d.h"
-#include "elements/transform/PDeltaTransf2d.h"
-#include "elements/transform/PDeltaTransf3d.h"
+#include "elements/transform/LinearTransf.h"
+#include "elements/transform/PDeltaTransf.h"
 #include "materials/InputError.h"
 #include "tcl/commands/Registry.h"
 
@@ -95,18 +93,18 @@ struct TransfType {
   std::unique_ptr<CrdTransf> (*make3d)(int tag, const Eigen::Vector3d& vecxz);
 };
 
-template <class T2, class T3>
+template <template <int> class T>
 constexpr TransfType transfType(std::string_view name) {
-  return {name, [](int tag) -> std::unique_ptr<CrdTransf> { return std::make_unique<T2>(tag); },
+  return {name, [](int tag) -> std::unique_ptr<CrdTransf> { return std::make_unique<T<2>>(tag); },
           [](int tag, const Eigen::Vector3d& v) -> std::unique_ptr<CrdTransf> {
-            return std::make_unique<T3>(tag, v);
+            return std::make_unique<T<3>>(tag, v);
           }};
 }
 
 const std::array kTransfTypes{
-    transfType<elements::LinearTransf2d, elements::LinearTransf3d>("Linear"),
-    transfType<elements::PDeltaTransf2d, elements::PDeltaTransf3d>("PDelta"),
-    transfType<elements::CorotationalTransf2d, elements::CorotationalTransf3d>("Corotational"),
+    transfType<elements::LinearTransf>("Linear"),
+    transfType<elements::PDeltaTransf>("PDelta"),
+    transfType<elements::CorotationalTransf>("Corotational"),
 };
 
 // geomTransf Linear|PDelta|Corotational tag ?vecxz(3D)?
