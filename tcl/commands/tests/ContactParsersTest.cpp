@@ -61,7 +61,8 @@ TEST_F(ContactParsersTest, NodeToSurfaceErrorsPointAtTheNodeOrOption) {
   EXPECT_TRUE(has(m, "argument 5: b node 21 is also the contactor node"));
   m = error("element nodeToSurface 1 30 11 12 13 14 -K 1e6");
   EXPECT_TRUE(has(m, "argument 4: a node 11 has 3 dofs but the contactor 30 has 6"));
-  // Options: -K value is argument 9, -e value 11, -masses values 13 and 14 (after -e), -EAL values 9-11.
+  // Options: -K value is argument 9, -e value 11, -masses values 13 and 14 (after -e), -EAL values
+  // 9-11.
   m = error("element nodeToSurface 1 21 11 12 13 14 -K 1e6 -e 1.5");
   EXPECT_TRUE(has(m, "argument 11: e must be in [0, 1], got \"1.5\""));
   m = error("element nodeToSurface 1 21 11 12 13 14 -K 0");
