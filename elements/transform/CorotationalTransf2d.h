@@ -7,6 +7,10 @@
 
 namespace dabs::elements {
 
+/// The corotational transformation of an Ndm-dimensional model: one specialisation per dimension.
+template <int Ndm>
+class CorotationalTransf;
+
 /// Exact planar corotational transformation (the 2D specialisation; the 3D one differs as a whole)
 /// (`geomTransf Corotational tag`) for large displacements and rotations, small strains (Crisfield
 /// 1991, Non-linear Finite Element Analysis of Solids and Structures vol. 1, sec. 7.4; the
@@ -14,9 +18,6 @@ namespace dabs::elements {
 /// deformed chord length Ln and chord rotation alpha: v0 = Ln - L0, v1 = rz_i - alpha, v2 = rz_j -
 /// alpha. The tangent is B^T kb B + N z z^T/Ln + (M_i + M_j)(r z^T + z r^T)/Ln^2 (Crisfield
 /// eq. 7.63), r and z the chord's unit axial and normal vectors spread over the translational dofs.
-template <int Ndm>
-class CorotationalTransf;
-
 template <>
 class CorotationalTransf<2> final : public CrdTransf2d {
  public:

@@ -8,6 +8,10 @@
 
 namespace dabs::elements {
 
+/// The corotational transformation of an Ndm-dimensional model: one specialisation per dimension.
+template <int Ndm>
+class CorotationalTransf;
+
 /// Spatial corotational transformation (the 3D specialisation) (`geomTransf Corotational tag vx vy
 /// vz`) for large displacements and rotations with small strains (Crisfield 1990, Comput. Methods
 /// Appl. Mech. Eng. 81; the element-independent form of Battini & Pacoste 2002, Comput. Methods
@@ -25,9 +29,6 @@ namespace dabs::elements {
 /// B = dv/du and the geometric stiffness sum_k q_k d2v_k/du2 are exact: they are computed by
 /// forward-mode automatic differentiation (nested dual numbers) of the kinematics above, so the
 /// tangent is consistent (and symmetric) for the increment parameterisation used.
-template <int Ndm>
-class CorotationalTransf;
-
 template <>
 class CorotationalTransf<3> final : public CrdTransf3d {
  public:
