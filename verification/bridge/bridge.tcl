@@ -2,6 +2,9 @@
 # Three-span base-isolated steel bridge under a near-fault ground motion: the main job
 # of DABS. A readable model that a user can copy and change: every dimension, material and
 # device is a variable at the top, with its unit.
+# One file on purpose (over 800 lines): the parameters, the model, the quantities followed and the
+# run loop are what a user copies and changes together; the report, the findings against the
+# paper and the checks are in tools/ (report.tcl, findings.tcl, checks.tcl).
 #
 #   dabs verification/bridge/bridge.tcl ?case? ?scale? ?dt? ?integrator? ?tol? ?motion? ?outDir? ?nSpans?
 #
