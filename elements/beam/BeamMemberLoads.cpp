@@ -5,8 +5,6 @@
 #include <array>
 #include <cmath>
 
-#include "elements/transform/CrdTransf2d.h"
-#include "elements/transform/CrdTransf3d.h"
 #include "materials/InputError.h"
 
 namespace dabs::elements {
@@ -179,29 +177,6 @@ SectionVector BeamMemberLoads<Nb>::sectionForces(std::span<const SectionCode> co
     }
   }
   return sp;
-}
-
-Eigen::Matrix<double, 6, 1> globalReactions(const CrdTransf2d& transf,
-                                            const BeamMemberLoads<3>& loads) {
-  const auto pl = loads.localEndForces();
-  const Eigen::Vector2d ex = transf.xAxis();
-  const Eigen::Vector2d ey(-ex.y(), ex.x());
-  Eigen::Matrix<double, 6, 1> p = Eigen::Matrix<double, 6, 1>::Zero();
-  for (int n = 0; n < 2; ++n) {
-    p.segment<2>(3 * n) = pl(3 * n) * ex + pl(3 * n + 1) * ey;
-    p(3 * n + 2) = pl(3 * n + 2);
-  }
-  return p;
-}
-
-Eigen::Matrix<double, 12, 1> globalReactions(const CrdTransf3d& transf,
-                                             const BeamMemberLoads<6>& loads) {
-  const auto pl = loads.localEndForces();
-  const Eigen::Matrix3d& axes = transf.axes();  // rows: local x, y, z
-  Eigen::Matrix<double, 12, 1> p;
-  for (int block = 0; block < 4; ++block)
-    p.segment<3>(3 * block) = axes.transpose() * pl.segment<3>(3 * block);
-  return p;
 }
 
 template class BeamMemberLoads<3>;

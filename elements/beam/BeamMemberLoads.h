@@ -6,7 +6,9 @@
 #include <vector>
 
 #include "elements/BeamLoad.h"
-#include "elements/beam/BeamColumnTraits.h"
+#include "elements/beam/SectionInterpolation.h"
+#include "elements/transform/CrdTransfNd.h"
+#include "elements/transform/FrameTraits.h"
 
 namespace dabs::elements {
 
@@ -69,11 +71,11 @@ class BeamMemberLoads {
   Reactions p0_ = Reactions::Zero();
 };
 
-/// Global end forces of the reactions p0 of a 2D member (undeformed axes).
-Eigen::Matrix<double, 6, 1> globalReactions(const class CrdTransf2d& transf,
-                                            const BeamMemberLoads<3>& loads);
-/// Global end forces of the reactions p0 of a 3D member (undeformed axes).
-Eigen::Matrix<double, 12, 1> globalReactions(const class CrdTransf3d& transf,
-                                             const BeamMemberLoads<6>& loads);
+/// Global end forces of the reactions p0 of a member: T^T p0 with the undeformed axes.
+template <int Ndm>
+typename FrameTraits<Ndm>::Global globalReactions(
+    const CrdTransfNd<Ndm>& transf, const BeamMemberLoads<FrameTraits<Ndm>::kBasic>& loads) {
+  return transf.globalFromLocal(loads.localEndForces());
+}
 
 }  // namespace dabs::elements

@@ -7,7 +7,9 @@
 
 #include "materials/ResponseArgs.h"
 #include "elements/FixedSizeElement.h"
-#include "elements/beam/BeamColumnTraits.h"
+#include "elements/beam/SectionInterpolation.h"
+#include "elements/transform/CrdTransfNd.h"
+#include "elements/transform/FrameTraits.h"
 #include "elements/beam/BeamMemberLoads.h"
 #include "elements/beam/ConsistentMass.h"
 
@@ -23,9 +25,9 @@ struct BeamIntegrationPoint {
 /// Common part of forceBeamColumn and dispBeamColumn: transformation, integration points,
 /// lumped mass and the responses that do not depend on the formulation.
 template <int Ndm>
-class SectionBeamColumn : public FixedSizeElement<2, BeamColumnTraits<Ndm>::kDofPerNode> {
+class SectionBeamColumn : public FixedSizeElement<2, FrameTraits<Ndm>::kDofPerNode> {
  public:
-  using Traits = BeamColumnTraits<Ndm>;
+  using Traits = FrameTraits<Ndm>;
   using Transf = typename Traits::Transf;
   using Basic = typename Transf::Basic;
   using BasicMatrix = typename Transf::BasicMatrix;
@@ -121,10 +123,7 @@ class SectionBeamColumn : public FixedSizeElement<2, BeamColumnTraits<Ndm>::kDof
     this->m_.setZero();
     const double mass = massPerLength_ * transf_->initialLength();
     if (consistentMass_ && mass > 0.0) {
-      if constexpr (Ndm == 2)
-        this->m_ = transf_->globalFromLocal(consistentMass2d(mass, transf_->initialLength()));
-      else
-        this->m_ = transf_->globalFromLocal(consistentMass3d(mass, transf_->initialLength(), 0.0));
+      this->m_ = transf_->globalFromLocal(consistentMass<Ndm>(mass, transf_->initialLength()));
       return;
     }
     for (int n = 0; n < 2; ++n)

@@ -43,7 +43,7 @@ ZeroLengthSection<Ndm>::ZeroLengthSection(
   a_ = Compat::Zero(order, kNumDof);
   ka_ = Compat::Zero(order, kNumDof);
   e_ = SectionVector::Zero(order);
-  constexpr int ndf = BeamColumnTraits<Ndm>::kDofPerNode;
+  constexpr int ndf = FrameTraits<Ndm>::kDofPerNode;
   for (int r = 0; r < order; ++r) {
     const SectionCode c = codes[static_cast<std::size_t>(r)];
     const bool translation = c == SectionCode::P || c == SectionCode::Vy || c == SectionCode::Vz;

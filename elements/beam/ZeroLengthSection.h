@@ -5,7 +5,8 @@
 #include <memory>
 
 #include "elements/FixedSizeElement.h"
-#include "elements/beam/BeamColumnTraits.h"
+#include "elements/beam/SectionInterpolation.h"
+#include "elements/transform/FrameTraits.h"
 #include "materials/section/SectionForceDeformation.h"
 
 namespace dabs::elements {
@@ -17,9 +18,9 @@ namespace dabs::elements {
 /// about z. Local axes: x the orient x vector, z = x cross yp, y = z cross x (defaults: global X
 /// and Y). Used for moment-curvature analysis, where the deformation is the curvature.
 template <int Ndm>
-class ZeroLengthSection final : public FixedSizeElement<2, BeamColumnTraits<Ndm>::kDofPerNode> {
+class ZeroLengthSection final : public FixedSizeElement<2, FrameTraits<Ndm>::kDofPerNode> {
  public:
-  using Base = FixedSizeElement<2, BeamColumnTraits<Ndm>::kDofPerNode>;
+  using Base = FixedSizeElement<2, FrameTraits<Ndm>::kDofPerNode>;
   using typename Base::Matrix;
   using typename Base::Vector;
   static constexpr int kNumDof = Base::kNumDof;

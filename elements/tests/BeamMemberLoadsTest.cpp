@@ -16,7 +16,7 @@
 #include "elements/beam/ForceBeamColumn.h"
 #include "elements/beam/QuadratureIntegration.h"
 #include "elements/tests/ElementChecks.h"
-#include "elements/transform/LinearTransf2d.h"
+#include "elements/transform/LinearTransf.h"
 #include "materials/Elastic.h"
 #include "materials/ElasticPP.h"
 #include "materials/InputError.h"

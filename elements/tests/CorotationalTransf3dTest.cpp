@@ -11,7 +11,7 @@
 #include "elements/beam/ElasticBeam3d.h"
 #include "elements/tests/ElementChecks.h"
 #include "elements/transform/CorotationalTransf3d.h"
-#include "elements/transform/LinearTransf3d.h"
+#include "elements/transform/LinearTransf.h"
 #include "materials/InputError.h"
 
 namespace dabs::elements {

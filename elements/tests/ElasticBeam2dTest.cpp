@@ -10,8 +10,8 @@
 #include "elements/beam/ElasticBeam2d.h"
 #include "elements/tests/ElementChecks.h"
 #include "elements/transform/CorotationalTransf2d.h"
-#include "elements/transform/LinearTransf2d.h"
-#include "elements/transform/PDeltaTransf2d.h"
+#include "elements/transform/LinearTransf.h"
+#include "elements/transform/PDeltaTransf.h"
 #include "materials/InputError.h"
 
 namespace dabs::elements {

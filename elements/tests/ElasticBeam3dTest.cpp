@@ -9,8 +9,8 @@
 
 #include "elements/beam/ElasticBeam3d.h"
 #include "elements/tests/ElementChecks.h"
-#include "elements/transform/LinearTransf3d.h"
-#include "elements/transform/PDeltaTransf3d.h"
+#include "elements/transform/LinearTransf.h"
+#include "elements/transform/PDeltaTransf.h"
 #include "materials/InputError.h"
 
 namespace dabs::elements {

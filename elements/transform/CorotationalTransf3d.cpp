@@ -76,7 +76,7 @@ V3<S> logRotation(const M3<S>& r) {
 
 }  // namespace
 
-void CorotationalTransf3d::initialize(const Eigen::Vector3d& xi, const Eigen::Vector3d& xj) {
+void CorotationalTransf<3>::initialize(const Eigen::Vector3d& xi, const Eigen::Vector3d& xj) {
   CrdTransf3d::initialize(xi, xj);
   xi_ = xi;
   xj_ = xj;
@@ -84,7 +84,7 @@ void CorotationalTransf3d::initialize(const Eigen::Vector3d& xi, const Eigen::Ve
 }
 
 template <class S>
-std::array<S, 6> CorotationalTransf3d::kinematics(const std::array<S, 12>& u) const {
+std::array<S, 6> CorotationalTransf<3>::kinematics(const std::array<S, 12>& u) const {
   using std::sqrt;
   // Nodal triads R = exp(dpsi) R_c; their images of the undeformed local axes, g[n][a] = R e0_a.
   std::array<std::array<V3<S>, 3>, 2> g;
@@ -120,7 +120,7 @@ std::array<S, 6> CorotationalTransf3d::kinematics(const std::array<S, 12>& u) co
   return {ln - S(length0_), th[0][2], th[1][2], th[0][1], th[1][1], th[1][0] - th[0][0]};
 }
 
-void CorotationalTransf3d::update(const Global& u) {
+void CorotationalTransf<3>::update(const Global& u) {
   using Inner = Dual<double, 12>;
   using Outer = Dual<Inner, 12>;
   std::array<Outer, 12> x;
@@ -139,14 +139,14 @@ void CorotationalTransf3d::update(const Global& u) {
   uTrial_ = u;
 }
 
-CorotationalTransf3d::GlobalMatrix CorotationalTransf3d::globalStiffness(const BasicMatrix& kb,
-                                                                         const Basic& q) const {
+CorotationalTransf<3>::GlobalMatrix CorotationalTransf<3>::globalStiffness(const BasicMatrix& kb,
+                                                                           const Basic& q) const {
   GlobalMatrix k = compat_.transpose() * kb * compat_;
   for (int i = 0; i < 6; ++i) k += q(i) * hessian_[i];
   return k;
 }
 
-Eigen::Matrix3d CorotationalTransf3d::nodalTriad(int n) const {
+Eigen::Matrix3d CorotationalTransf<3>::nodalTriad(int n) const {
   std::array<double, 3> dpsi;
   for (int i = 0; i < 3; ++i) dpsi[i] = uTrial_(6 * n + 3 + i) - thetaCommitted_[n](i);
   const std::array<double, 9> dr = expRotation(dpsi);
@@ -156,14 +156,14 @@ Eigen::Matrix3d CorotationalTransf3d::nodalTriad(int n) const {
   return r * rotCommitted_[n];
 }
 
-void CorotationalTransf3d::commitState() {
+void CorotationalTransf<3>::commitState() {
   for (int n = 0; n < 2; ++n) {
     rotCommitted_[n] = nodalTriad(n);
     thetaCommitted_[n] = uTrial_.segment<3>(6 * n + 3);
   }
 }
 
-void CorotationalTransf3d::revertToStart() {
+void CorotationalTransf<3>::revertToStart() {
   for (int n = 0; n < 2; ++n) {
     rotCommitted_[n].setIdentity();
     thetaCommitted_[n].setZero();
@@ -171,7 +171,7 @@ void CorotationalTransf3d::revertToStart() {
   update(Global::Zero());
 }
 
-template std::array<double, 6> CorotationalTransf3d::kinematics(
+template std::array<double, 6> CorotationalTransf<3>::kinematics(
     const std::array<double, 12>&) const;
 
 }  // namespace dabs::elements

@@ -2,15 +2,20 @@
 #pragma once
 
 #include <array>
+#include <memory>
 
 #include "elements/transform/CrdTransf3d.h"
 
 namespace dabs::elements {
 
-/// Spatial corotational transformation (`geomTransf Corotational tag vx vy vz`) for large
-/// displacements and rotations with small strains (Crisfield 1990, Comput. Methods Appl. Mech.
-/// Eng. 81; the element-independent form of Battini & Pacoste 2002, Comput. Methods Appl. Mech.
-/// Eng. 191, whose corotated frame is used here).
+/// The corotational transformation of an Ndm-dimensional model: one specialisation per dimension.
+template <int Ndm>
+class CorotationalTransf;
+
+/// Spatial corotational transformation (the 3D specialisation) (`geomTransf Corotational tag vx vy
+/// vz`) for large displacements and rotations with small strains (Crisfield 1990, Comput. Methods
+/// Appl. Mech. Eng. 81; the element-independent form of Battini & Pacoste 2002, Comput. Methods
+/// Appl. Mech. Eng. 191, whose corotated frame is used here).
 ///  - Nodal triads: R = exp(dpsi) R_c, with R_c the committed triad and dpsi the increment of the
 ///    rotation dofs since the last commit, taken as a spatial rotation vector (as OpenSees/
 ///    OpenSees:SRC/coordTransformation/CorotCrdTransf3d.cpp treats rotation increments), so the
@@ -24,12 +29,13 @@ namespace dabs::elements {
 /// B = dv/du and the geometric stiffness sum_k q_k d2v_k/du2 are exact: they are computed by
 /// forward-mode automatic differentiation (nested dual numbers) of the kinematics above, so the
 /// tangent is consistent (and symmetric) for the increment parameterisation used.
-class CorotationalTransf3d final : public CrdTransf3d {
+template <>
+class CorotationalTransf<3> final : public CrdTransf3d {
  public:
   using CrdTransf3d::CrdTransf3d;
   std::string_view typeName() const override { return "Corotational"; }
   std::unique_ptr<CrdTransf> clone() const override {
-    return std::make_unique<CorotationalTransf3d>(*this);
+    return std::make_unique<CorotationalTransf>(*this);
   }
   void initialize(const Eigen::Vector3d& xi, const Eigen::Vector3d& xj) override;
   void update(const Global& u) override;
@@ -55,5 +61,7 @@ class CorotationalTransf3d final : public CrdTransf3d {
   Global uTrial_ = Global::Zero();
   std::array<GlobalMatrix, 6> hessian_{};  ///< d2 v_k / du2 at the trial state
 };
+
+using CorotationalTransf3d = CorotationalTransf<3>;
 
 }  // namespace dabs::elements

@@ -11,7 +11,7 @@ namespace dabs::elements {
 /// stored by the model builder and cloned into each element. It maps the element's global end
 /// displacements to the basic deformations of a simply supported beam, and basic forces back to
 /// global end forces and stiffness (OpenSees/OpenSees:SRC/coordTransformation/CrdTransf.h).
-/// The fixed-size kinematics interface is declared by CrdTransf2d and CrdTransf3d.
+/// The fixed-size kinematics interface is declared by CrdTransfNd<Ndm> (CrdTransfNd.h).
 class CrdTransf {
  public:
   explicit CrdTransf(int tag) noexcept : tag_(tag) {}

@@ -17,10 +17,8 @@
 #include "elements/beam/ZeroLengthSection.h"
 #include "elements/transform/CorotationalTransf2d.h"
 #include "elements/transform/CorotationalTransf3d.h"
-#include "elements/transform/LinearTransf2d.h"
-#include "elements/transform/LinearTransf3d.h"
-#include "elements/transform/PDeltaTransf2d.h"
-#include "elements/transform/PDeltaTransf3d.h"
+#include "elements/transform/LinearTransf.h"
+#include "elements/transform/PDeltaTransf.h"
 #include "materials/InputError.h"
 #include "tcl/commands/Registry.h"
 
@@ -95,18 +93,18 @@ struct TransfType {
   std::unique_ptr<CrdTransf> (*make3d)(int tag, const Eigen::Vector3d& vecxz);
 };
 
-template <class T2, class T3>
+template <template <int> class T>
 constexpr TransfType transfType(std::string_view name) {
-  return {name, [](int tag) -> std::unique_ptr<CrdTransf> { return std::make_unique<T2>(tag); },
+  return {name, [](int tag) -> std::unique_ptr<CrdTransf> { return std::make_unique<T<2>>(tag); },
           [](int tag, const Eigen::Vector3d& v) -> std::unique_ptr<CrdTransf> {
-            return std::make_unique<T3>(tag, v);
+            return std::make_unique<T<3>>(tag, v);
           }};
 }
 
 const std::array kTransfTypes{
-    transfType<elements::LinearTransf2d, elements::LinearTransf3d>("Linear"),
-    transfType<elements::PDeltaTransf2d, elements::PDeltaTransf3d>("PDelta"),
-    transfType<elements::CorotationalTransf2d, elements::CorotationalTransf3d>("Corotational"),
+    transfType<elements::LinearTransf>("Linear"),
+    transfType<elements::PDeltaTransf>("PDelta"),
+    transfType<elements::CorotationalTransf>("Corotational"),
 };
 
 // geomTransf Linear|PDelta|Corotational tag ?vecxz(3D)?
@@ -166,6 +164,16 @@ std::unique_ptr<elements::Element> parseElasticBeam(Runtime& rt, ArgReader& args
   args.setUsage(ndm == 3 ? kElasticUsage3d : kElasticUsage2d);
   const int iNode = args.integer("iNode");
   const int jNode = args.integer("jNode");
+  // What follows the section properties in both dimensions; returns transfTag.
+  const auto readRest = [&args](auto& p) {
+    const int transfTag = args.integer("transfTag");
+    p.massPerLength = args.option("-mass", 0.0);
+    p.consistentMass = args.flag("-cMass");
+    if (args.flag("-lMass")) p.consistentMass = false;  // lumped, the default
+    args.finish();
+    p.validate();
+    return transfTag;
+  };
   if (ndm == 3) {
     elements::ElasticBeam3d::Params p;
     p.area = args.real("A");
@@ -174,12 +182,7 @@ std::unique_ptr<elements::Element> parseElasticBeam(Runtime& rt, ArgReader& args
     p.torsion = args.real("J");
     p.inertiaY = args.real("Iy");
     p.inertiaZ = args.real("Iz");
-    const int transfTag = args.integer("transfTag");
-    p.massPerLength = args.option("-mass", 0.0);
-    p.consistentMass = args.flag("-cMass");
-    if (args.flag("-lMass")) p.consistentMass = false;  // lumped, the default
-    args.finish();
-    p.validate();
+    const int transfTag = readRest(p);
     return std::make_unique<elements::ElasticBeam3d>(tag, iNode, jNode, p,
                                                      transformFor<CrdTransf3d>(rt, transfTag));
   }
@@ -188,12 +191,7 @@ std::unique_ptr<elements::Element> parseElasticBeam(Runtime& rt, ArgReader& args
   p.area = args.real("A");
   p.modulus = args.real("E");
   p.inertiaZ = args.real("Iz");
-  const int transfTag = args.integer("transfTag");
-  p.massPerLength = args.option("-mass", 0.0);
-  p.consistentMass = args.flag("-cMass");
-  if (args.flag("-lMass")) p.consistentMass = false;  // lumped, the default
-  args.finish();
-  p.validate();
+  const int transfTag = readRest(p);
   return std::make_unique<elements::ElasticBeam2d>(tag, iNode, jNode, p,
                                                    transformFor<CrdTransf2d>(rt, transfTag));
 }
@@ -222,21 +220,19 @@ std::unique_ptr<elements::BeamIntegration> inlineIntegration(Runtime& rt, ArgRea
       words.push_back(args.word("integration"));
   }
   const std::string& type = words[0];
-  auto number = [&](std::size_t k, const char* name) {
+  // Word k of the rule as a number (an integer when `whole`), or an error naming it.
+  auto number = [&](std::size_t k, const char* name, bool whole = false) {
+    const char* w = k < words.size() ? words[k].c_str() : "";
+    int i = 0;
     double v = 0.0;
-    if (k >= words.size() || Tcl_GetDouble(nullptr, words[k].c_str(), &v) != TCL_OK)
+    if (whole ? Tcl_GetInt(nullptr, w, &i) != TCL_OK : Tcl_GetDouble(nullptr, w, &v) != TCL_OK)
       args.fail(args.lastPosition(), name,
-                "expected a number in the integration \"" + type + " ...\", got \"" +
-                    (k < words.size() ? words[k] : std::string()) + "\"");
-    return v;
+                std::string("expected ") + (whole ? "an integer" : "a number") +
+                    " in the integration \"" + type + " ...\", got \"" + w + "\"");
+    return whole ? i : v;
   };
   auto integer = [&](std::size_t k, const char* name) {
-    int v = 0;
-    if (k >= words.size() || Tcl_GetInt(nullptr, words[k].c_str(), &v) != TCL_OK)
-      args.fail(args.lastPosition(), name,
-                "expected an integer in the integration \"" + type + " ...\", got \"" +
-                    (k < words.size() ? words[k] : std::string()) + "\"");
-    return v;
+    return static_cast<int>(number(k, name, true));
   };
   if (type == "HingeRadau") {
     if (words.size() != 6)
@@ -278,14 +274,15 @@ std::unique_ptr<elements::Element> parseSectionBeam(Runtime& rt, ArgReader& args
   if (auto it = args.optionReals("-iter", 2)) {
     // maxIter is checked as a real before the cast, so 1e308 cannot overflow an int.
     if (!((*it)[0] >= 1.0 && (*it)[0] <= kMaxElementIterations && (*it)[0] == std::floor((*it)[0])))
-      throw InputError("-iter maxIter",
-                       "must be an integer from 1 to " + std::to_string(kMaxElementIterations));
+      args.failArgument(
+          "-iter", 0,
+          "maxIter must be an integer from 1 to " + std::to_string(kMaxElementIterations));
     maxIter = static_cast<int>((*it)[0]);
     tol = (*it)[1];
-    if (tol < kMinElementTolerance)
-      throw InputError("-iter tol",
-                       "must be at least 1e-15: the element's work is compared relative to its "
-                       "size, and round-off of doubles (about 1e-16) decides below that");
+    if (!(tol >= kMinElementTolerance))
+      args.failArgument("-iter", 1,
+                        "tol must be at least 1e-15: the element's work is compared relative to "
+                        "its size, and round-off of doubles (about 1e-16) decides below that");
   }
   const double mass = args.option("-mass", 0.0);
   const bool consistentMass = args.flag("-cMass");
@@ -294,8 +291,6 @@ std::unique_ptr<elements::Element> parseSectionBeam(Runtime& rt, ArgReader& args
   const std::string integrationType =
       args.option("-integration", std::string(Force ? "Lobatto" : "Legendre"));
   args.finish();
-  if (maxIter < 1) throw InputError("-iter maxIter", "must be at least 1");
-  if (!(tol > 0.0)) throw InputError("-iter tol", "must be positive");
   if (!(mass >= 0.0)) throw InputError("-mass", "must be zero or positive");
   const double length = (rt.domain.node(jNode).coords() - rt.domain.node(iNode).coords()).norm();
   if (!(length > 0.0)) throw InputError("element", "nodes coincide (zero length)");

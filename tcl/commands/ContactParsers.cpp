@@ -30,22 +30,15 @@ using contact::NodeToSurfaceParams;
 materials::GapSpringParams readGapSpring(ArgReader& args) {
   materials::GapSpringParams p;
   p.k = args.real("k");
-  const std::size_t kPos = args.lastPosition();
   p.gap = args.real("gap");
-  const std::size_t gapPos = args.lastPosition();
   const auto fy = args.optionalOption("-Fy");
   const auto b = args.optionalOption("-b");
   args.finish();
-  if (b && !fy) args.fail("-b needs -Fy (the post-yield ratio of a spring that never yields)");
+  if (b && !fy)
+    args.failArgument("-b", "needs -Fy (the post-yield ratio of a spring that never yields)");
   if (fy) p.Fy = *fy;
   if (b) p.b = *b;
-  try {
-    p.validate();
-  } catch (const InputError& e) {
-    if (e.field() == "k") args.fail(kPos, "k", e.reason());
-    if (e.field() == "gap") args.fail(gapPos, "gap", e.reason());
-    args.fail("-" + e.field() + " " + e.reason());
-  }
+  p.validate();  // an InputError names k, gap, Fy or b: the command table points at its argument
   return p;
 }
 
@@ -63,15 +56,9 @@ std::unique_ptr<materials::UniaxialMaterial> parseBumper(Runtime& /*rt*/, ArgRea
 
 // --- contact options shared by nodeToSurface and pounding -----------------------------------
 
-/// Option spelling of each NodeToSurfaceParams field, for error messages.
-std::string optionOf(const std::string& field) {
-  if (field == "M1" || field == "M2") return "-masses (" + field + ")";
-  if (field == "K") return "-K (or -EAL)";
-  return "-" + field;
-}
-
 /// Reads -K K | -EAL E A L, -e, -et, -mu_s, -mu_k, -masses M1 M2, -search and validates them.
-/// When only one friction coefficient is given the other takes its value.
+/// When only one friction coefficient is given the other takes its value. A validation error
+/// points at the option it is about (the reader recorded where each was read).
 NodeToSurfaceParams readContactOptions(ArgReader& args) {
   NodeToSurfaceParams p;
   const auto K = args.optionalOption("-K");
@@ -81,7 +68,7 @@ NodeToSurfaceParams readContactOptions(ArgReader& args) {
   if (K) p.K = *K;
   if (EAL) {
     const auto& v = *EAL;
-    if (!(v[2] > 0.0)) args.fail("-EAL: the length L must be positive");
+    if (!(v[2] > 0.0)) args.failArgument("-EAL", 2, "the length L must be positive");
     p.K = v[0] * v[1] / v[2];  // axial stiffness of the contactor body (Zhu et al. 2002)
   }
   p.e = args.option("-e", 1.0);
@@ -98,60 +85,79 @@ NodeToSurfaceParams readContactOptions(ArgReader& args) {
   try {
     p.validate();
   } catch (const InputError& e) {
-    args.fail(optionOf(e.field()) + " " + e.reason());
+    // Fields that are not one option each: K may come from -EAL, M1 and M2 share -masses.
+    if (e.field() == "K" && EAL)
+      args.failArgument("-EAL", "gives K = E A / L, which " + e.reason());
+    if ((e.field() == "M1" || e.field() == "M2") && args.positionOf("-masses") != 0)
+      args.failArgument("-masses", e.field() == "M1" ? 0 : 1, e.what());
+    args.failInput(e);
   }
   return p;
 }
 
-/// Builds the element for the nodes' ndf (3 or 6); throws InputError when the five nodes do not
-/// share one ndf or the model is not 3D. The element is not yet in the domain.
+/// The argument names under which a contactor and its face's four nodes were read, so that an
+/// InputError about one of them points at it.
+struct ContactFields {
+  std::string contactor;
+  std::array<std::string, 4> face;
+};
+
+/// Builds the element for the nodes' ndf (3 or 6); throws InputError (field from `fields`) when a
+/// node is missing or repeated, the five nodes do not share one ndf or the model is not 3D. The
+/// element is not yet in the domain.
 std::unique_ptr<elements::Element> makeContact(const Runtime& rt, int tag, int contactor,
                                                const std::array<int, 4>& face,
-                                               const NodeToSurfaceParams& p) {
-  const domain::Node& k = rt.domain.node(contactor);
-  for (int n : face) {
+                                               const NodeToSurfaceParams& p,
+                                               const ContactFields& fields) {
+  const domain::Node* k = rt.domain.findNode(contactor);
+  if (k == nullptr)
+    throw InputError(fields.contactor, "node " + std::to_string(contactor) + " does not exist");
+  if (k->ndm() != 3)
+    throw InputError(fields.contactor, "nodeToSurface needs a 3D model (model basic -ndm 3)");
+  for (int i = 0; i < 4; ++i) {
+    const int n = face[i];
+    const std::string& field = fields.face[i];
     if (n == contactor)
-      throw InputError("cNode", std::to_string(n) + " is also a node of the target face");
-    const domain::Node& t = rt.domain.node(n);
-    if (t.ndf() != k.ndf())
-      throw InputError("node", std::to_string(n) + " has " + std::to_string(t.ndf()) +
-                                   " dofs but the contactor " + std::to_string(contactor) +
-                                   " has " + std::to_string(k.ndf()) + "; all five must agree");
-    if (t.ndm() != 3 || k.ndm() != 3)
-      throw InputError("node", "nodeToSurface needs a 3D model (model basic -ndm 3)");
+      throw InputError(field, "node " + std::to_string(n) + " is also the contactor node");
+    for (int j = 0; j < i; ++j)
+      if (face[j] == n) throw InputError(field, "node " + std::to_string(n) + " appears twice");
+    const domain::Node* t = rt.domain.findNode(n);
+    if (t == nullptr) throw InputError(field, "node " + std::to_string(n) + " does not exist");
+    if (t->ndf() != k->ndf())
+      throw InputError(field, "node " + std::to_string(n) + " has " + std::to_string(t->ndf()) +
+                                  " dofs but the contactor " + std::to_string(contactor) + " has " +
+                                  std::to_string(k->ndf()) + "; all five must agree");
   }
-  for (int i = 0; i < 4; ++i)
-    for (int j = i + 1; j < 4; ++j)
-      if (face[i] == face[j])
-        throw InputError("face", "node " + std::to_string(face[i]) + " appears twice");
-  if (k.ndf() == 3)
+  if (k->ndf() == 3)
     return std::make_unique<contact::NodeToSurfaceContact3d<3>>(tag, contactor, face, p);
-  if (k.ndf() == 6)
+  if (k->ndf() == 6)
     return std::make_unique<contact::NodeToSurfaceContact3d<6>>(tag, contactor, face, p);
-  throw InputError("ndf", "nodeToSurface works in -ndf 3 and -ndf 6 models, the nodes have " +
-                              std::to_string(k.ndf()));
+  throw InputError(fields.contactor, "nodeToSurface works in -ndf 3 and -ndf 6 models, node " +
+                                         std::to_string(contactor) + " has " +
+                                         std::to_string(k->ndf()));
 }
 
 // --- element nodeToSurface tag cNode a b c d -K K ... ---------------------------------------
 
 std::unique_ptr<elements::Element> parseNodeToSurface(Runtime& rt, ArgReader& args, int tag) {
-  const int contactor = args.integer("cNode");
+  const ContactFields fields{"cNode", {"a", "b", "c", "d"}};
+  const int contactor = args.integer(fields.contactor);
   std::array<int, 4> face{};
-  const char* names[4] = {"a", "b", "c", "d"};
-  for (int i = 0; i < 4; ++i) face[i] = args.integer(names[i]);
+  for (int i = 0; i < 4; ++i) face[i] = args.integer(fields.face[i]);
   const NodeToSurfaceParams p = readContactOptions(args);
   args.finish();
-  return makeContact(rt, tag, contactor, face, p);
+  return makeContact(rt, tag, contactor, face, p, fields);
 }
 
 // --- pounding tag -side1 {nodes} {a b c d} -side2 {nodes} {a b c d} <options> ---------------
 
-std::vector<int> readTagList(ArgReader& args, const std::string& text, const char* name,
-                             std::size_t exactly) {
+/// The node tags of the list argument read under `name` (`exactly` of them when nonzero).
+std::vector<int> readTagList(const ArgReader& args, const std::string& text,
+                             const std::string& name, std::size_t exactly) {
   int count = 0;
   const char** items = nullptr;
   if (Tcl_SplitList(nullptr, text.c_str(), &count, &items) != TCL_OK)
-    args.fail(std::string(name) + " is not a Tcl list: \"" + text + "\"");
+    args.failArgument(name, "is not a Tcl list");
   std::vector<int> tags;
   bool good = true;
   for (int i = 0; i < count && good; ++i) {
@@ -160,11 +166,10 @@ std::vector<int> readTagList(ArgReader& args, const std::string& text, const cha
     tags.push_back(value);
   }
   Tcl_Free(reinterpret_cast<char*>(items));
-  if (!good) args.fail(std::string(name) + " must list node tags, got \"" + text + "\"");
-  if (tags.empty()) args.fail(std::string(name) + " is empty");
+  if (!good) args.failArgument(name, "must list node tags");
+  if (tags.empty()) args.failArgument(name, "must list at least one node");
   if (exactly != 0 && tags.size() != exactly)
-    args.fail(std::string(name) + " must list exactly " + std::to_string(exactly) +
-              " nodes (a b c d), got \"" + text + "\"");
+    args.failArgument(name, "must list exactly " + std::to_string(exactly) + " nodes (a b c d)");
   return tags;
 }
 
@@ -187,9 +192,9 @@ void pounding(Runtime& rt, ArgReader& args) {
     if (side < 0) args.fail("unexpected argument \"" + key + "\" (expected -side1 or -side2)");
     if (contactors[side]) args.fail(key + " given twice");
     const std::string nodes = *args.optionalWordOption(key);
-    contactors[side] = readTagList(args, nodes, (key + " contactor nodes").c_str(), 0);
-    const std::string faceText = args.word(key == "-side1" ? "face1" : "face2");
-    const auto f = readTagList(args, faceText, (key + " face").c_str(), 4);
+    contactors[side] = readTagList(args, nodes, key, 0);
+    const std::string faceName = side == 0 ? "face1" : "face2";
+    const auto f = readTagList(args, args.word(faceName), faceName, 4);
     std::copy(f.begin(), f.end(), faces[side].begin());
   }
   if (!contactors[0] || !contactors[1]) args.fail("both -side1 and -side2 are required");
@@ -202,14 +207,20 @@ void pounding(Runtime& rt, ArgReader& args) {
   for (std::size_t i = 0; i < pairs.size(); ++i) {
     const int t = tag + static_cast<int>(i);
     if (rt.domain.findElement(t) != nullptr)
-      args.fail("element " + std::to_string(t) + " already exists (pounding numbers its " +
-                std::to_string(pairs.size()) + " elements " + std::to_string(tag) + " to " +
-                std::to_string(tag + static_cast<int>(pairs.size()) - 1) + ")");
+      args.failArgument("tag", "numbers the " + std::to_string(pairs.size()) + " elements " +
+                                   std::to_string(tag) + " to " +
+                                   std::to_string(tag + static_cast<int>(pairs.size()) - 1) +
+                                   ", but element " + std::to_string(t) + " already exists");
   }
+  // A node of side s is named by the list it stands in: its contactors or its face.
+  const ContactFields fields[2] = {{"-side1", {"face2", "face2", "face2", "face2"}},
+                                   {"-side2", {"face1", "face1", "face1", "face1"}}};
   std::vector<std::unique_ptr<elements::Element>> built;
-  for (std::size_t i = 0; i < pairs.size(); ++i)
-    built.push_back(
-        makeContact(rt, tag + static_cast<int>(i), pairs[i].first, faces[pairs[i].second], p));
+  for (std::size_t i = 0; i < pairs.size(); ++i) {
+    const int face = pairs[i].second;
+    built.push_back(makeContact(rt, tag + static_cast<int>(i), pairs[i].first, faces[face], p,
+                                fields[1 - face]));
+  }
   std::vector<int> added;
   try {
     for (auto& e : built) {
@@ -274,11 +285,7 @@ void contactSteppingCmd(Runtime& rt, ArgReader& args) {
   p.overshoot = args.option("-overshoot", p.overshoot);
   const auto each = args.optionalWordOption("-eachStep");
   args.finish();
-  try {
-    p.validate();
-  } catch (const InputError& e) {
-    args.fail("-" + e.field() + " " + e.reason());
-  }
+  p.validate();  // an InputError names maxStep, lookAhead or overshoot: located by the table
   analysis.setContactStepping(p);
   analysis.afterStep = nullptr;
   if (each && !each->empty()) {

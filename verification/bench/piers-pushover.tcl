@@ -13,34 +13,19 @@
 set csv [expr {$argc > 0 ? [lindex $argv 0] : "piers-pushover.csv"}]
 set PI [expr {acos(-1.0)}]
 
+source [file join [file dirname [info script]] opensees common.tcl]
+
+# The pier of verification/opensees/pier-pushover.tcl with the deck mass, under its axial load.
 proc buildPier {} {
-  global PI
-  wipe
-  model basic -ndm 3 -ndf 6
-  uniaxialMaterial Concrete02 1 -40000.0 -0.0025 -8000.0 -0.02 0.1 3000.0 1.5e6
-  uniaxialMaterial Concrete02 2 -30000.0 -0.002 -5000.0 -0.005 0.1 2500.0 1.2e6
-  uniaxialMaterial Steel02    3 400000.0 2.0e8 0.01 18.0 0.925 0.15
-  set D 2.0; set cover 0.075; set rCore [expr {$D/2.0 - $cover}]
-  section Fiber 1 -GJ [expr {1.04e7 * $PI * pow($D, 4) / 32.0}] {
-    patch circ 1 16 8 0.0 0.0 0.0 $rCore 0.0 360.0
-    patch circ 2 16 2 0.0 0.0 $rCore [expr {$D/2.0}] 0.0 360.0
-    layer circ 3 40 0.000804 0.0 0.0 [expr {$rCore - 0.02}] 0.0 351.0
+  circularPier {
+    D 2.0 cover 0.075 height 10.0
+    core {-40000.0 -0.0025 -8000.0 -0.02 0.1 3000.0 1.5e6}
+    coverConcrete {-30000.0 -0.002 -5000.0 -0.005 0.1 2500.0 1.2e6}
+    steel {400000.0 2.0e8 0.01 18.0 0.925 0.15}
+    G 1.04e7 sectors 16 bars 40 barArea 0.000804 lastBarAngle 351.0
+    axialRatio 0.1 gravitySteps 1
   }
-  beamIntegration Lobatto 1 1 5
-  geomTransf PDelta 1 1.0 0.0 0.0
-  node 1 0 0 0
-  node 2 0 0 10.0
-  fix 1 1 1 1 1 1 1
   mass 2 800.0 800.0 800.0 0.0 0.0 0.0
-  element forceBeamColumn 1 1 2 1 1
-  set P [expr {0.1 * 30000.0 * $PI * $D * $D / 4.0}]
-  timeSeries Constant 1
-  pattern Plain 1 1 { load 2 0 0 [expr {-$P}] 0 0 0 }
-  constraints Plain; numberer Plain; system BandGeneral
-  test NormDispIncr 1.0e-8 50; algorithm Newton
-  integrator LoadControl 1.0; analysis Static
-  analyze 1
-  loadConst -time 0.0
   wipeAnalysis
 }
 

@@ -17,7 +17,7 @@
 #include "elements/beam/ElasticBeam3d.h"
 #include "elements/beam/ForceBeamColumn.h"
 #include "elements/beam/QuadratureIntegration.h"
-#include "elements/transform/LinearTransf3d.h"
+#include "elements/transform/LinearTransf.h"
 #include "materials/Concrete02.h"
 #include "materials/Steel02.h"
 #include "materials/section/FiberSection.h"

@@ -2,6 +2,9 @@
 # Three-span base-isolated steel bridge under a near-fault ground motion: the main job
 # of DABS. A readable model that a user can copy and change: every dimension, material and
 # device is a variable at the top, with its unit.
+# One file on purpose (over 800 lines): the parameters, the model, the quantities followed and the
+# run loop are what a user copies and changes together; the report, the findings against the
+# paper and the checks are in tools/ (report.tcl, findings.tcl, checks.tcl).
 #
 #   dabs verification/bridge/bridge.tcl ?case? ?scale? ?dt? ?integrator? ?tol? ?motion? ?outDir? ?nSpans?
 #
@@ -521,7 +524,7 @@ proc monitorSetup {} {
   for {set s 1} {$s <= $::nSpans} {incr s} { lappend mids [dict get $::girderMid $s] }
   set peak [dict create]
   for {set j 1} {$j <= $nJ} {incr j} { foreach d {x y z} { dict set peak gap$j$d 0.0 } }
-  foreach key {open close force} { for {set j 1} {$j <= $nJ} {incr j} { dict set peak $key$j 0.0 } }
+  foreach key {open close force pen} { for {set j 1} {$j <= $nJ} {incr j} { dict set peak $key$j 0.0 } }
   for {set s 1} {$s <= $::nSpans} {incr s} { dict set peak rot$s 0.0 }
   dict set peak deckx 0.0; dict set peak decky 0.0
   for {set s 1} {$s <= $::nSpans} {incr s} { dict set peak g${s}x 0.0 }
@@ -588,7 +591,12 @@ proc monitorStep {} {
   foreach list $::poundingEles {
     incr j
     set f 0.0
-    foreach e $list { set f [expr {$f + [lindex [eleResponse $e contactForce] 0]}] }
+    foreach e $list {
+      set f [expr {$f + [lindex [eleResponse $e contactForce] 0]}]
+      # penetration of the pair: a negative gap (the pairs of a joint all look along X)
+      set pen [expr {-[lindex [eleResponse $e gap] 0]}]
+      if {$pen > [dict get $peak pen$j]} { dict set peak pen$j $pen }
+    }
     lappend row $f
     if {$f > [dict get $peak force$j]} { dict set peak force$j $f }
     set isClosed [expr {$f > 0.0}]
@@ -624,6 +632,40 @@ proc run::afterStep {} {
   set row [monitorStep]
   if {$fh ne "" && $tEnd - [getTime %.17g] <= 1e-9 * $dt} { puts $fh [join $row ,] }
   if {$perStep ne ""} { uplevel #0 $perStep }
+}
+
+# Dynamic equilibrium of the whole bridge now (d'Alembert): the ground acts on the structure only
+# through the foundation springs and dashpots (the reactions of the fixed ground nodes) and
+# gravity through the dead load, -W along Z; their sum is the rate of change of momentum,
+# sum m (u'' + a_g), with the relative accelerations u'' and the ground acceleration a_g of the
+# two UniformExcitation patterns (11 along X, 12 along Y). Every other force is internal and
+# cancels: girders, piers and their stiffness-proportional Rayleigh damping, bearings, contact,
+# devices, rigid links. Returns the residuals {X Y Z} (reactions - W e_Z - inertia), the weight W
+# and the inertia forces, kN.
+proc dynamicEquilibrium {} {
+  reactions -dynamic
+  set ag [list [getLoadFactor 11] [getLoadFactor 12] 0.0]
+  set reaction {0.0 0.0 0.0}
+  for {set p 1} {$p <= $::nSpans + 1} {incr p} {
+    set ground [expr {[pierBase $p] + 1}]
+    foreach i {0 1 2} { lset reaction $i [expr {[lindex $reaction $i] + [nodeReaction $ground [expr {$i + 1}]]}] }
+  }
+  set inertia {0.0 0.0 0.0}
+  set W 0.0
+  foreach n [getNodeTags] {
+    foreach i {0 1 2} {
+      set m [nodeMass $n [expr {$i + 1}]]
+      if {$m != 0.0} {
+        lset inertia $i [expr {[lindex $inertia $i] + $m * ([nodeAccel $n [expr {$i + 1}]] + [lindex $ag $i])}]
+      }
+    }
+    set W [expr {$W + $::g * [nodeMass $n 3]}]
+  }
+  set residual {}
+  foreach i {0 1 2} w [list 0.0 0.0 $W] {
+    lappend residual [expr {[lindex $reaction $i] - $w - [lindex $inertia $i]}]
+  }
+  return [dict create residual $residual weight $W inertia $inertia]
 }
 
 proc runCase {case scale dt integrator tol motion {csv ""} {perStep ""}} {
@@ -710,6 +752,7 @@ proc runCase {case scale dt integrator tol motion {csv ""} {perStep ""}} {
       if {$rc != 0} { incr failed }
     }
   }
+  set equilibrium [dynamicEquilibrium]
   set contactSubsteps [dict get [contactStepping] contactSteps]
   contactStepping -off
   foreach v {peak last impacts} { set $v [set ::run::$v] }
@@ -720,7 +763,7 @@ proc runCase {case scale dt integrator tol motion {csv ""} {perStep ""}} {
   set stats [analysisStatistics]
   set dofs [expr {6 * [llength [getNodeTags]]}]
   return [dict create case $case scale $scale dt $dt integrator $integrator tol $tol motion $used \
-      completed [expr {$failed == 0}] loosened $loosened contactSubsteps $contactSubsteps peak $peak last $last impacts $impacts stats $stats \
+      completed [expr {$failed == 0}] loosened $loosened equilibrium $equilibrium contactSubsteps $contactSubsteps peak $peak last $last impacts $impacts stats $stats \
       nodes [llength [getNodeTags]] elements [llength [getEleTags]] \
       wall [expr {($wall2 - $wall0) * 1e-6}] wallSteps [expr {($wall2 - $wall1) * 1e-6}] \
       endTime [getTime %.17g]]
@@ -774,7 +817,9 @@ if {$case eq "all" && $motion eq "auto"} {
   foreach s $ladderScales {
     foreach c {nopound pound} {
       set r [expr {$s == $scale ? [lindex $results [lsearch $cases $c]] : [runAndPrint $c $s $dt $integrator $tol $primary ""]}]
-      lappend ladder [dict create scale $s case $c peak [dict get $r peak] completed [dict get $r completed]]
+      lappend ladder [dict create scale $s case $c peak [dict get $r peak] completed [dict get $r completed] \
+          loosened [dict get $r loosened] equilibrium [dict get $r equilibrium] motion [dict get $r motion] \
+          endTime [dict get $r endTime]]
     }
   }
 }
@@ -782,3 +827,7 @@ source [file join [file dirname [info script]] tools findings.tcl]
 source [file join [file dirname [info script]] tools report.tcl]
 writeReport $results $outDir $other $ladder
 puts "report: [file join $outDir report.md]"
+source [file join [file dirname [info script]] .. lib check.tcl]
+source [file join [file dirname [info script]] tools checks.tcl]
+checks::all $results $other $ladder [expr {$case eq "all" && $scale >= 1.0}]
+finish

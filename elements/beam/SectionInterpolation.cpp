@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-#include "elements/beam/BeamColumnTraits.h"
+#include "elements/beam/SectionInterpolation.h"
 
 #include <string>
 

@@ -2,32 +2,11 @@
 #pragma once
 
 #include <Eigen/Core>
-#include <memory>
-#include <vector>
+#include <span>
 
-#include "elements/transform/CrdTransf2d.h"
-#include "elements/transform/CrdTransf3d.h"
 #include "materials/section/SectionForceDeformation.h"
 
 namespace dabs::elements {
-
-/// Compile-time sizes and types of 2D and 3D section-based beam-columns.
-template <int Ndm>
-struct BeamColumnTraits;
-
-template <>
-struct BeamColumnTraits<2> {
-  using Transf = CrdTransf2d;
-  static constexpr int kDofPerNode = 3;
-  static constexpr int kBasic = 3;
-};
-
-template <>
-struct BeamColumnTraits<3> {
-  using Transf = CrdTransf3d;
-  static constexpr int kDofPerNode = 6;
-  static constexpr int kBasic = 6;
-};
 
 /// Largest section order handled (P, Mz, Vy, My, Vz, T).
 inline constexpr int kMaxSectionOrder = 6;
