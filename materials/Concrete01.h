@@ -59,7 +59,7 @@ class Concrete01 final : public StatefulUniaxial<Concrete01, Concrete01State> {
   Params params_;
   // Constants of the parameters, formed once with the expressions the update used to evaluate
   // (so the same bits): divisions are much of this law's cost in a fiber loop.
-  double Ec0_ = 0.0;            ///< initial tangent 2 fpc / epsc0
+  double Ec0_ = 0.0;           ///< initial tangent 2 fpc / epsc0
   double descentSlope_ = 0.0;  ///< (fpc - fpcu) / (epsc0 - epsU)
 };
 

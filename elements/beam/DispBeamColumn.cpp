@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 #include "elements/beam/DispBeamColumn.h"
 
+#include "elements/beam/SectionPointView.h"
+
 namespace dabs::elements {
 
 template <int Ndm>
@@ -20,6 +22,16 @@ void DispBeamColumn<Ndm>::initialize(const NodalCoordinates& x) {
 
 template <int Ndm>
 Status DispBeamColumn<Ndm>::formState(bool initial) {
+  // Fiber sections (P-Mz in 2D, P-Mz-My-T in 3D) on fixed-size matrices.
+  if (this->uniformOrder_ == 2) return formStateWith<2>(initial);
+  if (this->uniformOrder_ == 4) return formStateWith<4>(initial);
+  return formStateWith<Eigen::Dynamic>(initial);
+}
+
+template <int Ndm>
+template <int Order>
+Status DispBeamColumn<Ndm>::formStateWith(bool initial) {
+  using View = SectionPointView<Order, Super::kBasic>;
   const double length = this->transf_->initialLength();
   if (!initial) this->transf_->update(this->uTrial_);
   const Basic& v = this->transf_->basicDeformation();
@@ -28,18 +40,18 @@ Status DispBeamColumn<Ndm>::formState(bool initial) {
   kb_.setZero();
   for (std::size_t i = 0; i < this->points_.size(); ++i) {
     auto& sec = *this->points_[i].section;
-    const auto& b = bmat_[i];
+    const auto& b = View::interp(bmat_[i]);
     const double wl = this->points_[i].weight * length;
     if (initial) {
-      const SectionMatrix ks = sec.getInitialTangent();
+      const typename View::Mat ks = sec.getInitialTangent();
       kb_ += wl * b.transpose() * ks * b;
       continue;
     }
-    const SectionVector e = b * v;
+    const typename View::Vec e = b * v;
     const Status s = sec.setTrialDeformation(e);
     if (!ok(s)) status = s;
-    const SectionVector sr = sec.getStressResultant();
-    const SectionMatrix ks = sec.getSectionTangent();
+    const typename View::Vec sr = sec.getStressResultant();
+    const typename View::Mat ks = sec.getSectionTangent();
     this->q_ += wl * b.transpose() * sr;
     kb_ += wl * b.transpose() * ks * b;
   }

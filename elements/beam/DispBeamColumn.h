@@ -28,6 +28,9 @@ class DispBeamColumn final : public SectionBeamColumn<Ndm> {
 
  private:
   Status formState(bool initial);
+  /// formState() with the section arrays seen as fixed-size matrices of `Order` rows.
+  template <int Order>
+  Status formStateWith(bool initial);
   std::vector<SectionBasicMatrix<Super::kBasic>> bmat_;
   BasicMatrix kb_ = BasicMatrix::Zero();
 };

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 #include "elements/beam/ForceBeamColumn.h"
 
+#include "elements/beam/SectionPointView.h"
+
 #include <Eigen/LU>
 #include <cmath>
 
@@ -91,9 +93,6 @@ void ForceBeamColumn<Ndm>::initialize(const NodalCoordinates& x) {
     s.sr[i] = p.section->getStressResultant();
     fe_ += p.weight * length * bmat_[i].transpose() * f * bmat_[i];
   }
-  uniformOrder_ = this->points_.front().section->order();
-  for (const auto& p : this->points_)
-    if (p.section->order() != uniformOrder_) uniformOrder_ = 0;
   const Eigen::FullPivLU<BasicMatrix> lu(fe_);
   if (!lu.isInvertible())
     throw InputError("integration", "gives a singular element flexibility (too few points?)");
@@ -115,35 +114,15 @@ void ForceBeamColumn<Ndm>::startFromVirginState() {
 }
 
 namespace {
-/// Views of one integration point's arrays for the section loop: fixed-size maps when every
-/// section of the element has order `Order` (the arrays then hold Order rows each, stored
-/// contiguously), the arrays themselves when the orders differ (Order = Eigen::Dynamic).
-template <int Order, int Nb>
-struct PointView {
-  using Vec = Eigen::Matrix<double, Order, 1>;
-  using Mat = Eigen::Matrix<double, Order, Order>;
-  static Eigen::Map<Vec> vec(SectionVector& v) { return Eigen::Map<Vec>(v.data()); }
-  static Eigen::Map<const Vec> vec(const SectionVector& v) {
-    return Eigen::Map<const Vec>(v.data());
-  }
-  static Eigen::Map<Mat> mat(SectionMatrix& m) { return Eigen::Map<Mat>(m.data()); }
-  static Eigen::Map<const Eigen::Matrix<double, Order, Nb>> interp(
-      const SectionBasicMatrix<Nb>& b) {
-    return Eigen::Map<const Eigen::Matrix<double, Order, Nb>>(b.data());
-  }
-  static bool invert(const Eigen::Ref<const Eigen::MatrixXd>& k, Eigen::Map<Mat>& f) {
+/// Inverse of a section tangent into the point's flexibility: the closed form for a fixed
+/// order, the general invert() otherwise.
+template <int Order, class Flexibility>
+bool invertTangent(const Eigen::Ref<const Eigen::MatrixXd>& k, Flexibility& f) {
+  if constexpr (Order == Eigen::Dynamic)
+    return invert(k, f);
+  else
     return invertFixed<Order>(k, f);
-  }
-};
-template <int Nb>
-struct PointView<Eigen::Dynamic, Nb> {
-  using Vec = SectionVector;
-  static SectionVector& vec(SectionVector& v) { return v; }
-  static const SectionVector& vec(const SectionVector& v) { return v; }
-  static SectionMatrix& mat(SectionMatrix& m) { return m; }
-  static const SectionBasicMatrix<Nb>& interp(const SectionBasicMatrix<Nb>& b) { return b; }
-  static bool invert(const SectionMatrix& k, SectionMatrix& f) { return dabs::elements::invert(k, f); }
-};
+}
 }  // namespace
 
 // One solve from state s (which holds the start point) to basic deformations `target`.
@@ -151,15 +130,15 @@ template <int Ndm>
 Status ForceBeamColumn<Ndm>::iterate(State& s, const Basic& target) const {
   // Fiber sections (P-Mz in 2D, P-Mz-My-T in 3D) on fixed-size matrices: the section loop is
   // most of the element's own work.
-  if (uniformOrder_ == 2) return iterateWith<2>(s, target);
-  if (uniformOrder_ == 4) return iterateWith<4>(s, target);
+  if (this->uniformOrder_ == 2) return iterateWith<2>(s, target);
+  if (this->uniformOrder_ == 4) return iterateWith<4>(s, target);
   return iterateWith<Eigen::Dynamic>(s, target);
 }
 
 template <int Ndm>
 template <int Order>
 Status ForceBeamColumn<Ndm>::iterateWith(State& s, const Basic& target) const {
-  using View = PointView<Order, kBasic>;
+  using View = SectionPointView<Order, kBasic>;
   const double length = this->transf_->initialLength();
   const int n = static_cast<int>(this->points_.size());
   s.q += s.kb * (target - s.v);
@@ -178,7 +157,7 @@ Status ForceBeamColumn<Ndm>::iterateWith(State& s, const Basic& target) const {
       const Status st = sec.setTrialDeformation(s.e[i]);
       if (!ok(st)) return st;
       sr = sec.getStressResultant();
-      if (!View::invert(sec.getSectionTangent(), fs)) return Status::NotConverged;
+      if (!invertTangent<Order>(sec.getSectionTangent(), fs)) return Status::NotConverged;
       const double wl = this->points_[i].weight * length;
       flex += wl * b.transpose() * fs * b;
       // Compatible deformations plus the residual (unbalanced) section deformations.

@@ -83,7 +83,6 @@ class ForceBeamColumn final : public SectionBeamColumn<Ndm> {
   double tol_;
   std::vector<SectionBasicMatrix<kBasic>> bmat_;
   BasicMatrix fe_ = BasicMatrix::Zero();  ///< initial (elastic) flexibility
-  int uniformOrder_ = 0;  ///< the order all sections share, or 0 when they differ
   /// Section forces of the member loads in the basic system, per point (empty without loads).
   std::vector<SectionVector> sp_;
   State trial_, committed_;

@@ -120,6 +120,9 @@ class SectionBeamColumn : public FixedSizeElement<2, FrameTraits<Ndm>::kDofPerNo
   void initializeGeometry(const NodalCoordinates& x) {
     if (x.size() != 2) throw InputError("element", "needs 2 nodes");
     transf_->initialize(x[0], x[1]);
+    uniformOrder_ = points_.empty() ? 0 : points_.front().section->order();
+    for (const auto& p : points_)
+      if (p.section->order() != uniformOrder_) uniformOrder_ = 0;
     this->m_.setZero();
     const double mass = massPerLength_ * transf_->initialLength();
     if (consistentMass_ && mass > 0.0) {
@@ -132,6 +135,8 @@ class SectionBeamColumn : public FixedSizeElement<2, FrameTraits<Ndm>::kDofPerNo
   }
 
   std::vector<BeamIntegrationPoint> points_;
+  /// The order all sections share (the section loops then run on fixed-size matrices), or 0.
+  int uniformOrder_ = 0;
   std::unique_ptr<Transf> transf_;
   double massPerLength_ = 0.0;
   bool consistentMass_ = false;
