@@ -289,7 +289,8 @@ void AnalysisModel::buildScatter() {
       for (int d = 0; d < nl.node->ndf(); ++d, ++local) {
         eqsOfDof(nl.firstDof + d, scratch);
         localEqs[static_cast<std::size_t>(local)] = scratch;
-        for (auto [eq, c] : scratch) link.vec.push_back(VecEntry{local, eq, c});
+        if (!link.asleep)  // a sleeper adds nothing to the residual
+          for (auto [eq, c] : scratch) link.vec.push_back(VecEntry{local, eq, c});
       }
     }
     for (int i = 0; i < n && !link.asleep; ++i)

@@ -7,15 +7,20 @@
 # from /proc/self/stat, 10 ms ticks), the smallest of `repeat` runs, so other processes on the
 # machine matter less; the counts (iterations, element updates, pattern changes) are exact.
 #
-#   dabs verification/bench/far-pairs.tcl ?joints? ?steps? ?repeat? ?csv? ?modes?
+#   dabs verification/bench/far-pairs.tcl ?joints? ?steps? ?repeat? ?csv? ?modes? ?order?
 #
-# `modes` (default "none far evaluated") runs a subset, e.g. one mode per process for valgrind;
-# the comparison lines need "none" among them.
+# `modes` (default "none far evaluated") runs a subset, e.g. one mode per process for valgrind or
+# for a fresh heap (in one process a run after a wiped model is slower, whatever its mode); the
+# comparison lines need "none" among them. `order`: "joint" (default) defines each joint's pairs
+# with its nodes and springs, as a viaduct script built span by span does; "after" defines all
+# pairs after the rest of the model, so their objects do not lie among its data in memory.
 set J      [expr {$argc > 0 ? [lindex $argv 0] : 100}]
 set steps  [expr {$argc > 1 ? [lindex $argv 1] : 1000}]
 set repeat [expr {$argc > 2 ? [lindex $argv 2] : 3}]
 set csv    [expr {$argc > 3 ? [lindex $argv 3] : ""}]
 set modes  [expr {$argc > 4 ? [lindex $argv 4] : "none far evaluated"}]
+set order  [expr {$argc > 5 ? [lindex $argv 5] : "joint"}]
+if {$order ni {joint after}} { error "far-pairs.tcl: order must be joint or after, not \"$order\"" }
 
 proc cpuSeconds {} {
   set f [open /proc/self/stat]
@@ -25,7 +30,16 @@ proc cpuSeconds {} {
   return [expr {([lindex $fields 13] + [lindex $fields 14]) / 100.0}]
 }
 
-proc build {J mode} {
+proc pairs {j mode} {
+  set a [expr {1000 * $j}]; set b [expr {1000 * $j + 100}]
+  set opts [list -K 1.0e7 -mu_s 0.3]
+  if {$mode eq "far"} { lappend opts -search 0.05 }
+  pounding [expr {100000 + 8 * $j}] \
+      -side1 [list [expr {$a+1}] [expr {$a+2}] [expr {$a+3}] [expr {$a+4}]] [list [expr {$a+1}] [expr {$a+2}] [expr {$a+3}] [expr {$a+4}]] \
+      -side2 [list [expr {$b+1}] [expr {$b+2}] [expr {$b+3}] [expr {$b+4}]] [list [expr {$b+1}] [expr {$b+4}] [expr {$b+3}] [expr {$b+2}]] {*}$opts
+}
+
+proc build {J mode order} {
   wipe
   model basic -ndm 3 -ndf 3
   uniaxialMaterial Elastic 1 1.0e5
@@ -45,14 +59,10 @@ proc build {J mode} {
         element zeroLength [incr ele] [expr {$n + 50}] $n -mat 1 1 1 -dir 1 2 3
       }
     }
-    if {$mode ne "none"} {
-      set a [expr {1000 * $j}]; set b [expr {1000 * $j + 100}]
-      set opts [list -K 1.0e7 -mu_s 0.3]
-      if {$mode eq "far"} { lappend opts -search 0.05 }
-      pounding [expr {100000 + 8 * $j}] \
-          -side1 [list [expr {$a+1}] [expr {$a+2}] [expr {$a+3}] [expr {$a+4}]] [list [expr {$a+1}] [expr {$a+2}] [expr {$a+3}] [expr {$a+4}]] \
-          -side2 [list [expr {$b+1}] [expr {$b+2}] [expr {$b+3}] [expr {$b+4}]] [list [expr {$b+1}] [expr {$b+4}] [expr {$b+3}] [expr {$b+2}]] {*}$opts
-    }
+    if {$mode ne "none" && $order eq "joint"} { pairs $j $mode }
+  }
+  if {$mode ne "none" && $order eq "after"} {
+    for {set j 0} {$j < $J} {incr j} { pairs $j $mode }
   }
   timeSeries Trig 1 0.0 100.0 0.5 -factor 0.5
   pattern UniformExcitation 1 1 -accel 1
@@ -66,7 +76,7 @@ puts [format "%-9s %6s %6s %9s %10s %12s %8s %8s %12s" mode pairs steps cpu_s us
 foreach mode $modes {
   set best 1e30
   for {set r 0} {$r < $repeat} {incr r} {
-    build $J $mode
+    build $J $mode $order
     set t0 [cpuSeconds]
     set rc [analyze $steps 0.005]
     set t [expr {[cpuSeconds] - $t0}]
