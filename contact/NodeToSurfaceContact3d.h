@@ -47,9 +47,9 @@ struct NodeToSurfaceState {
   bool projValid = false;                             ///< projXi computed and on the quad
   Eigen::Vector3d force = Eigen::Vector3d::Zero();    ///< contact force on the contactor: normal
                                                       ///< N (compression > 0), tangential t1, t2
-  double dashpotPower = 0.0;    ///< power dissipated by the dashpots (>= 0)
-  double frictionEnergy = 0.0;  ///< accumulated friction work (>= 0)
-  double dampingEnergy = 0.0;   ///< accumulated dashpot work (trapezoid rule)
+  double dashpotPower = 0.0;                          ///< power dissipated by the dashpots (>= 0)
+  double frictionEnergy = 0.0;                        ///< accumulated friction work (>= 0)
+  double dampingEnergy = 0.0;                         ///< accumulated dashpot work (trapezoid rule)
   Eigen::Vector2d plasticSlip = Eigen::Vector2d::Zero();  ///< accumulated slip vector (t1, t2)
   double slipLength = 0.0;                                ///< accumulated slip path length
   Eigen::Vector3d impulse = Eigen::Vector3d::Zero();      ///< time integral of `force` (trapezoid)
@@ -60,9 +60,9 @@ struct NodeToSurfaceState {
 /// pair that may sleep, so the once-a-step test of a sleeping pair reads compact arrays and not
 /// the element.
 struct FarTest {
-  std::array<Eigen::Vector3d, 5> X{};                 ///< reference coordinates (k, a, b, c, d)
-  Eigen::Vector3d n = Eigen::Vector3d::Zero();        ///< outward unit normal of the target
-  ContactSearch search = ContactSearch();             ///< search distance
+  std::array<Eigen::Vector3d, 5> X{};           ///< reference coordinates (k, a, b, c, d)
+  Eigen::Vector3d n = Eigen::Vector3d::Zero();  ///< outward unit normal of the target
+  ContactSearch search = ContactSearch();       ///< search distance
   /// ContactSearch::isFar of the contactor at X[0] + u[0] and the quad at X[i] + u[i] (true:
   /// far, `bound` written); false for non-finite positions.
   bool isFar(const std::array<Eigen::Vector3d, 5>& u, double& bound) const noexcept;

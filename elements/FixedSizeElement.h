@@ -40,20 +40,28 @@ class FixedSizeElement : public Element {
 
   Eigen::Ref<const Eigen::VectorXd> resistingForce() const override { return f_; }
   Eigen::Ref<const Eigen::MatrixXd> tangentStiff() const override {
-    if constexpr ((Stored & kStoreTangent) != 0) return k_;
-    else return zero();
+    if constexpr ((Stored & kStoreTangent) != 0)
+      return k_;
+    else
+      return zero();
   }
   Eigen::Ref<const Eigen::MatrixXd> initialStiff() const override {
-    if constexpr ((Stored & kStoreInitial) != 0) return k0_;
-    else return zero();
+    if constexpr ((Stored & kStoreInitial) != 0)
+      return k0_;
+    else
+      return zero();
   }
   Eigen::Ref<const Eigen::MatrixXd> dampingTangent() const override {
-    if constexpr ((Stored & kStoreDamping) != 0) return c_;
-    else return zero();
+    if constexpr ((Stored & kStoreDamping) != 0)
+      return c_;
+    else
+      return zero();
   }
   Eigen::Ref<const Eigen::MatrixXd> mass() const override {
-    if constexpr ((Stored & kStoreMass) != 0) return m_;
-    else return zero();
+    if constexpr ((Stored & kStoreMass) != 0)
+      return m_;
+    else
+      return zero();
   }
 
  protected:
@@ -62,8 +70,10 @@ class FixedSizeElement : public Element {
   using MatrixIf = std::conditional_t<(Stored & Bit) != 0, Matrix, NoMatrix>;
   template <unsigned Bit>
   static MatrixIf<Bit> zeroIf() {
-    if constexpr ((Stored & Bit) != 0) return Matrix::Zero();
-    else return NoMatrix{};
+    if constexpr ((Stored & Bit) != 0)
+      return Matrix::Zero();
+    else
+      return NoMatrix{};
   }
   /// The zero matrix the getters of matrices not kept return (constant, never written).
   static const Matrix& zero() {

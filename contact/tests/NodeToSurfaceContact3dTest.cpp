@@ -497,7 +497,8 @@ TEST(NodeToSurfaceContact3dTest, SleepingPairWokenByApproachGivesTheAlwaysAwakeF
     if (!asleep) {
       EXPECT_EQ(a.gap, b.gap) << "step " << i;
       EXPECT_EQ(a.stickXi, b.stickXi) << "step " << i;
-      EXPECT_EQ(Eigen::VectorXd(awake->resistingForce()), Eigen::VectorXd(sleeper->resistingForce()));
+      EXPECT_EQ(Eigen::VectorXd(awake->resistingForce()),
+                Eigen::VectorXd(sleeper->resistingForce()));
       EXPECT_EQ(Eigen::MatrixXd(awake->tangentStiff()), Eigen::MatrixXd(sleeper->tangentStiff()));
       EXPECT_EQ(Eigen::MatrixXd(awake->dampingTangent()),
                 Eigen::MatrixXd(sleeper->dampingTangent()));
@@ -545,7 +546,8 @@ TEST(NodeToSurfaceContact3dTest, SettledFarPairCommitsAndRevertsItsGap) {
   EXPECT_NEAR(b->committedState().gap, 0.15, 1e-12);
   EXPECT_EQ(b->committedState().gap, a->committedState().gap);
   EXPECT_EQ(b->committedState().impulse, a->committedState().impulse);
-  EXPECT_EQ(*b->response(std::vector<std::string>{"gap"}), *a->response(std::vector<std::string>{"gap"}));
+  EXPECT_EQ(*b->response(std::vector<std::string>{"gap"}),
+            *a->response(std::vector<std::string>{"gap"}));
   // Woken: from the settled state into contact, the same force as the ordinary pair.
   setU(s, 0, {0.0, 0.0, -0.31});
   ASSERT_TRUE(ok(a->update(s.kinematics())));

@@ -731,8 +731,7 @@ const Eigen::SparseMatrix<double>& AnalysisModel::formTangent(const AssemblyCoef
   if (!constantFor_ || !constantFor_->sameMatrix(c)) {
     std::fill(values, values + nnz, 0.0);
     for (ElementLink& l : awakeLinks())
-      if (l.element->isLinear() && l.element->isActive())
-        addElementTangent(values, l, c);
+      if (l.element->isLinear() && l.element->isActive()) addElementTangent(values, l, c);
     if (c.cM != 0.0 || c.cC != 0.0) {
       for (NodeLink& nl : nodes_) {
         const double f = c.cM + c.cC * nl.alphaM;
@@ -752,8 +751,7 @@ const Eigen::SparseMatrix<double>& AnalysisModel::formTangent(const AssemblyCoef
     std::copy(constantValues_.begin(), constantValues_.end(), values);
   }
   for (ElementLink& l : awakeLinks())
-    if (!l.element->isLinear() && l.element->isActive())
-      addElementTangent(values, l, c);
+    if (!l.element->isLinear() && l.element->isActive()) addElementTangent(values, l, c);
   return A_;
 }
 
