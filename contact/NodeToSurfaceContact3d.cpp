@@ -67,7 +67,7 @@ void NodeToSurfaceContact3d<Ndf>::initialize(const elements::NodalCoordinates& x
   // revertToStart returns to it.
   initial_ = NodeToSurfaceState{};
   revertToStart();
-  const Eigen::VectorXd zero = Eigen::VectorXd::Zero(Base::kNumDof);
+  const typename Base::Vector zero = Base::Vector::Zero();  // fixed size: no heap temporary
   if (ok(update(elements::Kinematics{zero, zero, zero, 0.0, 0.0}))) commitState();
   initial_ = committed_;
   revertToStart();
