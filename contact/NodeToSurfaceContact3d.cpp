@@ -67,7 +67,9 @@ void NodeToSurfaceContact3d<Ndf>::initialize(const elements::NodalCoordinates& x
   // revertToStart returns to it.
   initial_ = NodeToSurfaceState{};
   revertToStart();
-  const typename Base::Vector zero = Base::Vector::Zero();  // fixed size: no heap temporary
+  // Fixed size, not a heap vector: a freed temporary here left a hole among the model's data
+  // that the next definitions' small vectors (nodes') filled, spreading them over more memory.
+  const typename Base::Vector zero = Base::Vector::Zero();
   if (ok(update(elements::Kinematics{zero, zero, zero, 0.0, 0.0}))) commitState();
   initial_ = committed_;
   revertToStart();
@@ -381,7 +383,8 @@ bool NodeToSurfaceContact3d<Ndf>::setFarTrial(double bound, double dt) {
   // What update() does for a far pair: open, no force, accumulators over the step. From a far
   // committed state (no force, no dashpot power) that is the committed state with the new bound,
   // and the trial state already equals the committed one but for the gap (commit and revert copy
-  // the whole state; only update() and this function write it).
+  // the whole state, or the gap alone when the rest is equal; only update() and this function
+  // write it otherwise).
   if (forcesZero_ && committed_.status == ContactStatus::Open && !committed_.projValid &&
       committed_.force.isZero(0.0) && committed_.dashpotPower == 0.0 &&
       trial_.status == ContactStatus::Open && !trial_.projValid && trial_.force.isZero(0.0) &&
