@@ -47,8 +47,9 @@ NodeToSurfaceContact3d<Ndf>::NodeToSurfaceContact3d(int tag, int contactor,
     : Base(tag, {contactor, target[0], target[1], target[2], target[3]}),
       params_(params),
       normal_(normalParams(params)),
-      friction_(frictionParams(params)),
-      search_(params.search) {}
+      friction_(frictionParams(params)) {
+  search_ = ContactSearch(params.search);
+}
 
 template <int Ndf>
 void NodeToSurfaceContact3d<Ndf>::initialize(const elements::NodalCoordinates& x) {
@@ -66,7 +67,9 @@ void NodeToSurfaceContact3d<Ndf>::initialize(const elements::NodalCoordinates& x
   // revertToStart returns to it.
   initial_ = NodeToSurfaceState{};
   revertToStart();
-  const Eigen::VectorXd zero = Eigen::VectorXd::Zero(Base::kNumDof);
+  // Fixed size, not a heap vector: a freed temporary here left a hole among the model's data
+  // that the next definitions' small vectors (nodes') filled, spreading them over more memory.
+  const typename Base::Vector zero = Base::Vector::Zero();
   if (ok(update(elements::Kinematics{zero, zero, zero, 0.0, 0.0}))) commitState();
   initial_ = committed_;
   revertToStart();
@@ -76,14 +79,37 @@ template <int Ndf>
 void NodeToSurfaceContact3d<Ndf>::clearForces() {
   if (forcesZero_) return;
   this->f_.setZero();
-  this->k_.setZero();
-  this->c_.setZero();
+  if (tangents_) {
+    tangents_->k.setZero();
+    tangents_->c.setZero();
+  }
   forcesZero_ = true;
+}
+
+template <int Ndf>
+void NodeToSurfaceContact3d<Ndf>::commitState() {
+  if (settledFar_) {  // the states differ in the gap alone
+    committed_.gap = trial_.gap;
+    return;
+  }
+  committed_ = trial_;
+  settledFar_ = forcesZero_ && quietFar(committed_);
+}
+
+template <int Ndf>
+void NodeToSurfaceContact3d<Ndf>::revertToLastCommit() {
+  if (settledFar_) {
+    trial_.gap = committed_.gap;
+    return;
+  }
+  trial_ = committed_;
+  settledFar_ = forcesZero_ && quietFar(committed_);
 }
 
 template <int Ndf>
 void NodeToSurfaceContact3d<Ndf>::revertToStart() {
   trial_ = committed_ = initial_;
+  settledFar_ = false;
   forcesZero_ = false;
   clearForces();
 }
@@ -95,6 +121,7 @@ bool NodeToSurfaceContact3d<Ndf>::hasNonSymmetricTangent() const {
 
 template <int Ndf>
 Status NodeToSurfaceContact3d<Ndf>::update(const elements::Kinematics& kin) {
+  settledFar_ = false;
   NodeToSurfaceState t = committed_;
   t.force.setZero();
   t.dashpotPower = 0.0;
@@ -279,9 +306,12 @@ Status NodeToSurfaceContact3d<Ndf>::update(const elements::Kinematics& kin) {
   // Force on the contactor R = N m + F1 t1 + F2 t2; internal forces f_k = -R, f_i = N_i R.
   Vec3 R;
   for (int d = 0; d < 3; ++d) R[d] = Nn * m[d] + Ft[0] * frame_.t1(d) + Ft[1] * frame_.t2(d);
+  if (!tangents_) tangents_ = std::make_unique<Tangents>();  // once: the first contact
+  typename Base::Matrix& k = tangents_->k;
+  typename Base::Matrix& c = tangents_->c;
   this->f_.setZero();
-  this->k_.setZero();
-  this->c_.setZero();
+  k.setZero();
+  c.setZero();
   forcesZero_ = false;
   for (int j = 0; j < 5; ++j)
     for (int d = 0; d < 3; ++d) {
@@ -290,8 +320,8 @@ Status NodeToSurfaceContact3d<Ndf>::update(const elements::Kinematics& kin) {
       this->f_(row) = fjd.value();
       for (int jj = 0; jj < 5; ++jj)
         for (int dd = 0; dd < 3; ++dd) {
-          this->k_(row, jj * Ndf + dd) = fjd.derivatives()(3 * jj + dd);
-          this->c_(row, jj * Ndf + dd) = fjd.derivatives()(kTrans + 3 * jj + dd);
+          k(row, jj * Ndf + dd) = fjd.derivatives()(3 * jj + dd);
+          c(row, jj * Ndf + dd) = fjd.derivatives()(kTrans + 3 * jj + dd);
         }
     }
   t.force = Eigen::Vector3d(Nn.value(), Ft[0].value(), Ft[1].value());
@@ -328,18 +358,33 @@ std::string NodeToSurfaceContact3d<Ndf>::describe() const {
   return out.str();
 }
 
+bool FarTest::isFar(const std::array<Eigen::Vector3d, 5>& u, double& b) const noexcept {
+  std::array<Eigen::Vector3d, 5> x;
+  for (std::size_t j = 0; j < 5; ++j) x[j] = X[j] + u[j];
+  const std::array<Eigen::Vector3d, 4> quad{x[1], x[2], x[3], x[4]};
+  return x[0].allFinite() && search.isFar(x[0], quad, n, b);
+}
+
 template <int Ndf>
 bool NodeToSurfaceContact3d<Ndf>::updateIfFar(const std::array<Eigen::Vector3d, 5>& u, double dt) {
   if (!search_.enabled() || closedAtCommit()) return false;
-  std::array<Eigen::Vector3d, 5> x;
-  for (int j = 0; j < 5; ++j) x[j] = X_[j] + u[j];
-  const std::array<Eigen::Vector3d, 4> quad{x[1], x[2], x[3], x[4]};
   double bound = 0.0;
-  if (!x[0].allFinite() || !search_.isFar(x[0], quad, frame_.n, bound)) return false;
+  return farTest().isFar(u, bound) && setFarTrial(bound, dt);
+}
+
+template <int Ndf>
+bool NodeToSurfaceContact3d<Ndf>::setFarTrial(double bound, double dt) {
+  if (!search_.enabled()) return false;
+  if (settledFar_) {  // the step of a far pair from a far committed state: the gap alone changes
+    trial_.gap = bound;
+    return true;
+  }
+  if (closedAtCommit()) return false;
   // What update() does for a far pair: open, no force, accumulators over the step. From a far
   // committed state (no force, no dashpot power) that is the committed state with the new bound,
   // and the trial state already equals the committed one but for the gap (commit and revert copy
-  // the whole state; only update() and this function write it).
+  // the whole state, or the gap alone when the rest is equal; only update() and this function
+  // write it otherwise).
   if (forcesZero_ && committed_.status == ContactStatus::Open && !committed_.projValid &&
       committed_.force.isZero(0.0) && committed_.dashpotPower == 0.0 &&
       trial_.status == ContactStatus::Open && !trial_.projValid && trial_.force.isZero(0.0) &&

@@ -4,6 +4,7 @@
 #include <Eigen/Core>
 #include <array>
 #include <limits>
+#include <memory>
 
 #include "contact/ContactGeometry.h"
 #include "contact/ContactSearch.h"
@@ -35,21 +36,36 @@ struct NodeToSurfaceParams {
 /// Everything that changes with the trial (one struct: commit and revert are one assignment).
 /// Local components are in the fixed surface frame (n, t1, t2) of ContactGeometry.h.
 struct NodeToSurfaceState {
-  ContactStatus status = ContactStatus::Open;
-  Eigen::Vector2d stickXi = Eigen::Vector2d::Zero();     ///< stick point, target parametric coords
-  bool stickValid = false;                               ///< stickXi holds a stick point
-  Eigen::Vector2d projXi = Eigen::Vector2d::Zero();      ///< projection of the contactor
-  bool projValid = false;                                ///< projXi computed and on the quad
   double gap = std::numeric_limits<double>::infinity();  ///< g (> 0 open); beyond the search
                                                          ///< distance: a lower bound of it
-  Eigen::Vector3d force = Eigen::Vector3d::Zero();       ///< contact force on the contactor: normal
-                                                         ///< N (compression > 0), tangential t1, t2
-  double dashpotPower = 0.0;    ///< power dissipated by the dashpots (>= 0)
-  double frictionEnergy = 0.0;  ///< accumulated friction work (>= 0)
-  double dampingEnergy = 0.0;   ///< accumulated dashpot work (trapezoid rule)
+                                                         ///< (first: a far pair's step writes
+                                                         ///< it alone)
+  ContactStatus status = ContactStatus::Open;
+  Eigen::Vector2d stickXi = Eigen::Vector2d::Zero();  ///< stick point, target parametric coords
+  bool stickValid = false;                            ///< stickXi holds a stick point
+  Eigen::Vector2d projXi = Eigen::Vector2d::Zero();   ///< projection of the contactor
+  bool projValid = false;                             ///< projXi computed and on the quad
+  Eigen::Vector3d force = Eigen::Vector3d::Zero();    ///< contact force on the contactor: normal
+                                                      ///< N (compression > 0), tangential t1, t2
+  double dashpotPower = 0.0;                          ///< power dissipated by the dashpots (>= 0)
+  double frictionEnergy = 0.0;                        ///< accumulated friction work (>= 0)
+  double dampingEnergy = 0.0;                         ///< accumulated dashpot work (trapezoid rule)
   Eigen::Vector2d plasticSlip = Eigen::Vector2d::Zero();  ///< accumulated slip vector (t1, t2)
   double slipLength = 0.0;                                ///< accumulated slip path length
   Eigen::Vector3d impulse = Eigen::Vector3d::Zero();      ///< time integral of `force` (trapezoid)
+};
+
+/// The far test of a pair on its own: the reference coordinates of its nodes (k, a, b, c, d), the
+/// outward normal of the target and the search distance. The analysis keeps a copy of it for each
+/// pair that may sleep, so the once-a-step test of a sleeping pair reads compact arrays and not
+/// the element.
+struct FarTest {
+  std::array<Eigen::Vector3d, 5> X{};           ///< reference coordinates (k, a, b, c, d)
+  Eigen::Vector3d n = Eigen::Vector3d::Zero();  ///< outward unit normal of the target
+  ContactSearch search = ContactSearch();       ///< search distance
+  /// ContactSearch::isFar of the contactor at X[0] + u[0] and the quad at X[i] + u[i] (true:
+  /// far, `bound` written); false for non-finite positions.
+  bool isFar(const std::array<Eigen::Vector3d, 5>& u, double& bound) const noexcept;
 };
 
 /// Point-to-surface contact with friction after Zhu, Abe and Fujino (2002, "Modelling
@@ -88,9 +104,12 @@ struct NodeToSurfaceState {
 /// load point and the return map); it is non-symmetric when friction or a dashpot is on.
 /// dampingTangent() holds d(force)/d(velocity) of the dashpots and of the velocity-dependent N.
 template <int Ndf>
-class NodeToSurfaceContact3d : public elements::FixedSizeElement<5, Ndf> {
+class NodeToSurfaceContact3d : public elements::FixedSizeElement<5, Ndf, 0u> {
   static_assert(Ndf >= 3, "contact needs three translational dofs per node");
-  using Base = elements::FixedSizeElement<5, Ndf>;
+  // No mass, no initial or committed tangent (they read as zero); the tangent and the damping
+  // tangent are the pair's own, allocated at its first contact (see tangents_).
+  using Base = elements::FixedSizeElement<5, Ndf, 0u>;
+  using Matrix = typename Base::Matrix;
 
  public:
   /// `params` must be validated. Node order: contactor, then a, b, c, d.
@@ -107,9 +126,19 @@ class NodeToSurfaceContact3d : public elements::FixedSizeElement<5, Ndf> {
   bool rayleighByDefault() const override { return false; }
   /// Open contacts carry nothing, so the assembly skips them.
   bool isActive() const override { return !forcesZero_; }
+  Eigen::Ref<const Eigen::MatrixXd> tangentStiff() const override {
+    if (tangents_) return tangents_->k;
+    return Base::zero();
+  }
+  Eigen::Ref<const Eigen::MatrixXd> dampingTangent() const override {
+    if (tangents_) return tangents_->c;
+    return Base::zero();
+  }
 
-  void commitState() override { committed_ = trial_; }
-  void revertToLastCommit() override { trial_ = committed_; }
+  /// While the pair is settled far (see settledFar_) the trial state differs from the committed
+  /// one in the gap alone, so commit and revert copy the gap.
+  void commitState() override;
+  void revertToLastCommit() override;
   void revertToStart() override;
 
   /// force | contactForce (N, t1, t2) | gap | status | slip (length, t1, t2) |
@@ -122,6 +151,13 @@ class NodeToSurfaceContact3d : public elements::FixedSizeElement<5, Ndf> {
   /// update() would set (open, no force, the bound as gap) without the rest of update()'s work and
   /// returns true; otherwise changes nothing and returns false (then call update()).
   bool updateIfFar(const std::array<Eigen::Vector3d, 5>& u, double dt);
+  /// The second half of updateIfFar, for a pair whose far test (farTest()) the caller made: sets
+  /// the trial state of a far pair with distance bound `bound` and returns true, or changes
+  /// nothing and returns false when the step must be evaluated (a release step). Without a
+  /// search distance: false.
+  bool setFarTrial(double bound, double dt);
+  /// The data of the far test (a copy, for the analysis' own arrays).
+  FarTest farTest() const { return FarTest{X_, frame_.n, search_}; }
   /// True when the pair was far (beyond its search distance) in the last committed state.
   bool committedFar() const noexcept {
     return search_.enabled() && committed_.status == ContactStatus::Open && !committed_.projValid &&
@@ -146,18 +182,40 @@ class NodeToSurfaceContact3d : public elements::FixedSizeElement<5, Ndf> {
 
  private:
   void clearForces();
+  /// True when `s` is open, off the quad, without force or dashpot power (the far state).
+  static bool quietFar(const NodeToSurfaceState& s) noexcept {
+    return s.status == ContactStatus::Open && !s.projValid && s.force.isZero(0.0) &&
+           s.dashpotPower == 0.0;
+  }
 
+  // What a far pair's once-a-step test and its commit touch comes first, next to the start of
+  // the object (the base holds 160 bytes: the vtable pointer, tag, node list and force vector),
+  // so that a sleeping pair costs a few cache lines of one page per step.
+  bool forcesZero_ = true;
+  /// trial_ equals committed_ but for the gap, both quietFar, and the matrices are zero: set by a
+  /// full commit or revert of such a state, cleared by every other write of trial_.
+  bool settledFar_ = false;
+  ContactSearch search_;
+  NodeToSurfaceState trial_{};
+  NodeToSurfaceState committed_{};
   NodeToSurfaceParams params_;
   NormalLaw normal_;
   CoulombFriction friction_;
-  ContactSearch search_;
   SurfaceFrame frame_;
   std::array<Eigen::Vector3d, 5> X_{};                ///< reference coordinates (k, a, b, c, d)
   Eigen::Vector3d origin_ = Eigen::Vector3d::Zero();  ///< reference centroid of the quad
-  bool forcesZero_ = true;
   NodeToSurfaceState initial_{};  ///< state of the undeformed geometry (set by initialize)
-  NodeToSurfaceState trial_{};
-  NodeToSurfaceState committed_{};
+  /// Tangent stiffness and d(force)/d(velocity) at the last update (global), allocated by the
+  /// first update that gives the pair a force (zero until then). The two matrices are 3.6 kB
+  /// (ndf 3) of a pair's 4.7 kB; a pair that never touches (most pairs of a long viaduct at any
+  /// time) stays small, and so spreads the rest of the model's data over less memory: with 800
+  /// pairs among the elements they join, the model's iterations ran measurably slower when every
+  /// pair held its matrices.
+  struct Tangents {
+    Matrix k = Matrix::Zero();
+    Matrix c = Matrix::Zero();
+  };
+  std::unique_ptr<Tangents> tangents_;
 };
 
 extern template class NodeToSurfaceContact3d<3>;

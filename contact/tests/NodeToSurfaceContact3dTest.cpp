@@ -444,6 +444,147 @@ TEST(NodeToSurfaceContact3dTest, FarShortcutMatchesUpdate) {
   EXPECT_EQ(b->trialState().gap, before);
 }
 
+// A pair with a search distance driven the way the analysis drives a sleeping pair (the far test
+// on its own copy of the data, setFarTrial, commit; update() once the test finds it near) against
+// the same pair with no search distance updated at every step: while far both carry nothing,
+// and from the wake-up on every state and matrix is the same to the bit. The contactor
+// approaches at a constant rate with a tangential drift (friction and both dashpots at work),
+// then holds a penetration of 0.01 m at rest: N = K x 0.01 there.
+TEST(NodeToSurfaceContact3dTest, SleepingPairWokenByApproachGivesTheAlwaysAwakeForce) {
+  NodeToSurfaceParams p = params(0.5, 0.4);
+  p.e = 0.6;
+  p.et = 0.8;
+  p.M1 = p.M2 = 50.0;
+  p.validate();
+  auto awake = make(p, {0.5, 0.8, 0.3});
+  p.search = 0.05;
+  auto sleeper = make(p, {0.5, 0.8, 0.3});
+  const FarTest test = sleeper->farTest();
+  const double dt = 0.01;
+  TrialState s = zeroState(15);
+  s.dt = dt;
+  int farSteps = 0, wokenAt = -1;
+  bool asleep = sleeper->committedFar();
+  ASSERT_TRUE(asleep);
+  for (int i = 1; i <= 30; ++i) {
+    const bool moving = i <= 20;  // 0.3 m closed and 0.01 m more in 20 steps, then at rest
+    const Eigen::Vector3d u(0.001 * std::min(i, 20), 0.0, -0.0155 * std::min(i, 20));
+    const Eigen::Vector3d v = moving ? Eigen::Vector3d(0.1, 0.0, -1.55) : Eigen::Vector3d::Zero();
+    setU(s, 0, u);
+    s.v.segment<3>(0) = v;
+    s.time = i * dt;
+    ASSERT_TRUE(ok(awake->update(s.kinematics())));
+    std::array<Eigen::Vector3d, 5> un;
+    for (std::size_t j = 0; j < 5; ++j) un[j] = s.u.segment<3>(3 * static_cast<int>(j));
+    double bound = 0.0;
+    if (asleep && test.isFar(un, bound) && sleeper->setFarTrial(bound, dt)) {
+      ++farSteps;
+      EXPECT_GT(bound, p.search);
+      EXPECT_EQ(sleeper->trialState().gap, bound);
+    } else {
+      if (asleep) wokenAt = i;
+      asleep = false;
+      ASSERT_TRUE(ok(sleeper->update(s.kinematics())));
+    }
+    // Every step, awake or asleep: the same force, impulse and energies.
+    const NodeToSurfaceState& a = awake->trialState();
+    const NodeToSurfaceState& b = sleeper->trialState();
+    EXPECT_EQ(a.force, b.force) << "step " << i;
+    EXPECT_EQ(a.impulse, b.impulse) << "step " << i;
+    EXPECT_EQ(a.dampingEnergy, b.dampingEnergy) << "step " << i;
+    EXPECT_EQ(a.frictionEnergy, b.frictionEnergy) << "step " << i;
+    EXPECT_EQ(a.status, b.status) << "step " << i;
+    if (!asleep) {
+      EXPECT_EQ(a.gap, b.gap) << "step " << i;
+      EXPECT_EQ(a.stickXi, b.stickXi) << "step " << i;
+      EXPECT_EQ(Eigen::VectorXd(awake->resistingForce()),
+                Eigen::VectorXd(sleeper->resistingForce()));
+      EXPECT_EQ(Eigen::MatrixXd(awake->tangentStiff()), Eigen::MatrixXd(sleeper->tangentStiff()));
+      EXPECT_EQ(Eigen::MatrixXd(awake->dampingTangent()),
+                Eigen::MatrixXd(sleeper->dampingTangent()));
+    }
+    awake->commitState();
+    sleeper->commitState();
+  }
+  // Asleep while the gap exceeded 0.05 m (0.3 - 0.0155 i > 0.05 up to i = 16), woken after.
+  EXPECT_EQ(farSteps, 16);
+  EXPECT_EQ(wokenAt, 17);
+  EXPECT_NEAR(sleeper->committedState().gap, -0.01, 1e-12);
+  EXPECT_NEAR(sleeper->committedState().force(0), kK * 0.01, 1e-9 * kK);
+  EXPECT_GT(sleeper->committedState().impulse(0), 0.0);
+}
+
+// A far pair whose committed state is far and quiet commits and reverts the gap alone; the result
+// is the state of the same pair updated the ordinary way.
+TEST(NodeToSurfaceContact3dTest, SettledFarPairCommitsAndRevertsItsGap) {
+  NodeToSurfaceParams p = params(0.5, 0.4);
+  p.search = 0.05;
+  auto a = make(p, {0.5, 0.8, 0.3});
+  auto b = make(p, {0.5, 0.8, 0.3});
+  TrialState s = zeroState(15);
+  s.dt = 0.01;
+  auto step = [&](double uz) {
+    setU(s, 0, {0.0, 0.0, uz});
+    std::array<Eigen::Vector3d, 5> u;
+    for (std::size_t j = 0; j < 5; ++j) u[j] = s.u.segment<3>(3 * static_cast<int>(j));
+    EXPECT_TRUE(ok(a->update(s.kinematics())));
+    EXPECT_TRUE(b->updateIfFar(u, s.dt));
+  };
+  step(-0.05);  // gap bound 0.25
+  a->commitState();
+  b->commitState();
+  step(-0.1);  // 0.2, then reverted to 0.25
+  EXPECT_EQ(b->trialState().gap, a->trialState().gap);
+  EXPECT_NEAR(b->trialState().gap, 0.2, 1e-12);
+  a->revertToLastCommit();
+  b->revertToLastCommit();
+  EXPECT_EQ(b->trialState().gap, a->trialState().gap);
+  EXPECT_NEAR(b->trialState().gap, 0.25, 1e-12);
+  step(-0.15);
+  a->commitState();
+  b->commitState();
+  EXPECT_NEAR(b->committedState().gap, 0.15, 1e-12);
+  EXPECT_EQ(b->committedState().gap, a->committedState().gap);
+  EXPECT_EQ(b->committedState().impulse, a->committedState().impulse);
+  EXPECT_EQ(*b->response(std::vector<std::string>{"gap"}),
+            *a->response(std::vector<std::string>{"gap"}));
+  // Woken: from the settled state into contact, the same force as the ordinary pair.
+  setU(s, 0, {0.0, 0.0, -0.31});
+  ASSERT_TRUE(ok(a->update(s.kinematics())));
+  ASSERT_TRUE(ok(b->update(s.kinematics())));
+  EXPECT_EQ(b->trialState().force, a->trialState().force);
+  EXPECT_NEAR(b->trialState().force(0), kK * 0.01, 1e-9 * kK);
+  // Reverted to the far committed state: the trial gap is the committed one again.
+  b->revertToLastCommit();
+  EXPECT_EQ(b->trialState().gap, b->committedState().gap);
+  EXPECT_EQ(b->trialState().status, ContactStatus::Open);
+}
+
+// A pair keeps no mass, no initial or committed tangent (they read as zero, of its size), and
+// holds its tangent matrices from its first contact on, so a pair that never touches is smaller
+// than one 15 x 15 matrix.
+TEST(NodeToSurfaceContact3dTest, PairHoldsItsMatricesFromItsFirstContactOn) {
+  EXPECT_LT(sizeof(NodeToSurfaceContact3d<3>), sizeof(Eigen::Matrix<double, 15, 15>));
+  EXPECT_LT(sizeof(NodeToSurfaceContact3d<6>), sizeof(Eigen::Matrix<double, 15, 15>));
+  auto e = make(params(0.5, 0.4), {0.5, 0.8, 0.1});
+  for (const auto& m : {Eigen::MatrixXd(e->mass()), Eigen::MatrixXd(e->initialStiff()),
+                        Eigen::MatrixXd(e->committedStiff()), Eigen::MatrixXd(e->tangentStiff()),
+                        Eigen::MatrixXd(e->dampingTangent())}) {
+    EXPECT_EQ(m.rows(), 15);
+    EXPECT_EQ(m.cols(), 15);
+    EXPECT_TRUE(m.isZero(0.0));
+  }
+  TrialState s = zeroState(15);
+  setU(s, 0, {0.0, 0.0, -0.12});
+  ASSERT_TRUE(ok(e->update(s.kinematics())));
+  EXPECT_NEAR(e->tangentStiff()(2, 2), kK, 1e-9 * kK);  // d(-N)/d(u_kz) with N = K (0.02)
+  EXPECT_TRUE(Eigen::MatrixXd(e->mass()).isZero(0.0));
+  // Open again: zero force and tangent.
+  setU(s, 0, {0.0, 0.0, 0.0});
+  ASSERT_TRUE(ok(e->update(s.kinematics())));
+  EXPECT_TRUE(Eigen::MatrixXd(e->tangentStiff()).isZero(0.0));
+}
+
 TEST(NodeToSurfaceContact3dTest, ContactorOnTheWrongSideIsAnInputError) {
   NodeToSurfaceContact3d<3> e(1, 10, {1, 2, 3, 4}, params());
   EXPECT_THROW(e.initialize(coords({0.5, 0.5, -0.1})), InputError);

@@ -29,8 +29,9 @@ bool AnalysisModel::nonSymmetric() const {
 }
 
 bool AnalysisModel::nonSymmetricNow() const {
-  return std::any_of(elements_.begin(), elements_.end(), [](const ElementLink& l) {
-    return !l.asleep && l.element->isActive() && l.element->hasNonSymmetricTangent();
+  const auto awake = awakeLinks();
+  return std::any_of(awake.begin(), awake.end(), [](const ElementLink& l) {
+    return l.element->isActive() && l.element->hasNonSymmetricTangent();
   });
 }
 
@@ -270,8 +271,6 @@ void AnalysisModel::buildScatter() {
     link.rayleigh = domain_.elementRayleigh(etag);
     link.rayleighOn = link.rayleigh.any();
     const int n = e->numDof();
-    link.u = link.v = link.a = link.force = Eigen::VectorXd::Zero(n);
-    link.work = Eigen::MatrixXd::Zero(n, n);
     if (e->typeName() == "nodeToSurface") {
       link.pair3 = dynamic_cast<contact::NodeToSurfaceContact3d<3>*>(e.get());
       link.pair6 = dynamic_cast<contact::NodeToSurfaceContact3d<6>*>(e.get());
@@ -280,7 +279,8 @@ void AnalysisModel::buildScatter() {
     }
     link.asleep = wantsSleep(link);
     if (link.asleep) ++sleeping_;
-    if (link.pair3 || link.pair6) pairLinks_.push_back(elements_.size());
+    // A sleeper gets its buffers when it wakes (they would spread the awake links' data).
+    if (!link.asleep) allocateBuffers(link, n);
     localEqs.assign(static_cast<std::size_t>(n), {});
     int local = 0;
     for (int nt : e->nodeTags()) {
@@ -289,7 +289,8 @@ void AnalysisModel::buildScatter() {
       for (int d = 0; d < nl.node->ndf(); ++d, ++local) {
         eqsOfDof(nl.firstDof + d, scratch);
         localEqs[static_cast<std::size_t>(local)] = scratch;
-        for (auto [eq, c] : scratch) link.vec.push_back(VecEntry{local, eq, c});
+        if (!link.asleep)  // a sleeper adds nothing to the residual
+          for (auto [eq, c] : scratch) link.vec.push_back(VecEntry{local, eq, c});
       }
     }
     for (int i = 0; i < n && !link.asleep; ++i)
@@ -339,6 +340,26 @@ void AnalysisModel::buildScatter() {
     rowCol.shrink_to_fit();
   };
   for (ElementLink& l : elements_) fix(l.mat, l.rowCol);
+  // Sleepers after the awake links, each part in the domain's order (the assembly sums in the
+  // same order as with every link in place); the pairs that may sleep with their far-test data.
+  std::map<const elements::Element*, std::size_t> pairOrder;  // domain order of each pair
+  for (const ElementLink& l : elements_)
+    if (l.pair3 || l.pair6) pairOrder.emplace(l.element, pairOrder.size());
+  std::stable_partition(elements_.begin(), elements_.end(),
+                        [](const ElementLink& l) { return !l.asleep; });
+  awake_ = elements_.size() - static_cast<std::size_t>(sleeping_);
+  pairLinks_.assign(pairOrder.size(), PairLink{});
+  for (std::size_t k = 0; k < elements_.size(); ++k) {
+    const ElementLink& l = elements_[k];
+    if (!l.pair3 && !l.pair6) continue;
+    PairLink& p = pairLinks_[pairOrder.at(l.element)];
+    p.link = k;
+    p.test = l.pair3 ? l.pair3->farTest() : l.pair6->farTest();
+    for (std::size_t j = 0; j < 5; ++j) p.nodes[j] = l.nodes[j];
+    p.pair3 = l.pair3;
+    p.pair6 = l.pair6;
+    p.asleep = l.asleep;
+  }
   for (NodeLink& nl : nodes_) fix(nl.mass, nl.rowCol);
   constantFor_.reset();
   for (PenaltyRow& row : penalties_) {
@@ -352,6 +373,12 @@ void AnalysisModel::buildScatter() {
   sleepWanted_.clear();
 }
 
+void AnalysisModel::allocateBuffers(ElementLink& l, int n) {
+  if (l.u.size() == n) return;
+  l.u = l.v = l.a = l.force = Eigen::VectorXd::Zero(n);
+  l.work = Eigen::MatrixXd::Zero(n, n);
+}
+
 bool AnalysisModel::wantsSleep(const ElementLink& l) const {
   if (!l.pair3 && !l.pair6) return false;
   const auto it = sleepWanted_.find(l.element);
@@ -359,20 +386,23 @@ bool AnalysisModel::wantsSleep(const ElementLink& l) const {
   return l.pair3 ? l.pair3->committedFar() : l.pair6->committedFar();
 }
 
-bool AnalysisModel::sleeperStaysFar(ElementLink& l, double dt) const {
+bool AnalysisModel::sleeperStaysFar(const PairLink& p, double dt) {
   std::array<Eigen::Vector3d, 5> u;
-  for (std::size_t j = 0; j < 5; ++j) u[j] = l.nodes[j]->disp.head<3>();
-  return l.pair3 ? l.pair3->updateIfFar(u, dt) : l.pair6->updateIfFar(u, dt);
+  for (std::size_t j = 0; j < 5; ++j) u[j] = p.nodes[j]->disp.head<3>();
+  double bound = 0.0;
+  if (!p.test.isFar(u, bound)) return false;
+  return p.pair3 ? p.pair3->setFarTrial(bound, dt) : p.pair6->setFarTrial(bound, dt);
 }
 
 AnalysisModel::SleepCheck AnalysisModel::checkSleepingPairs() {
   SleepCheck result = SleepCheck::Unchanged;
   const double dt = time_ - domain_.committedTime();
-  for (const std::size_t k : pairLinks_) {
-    ElementLink& l = elements_[k];
+  for (const PairLink& p : pairLinks_) {
+    if (p.asleep && sleeperStaysFar(p, dt)) continue;
+    ElementLink& l = elements_[p.link];
     if (l.asleep) {
-      if (sleeperStaysFar(l, dt)) continue;
       // Near: its full update for this trial state; with force the step missed it.
+      allocateBuffers(l, l.element->numDof());
       const Status st = updateElement(l, dt);
       ++elementUpdates_;
       sleepWanted_[l.element] = false;
@@ -533,7 +563,7 @@ Status AnalysisModel::updateElement(ElementLink& l, double dt) const {
 
 Status AnalysisModel::updateElements() {
   const double dt = time_ - domain_.committedTime();
-  const auto count = static_cast<std::ptrdiff_t>(elements_.size());
+  const auto count = static_cast<std::ptrdiff_t>(awake_);
   // Every element is updated even when one fails, so each element's trial state (a force-based
   // element starts its next update from its own) is the same whatever the order and the number of
   // threads: elements share nothing, read only their nodes, and the assembly stays serial, so
@@ -551,7 +581,7 @@ Status AnalysisModel::updateElements() {
       if (!l.asleep) elementStatus_[static_cast<std::size_t>(k)] = updateElement(l, dt);
     }
   }
-  elementUpdates_ += count - sleeping_;
+  elementUpdates_ += count;
   for (const Status s : elementStatus_)
     if (!ok(s)) return s;
   return Status::Ok;
@@ -604,10 +634,10 @@ void AnalysisModel::formResidual(const AssemblyCoefficients& c, Eigen::VectorXd&
   // Dynamic forces from the constant global matrices unless a support moves with an imposed
   // velocity, whose damping and inertia coupling only the element-level forces carry.
   const bool global = c.dynamic && !imposedMotion_;
-  for (std::size_t k = 0; k < elements_.size(); ++k) {
+  for (std::size_t k = 0; k < awake_; ++k) {
     const ElementLink& l = elements_[k];
     const elements::Element& e = *l.element;
-    if (l.asleep || !e.isActive()) continue;
+    if (!e.isActive()) continue;
     if (global) {
       if (rayleighLeft_[k] == 0) {
         const auto f = e.resistingForce();
@@ -700,9 +730,8 @@ const Eigen::SparseMatrix<double>& AnalysisModel::formTangent(const AssemblyCoef
   // masses, penalty rows) is summed once and copied; only the other elements are formed again.
   if (!constantFor_ || !constantFor_->sameMatrix(c)) {
     std::fill(values, values + nnz, 0.0);
-    for (ElementLink& l : elements_)
-      if (!l.asleep && l.element->isLinear() && l.element->isActive())
-        addElementTangent(values, l, c);
+    for (ElementLink& l : awakeLinks())
+      if (l.element->isLinear() && l.element->isActive()) addElementTangent(values, l, c);
     if (c.cM != 0.0 || c.cC != 0.0) {
       for (NodeLink& nl : nodes_) {
         const double f = c.cM + c.cC * nl.alphaM;
@@ -721,9 +750,8 @@ const Eigen::SparseMatrix<double>& AnalysisModel::formTangent(const AssemblyCoef
   } else {
     std::copy(constantValues_.begin(), constantValues_.end(), values);
   }
-  for (ElementLink& l : elements_)
-    if (!l.asleep && !l.element->isLinear() && l.element->isActive())
-      addElementTangent(values, l, c);
+  for (ElementLink& l : awakeLinks())
+    if (!l.element->isLinear() && l.element->isActive()) addElementTangent(values, l, c);
   return A_;
 }
 

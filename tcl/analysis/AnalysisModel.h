@@ -5,6 +5,7 @@
 #include <Eigen/SparseCore>
 #include <functional>
 #include <optional>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -160,6 +161,16 @@ class AnalysisModel {
     contact::NodeToSurfaceContact3d<6>* pair6 = nullptr;
     bool asleep = false;  // left out of the pattern and the iterations
   };
+  // The pairs that may sleep, in the domain's order, with what a sleeper's once-a-step test reads
+  // (kept here, compact, so that the test does not touch the element or its link).
+  struct PairLink {
+    std::size_t link = 0;  // index in elements_
+    contact::FarTest test;
+    std::array<const domain::Node*, 5> nodes{};
+    contact::NodeToSurfaceContact3d<3>* pair3 = nullptr;
+    contact::NodeToSurfaceContact3d<6>* pair6 = nullptr;
+    bool asleep = false;
+  };
   struct NodeLink {
     domain::Node* node;
     int firstDof;                             // index of the node's dof 0 in dofTerms
@@ -179,8 +190,10 @@ class AnalysisModel {
   /// Whether the pair of link l sleeps in the next pattern (sleepWanted_, else its committed
   /// state).
   bool wantsSleep(const ElementLink& l) const;
+  /// Gather and work buffers of a link for n dofs (once).
+  static void allocateBuffers(ElementLink& l, int n);
   /// Sleeper's far test on its nodes' trial translations (true: still far, trial state set).
-  bool sleeperStaysFar(ElementLink& l, double dt) const;
+  static bool sleeperStaysFar(const PairLink& p, double dt);
   void buildScatter();
   void buildConstantDynamics();
   [[nodiscard]] Status updateElement(ElementLink& l, double dt) const;
@@ -222,7 +235,12 @@ class AnalysisModel {
   long elementUpdates_ = 0;
   std::map<const elements::Element*, bool> sleepWanted_;  // pairs to wake (false) or put to sleep
   long sleeping_ = 0;
-  std::vector<std::size_t> pairLinks_;  // elements_ indices of the pairs that may sleep
+  std::vector<PairLink> pairLinks_;
+  // elements_ holds the awake links first (in the domain's order) and the sleepers after them, so
+  // the loops of the iterations stop at awake_ and never touch a sleeper.
+  std::size_t awake_ = 0;
+  std::span<ElementLink> awakeLinks() noexcept { return {elements_.data(), awake_}; }
+  std::span<const ElementLink> awakeLinks() const noexcept { return {elements_.data(), awake_}; }
   int threads_ = 1;
   std::vector<Status> elementStatus_;  // per element, of the last updateElements
   mutable Eigen::VectorXd eqVel_, eqAcc_;
