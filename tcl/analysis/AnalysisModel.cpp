@@ -200,6 +200,12 @@ void AnalysisModel::numberEquations() {
     return out;
   };
   for (int g = 0; g < ndofTotal; ++g) dofTerms_[static_cast<std::size_t>(g)] = resolve(g, 0);
+  directEq_.assign(static_cast<std::size_t>(ndofTotal), -1);
+  for (std::size_t g = 0; g < dofTerms_.size(); ++g) {
+    const auto& terms = dofTerms_[g];
+    if (terms.size() == 1 && terms[0].index >= 0 && terms[0].coef == 1.0)
+      directEq_[g] = terms[0].index;
+  }
   eqDof_.assign(static_cast<std::size_t>(neq_), {nullptr, 0});
   for (const NodeLink& nl : nodes_)
     for (int d = 0; d < nl.node->ndf(); ++d) {
@@ -292,6 +298,15 @@ void AnalysisModel::buildScatter() {
         for (auto [eq, c] : scratch) link.vec.push_back(VecEntry{local, eq, c});
       }
     }
+    link.direct.assign(static_cast<std::size_t>(n), -1);
+    for (const VecEntry& v : link.vec) {
+      auto& d = link.direct[static_cast<std::size_t>(v.local)];
+      if (d >= 0 || v.coef != 1.0) {
+        link.direct.clear();
+        break;
+      }
+      d = v.eq;
+    }
     for (int i = 0; i < n && !link.asleep; ++i)
       for (auto [ea, ca] : localEqs[static_cast<std::size_t>(i)])
         for (int j = 0; j < n; ++j)
@@ -300,6 +315,7 @@ void AnalysisModel::buildScatter() {
             link.mat.push_back(MatEntry{j * n + i, -1, ca * cb});  // value fixed below
             link.rowCol.emplace_back(ea, eb);
           }
+    link.rates = !e->isLinear() || imposedMotion_ || !e->dampingTangent().isZero(0.0);
     elements_.push_back(std::move(link));
   }
   for (NodeLink& nl : nodes_) {
@@ -493,7 +509,14 @@ void AnalysisModel::setResponse(const Eigen::VectorXd& U, const Eigen::VectorXd&
   for (NodeLink& nl : nodes_) {
     domain::Node& n = *nl.node;
     for (int d = 0; d < n.ndf(); ++d) {
-      const auto& terms = dofTerms_[static_cast<std::size_t>(nl.firstDof + d)];
+      const auto g = static_cast<std::size_t>(nl.firstDof + d);
+      if (const int eq = directEq_[g]; eq >= 0) {  // the dof is an equation
+        n.disp(d) = U(eq);
+        n.vel(d) = V(eq);
+        n.accel(d) = A(eq);
+        continue;
+      }
+      const auto& terms = dofTerms_[g];
       n.disp(d) = termValue(terms, U, 0);
       n.vel(d) = termValue(terms, V, 1);
       n.accel(d) = termValue(terms, A, 2);
@@ -519,15 +542,33 @@ void AnalysisModel::getResponse(Eigen::VectorXd& U, Eigen::VectorXd& V, Eigen::V
 }
 
 Status AnalysisModel::updateElement(ElementLink& l, double dt) const {
-  int offset = 0;
+  double* u = l.u.data();
+  double* v = l.v.data();
+  double* a = l.a.data();
+  // x * 0 is 0 for a finite x and NaN for an infinite or NaN one, so `check` is 0 exactly when
+  // every displacement and velocity is finite (one pass, no branch per value).
+  double check = 0.0;
   for (const domain::Node* n : l.nodes) {
     const int ndf = n->ndf();
-    l.u.segment(offset, ndf) = n->disp;
-    l.v.segment(offset, ndf) = n->vel;
-    l.a.segment(offset, ndf) = n->accel;
-    offset += ndf;
+    const double* nu = n->disp.data();
+    for (int d = 0; d < ndf; ++d) {
+      u[d] = nu[d];
+      check += nu[d] * 0.0;
+    }
+    u += ndf;
+    if (l.rates) {
+      const double* nv = n->vel.data();
+      const double* na = n->accel.data();
+      for (int d = 0; d < ndf; ++d) {
+        v[d] = nv[d];
+        a[d] = na[d];
+        check += nv[d] * 0.0;
+      }
+      v += ndf;
+      a += ndf;
+    }
   }
-  if (!l.u.allFinite() || !l.v.allFinite()) return Status::NonFinite;
+  if (check != 0.0) return Status::NonFinite;
   return l.element->update(elements::Kinematics{l.u, l.v, l.a, time_, dt});
 }
 
@@ -599,6 +640,17 @@ void AnalysisModel::buildConstantDynamics() {
   eqVel_ = eqAcc_ = Eigen::VectorXd::Zero(neq_);
 }
 
+void AnalysisModel::subtractForce(const ElementLink& l, const Eigen::Ref<const Eigen::VectorXd>& f,
+                                  Eigen::VectorXd& B) {
+  if (l.direct.empty()) {
+    for (const VecEntry& v : l.vec) B(v.eq) -= v.coef * f(v.local);
+    return;
+  }
+  const auto n = static_cast<Eigen::Index>(l.direct.size());
+  for (Eigen::Index i = 0; i < n; ++i)
+    if (const int eq = l.direct[static_cast<std::size_t>(i)]; eq >= 0) B(eq) -= f(i);
+}
+
 void AnalysisModel::formResidual(const AssemblyCoefficients& c, Eigen::VectorXd& B) const {
   B = P_;
   // Dynamic forces from the constant global matrices unless a support moves with an imposed
@@ -610,8 +662,7 @@ void AnalysisModel::formResidual(const AssemblyCoefficients& c, Eigen::VectorXd&
     if (l.asleep || !e.isActive()) continue;
     if (global) {
       if (rayleighLeft_[k] == 0) {
-        const auto f = e.resistingForce();
-        for (const VecEntry& v : l.vec) B(v.eq) -= v.coef * f(v.local);
+        subtractForce(l, e.resistingForce(), B);
         continue;
       }
       Eigen::VectorXd& f = l.force;
@@ -634,8 +685,7 @@ void AnalysisModel::formResidual(const AssemblyCoefficients& c, Eigen::VectorXd&
       }
       for (const VecEntry& v : l.vec) B(v.eq) -= v.coef * f(v.local);
     } else {
-      const auto f = e.resistingForce();
-      for (const VecEntry& v : l.vec) B(v.eq) -= v.coef * f(v.local);
+      subtractForce(l, e.resistingForce(), B);
     }
   }
   if (c.dynamic) {

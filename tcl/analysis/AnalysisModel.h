@@ -154,6 +154,13 @@ class AnalysisModel {
     domain::RayleighFactors rayleigh;
     bool rayleighOn = false;
     Eigen::VectorXd u, v, a;                              // gather buffers
+    // Per local dof its equation (coefficient 1) or -1 when prescribed; empty when some dof is a
+    // combination (constraints), and then `vec` scatters.
+    std::vector<int> direct;
+    // Whether updates gather velocities and accelerations: a linear element without a damping
+    // tangent has a force that depends on its displacements alone, and the residual needs its
+    // rates only when the elements form their own inertia and damping forces.
+    bool rates = true;
     mutable Eigen::VectorXd force;                        // residual work buffer
     Eigen::MatrixXd work;                                 // tangent work buffer
     contact::NodeToSurfaceContact3d<3>* pair3 = nullptr;  // a contact pair that may sleep
@@ -189,6 +196,9 @@ class AnalysisModel {
   /// Adds cK K + cC C + cM M of one element to the matrix values.
   void addElementTangent(double* values, ElementLink& l, const AssemblyCoefficients& c) const;
   int valueIndex(int row, int col) const;
+  /// B -= the element force f (local dofs) through the element's equations.
+  static void subtractForce(const ElementLink& l, const Eigen::Ref<const Eigen::VectorXd>& f,
+                            Eigen::VectorXd& B);
   double termValue(const std::vector<Term>& terms, const Eigen::VectorXd& x, int which) const;
 
   domain::Domain& domain_;
@@ -200,6 +210,7 @@ class AnalysisModel {
   double time_ = 0.0;
 
   std::vector<std::vector<Term>> dofTerms_;  // per node dof: combination of equations and slots
+  std::vector<int> directEq_;  // per node dof: its equation when it is one (coefficient 1), or -1
   std::vector<Slot> slots_;
   std::vector<int> patternSlots_;  // slot of each pattern sp / imposed motion, in pattern order
   std::vector<NodeLink> nodes_;

@@ -247,9 +247,19 @@ double Domain::nodeAlphaM(int nodeTag) const {
   return it == nodeAlphaM_.end() ? 0.0 : it->second;
 }
 
+void Domain::refreshLists() {
+  if (listVersion_ == modelVersion_) return;
+  nodeList_.clear();
+  for (auto& [tag, n] : nodes_) nodeList_.push_back(&n);
+  elementList_.clear();
+  for (auto& [tag, e] : elements_) elementList_.push_back(e.get());
+  listVersion_ = modelVersion_;
+}
+
 void Domain::commit() {
-  for (auto& [tag, n] : nodes_) n.commitState();
-  for (auto& [tag, e] : elements_) e->commitState();
+  refreshLists();
+  for (Node* n : nodeList_) n->commitState();
+  for (elements::Element* e : elementList_) e->commitState();
   committedTime_ = time_;
   record();
 }
@@ -287,8 +297,9 @@ void Domain::applyElementLoads(double t) {
 
 void Domain::revertToLastCommit() {
   applyElementLoads(committedTime_);
-  for (auto& [tag, n] : nodes_) n.revertToLastCommit();
-  for (auto& [tag, e] : elements_) e->revertToLastCommit();
+  refreshLists();
+  for (Node* n : nodeList_) n->revertToLastCommit();
+  for (elements::Element* e : elementList_) e->revertToLastCommit();
   time_ = committedTime_;
 }
 

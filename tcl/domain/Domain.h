@@ -169,6 +169,12 @@ class Domain {
   double time_ = 0.0;
   double committedTime_ = 0.0;
   long modelVersion_ = 0;
+  /// Nodes and elements in tag order as flat lists for the loops of every step (commit, revert),
+  /// which would otherwise take a tree step per map entry; rebuilt when the model version changes.
+  void refreshLists();
+  std::vector<Node*> nodeList_;
+  std::vector<elements::Element*> elementList_;
+  long listVersion_ = -1;
   /// Member loads at time t on the elements (see setTime).
   void applyElementLoads(double t);
   bool elementLoadsApplied_ = false;  ///< some element holds member loads
