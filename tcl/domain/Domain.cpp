@@ -1,4 +1,9 @@
 // SPDX-License-Identifier: MIT
+// Over 400 lines: the domain owns every part of the model, and each mutator checks its input
+// against the other parts before it changes anything (a node still used by an element, a pattern
+// or a constraint; a dof both fixed and constrained); the checks need the whole model, so they
+// stay beside the maps they read. What patterns apply they say themselves (LoadPattern's virtual
+// methods), and recorders write through RecorderFile.
 #include "tcl/domain/Domain.h"
 
 #include <algorithm>
@@ -74,8 +79,7 @@ void Domain::removeElement(int tag) {
   if (elements_.count(tag) == 0)
     throw InputError("element", std::to_string(tag) + " does not exist");
   for (const auto& [ptag, p] : patterns_) {
-    if (p->kind() != LoadPattern::Kind::Plain) continue;
-    for (const auto& l : static_cast<const PlainPattern&>(*p).elementLoads)
+    for (const ElementLoad& l : p->elementLoads())
       if (l.element == tag)
         throw InputError("element", std::to_string(tag) + " is loaded by pattern " +
                                         std::to_string(ptag) + "; remove the pattern first");
@@ -99,16 +103,7 @@ void Domain::removeNode(int tag) {
   // A pattern still loading the node would make every later analysis fail; the user removes the
   // pattern first (OpenSees leaves the dangling load in the pattern).
   for (const auto& [ptag, p] : patterns_) {
-    bool uses = false;
-    if (p->kind() == LoadPattern::Kind::Plain) {
-      const auto& plain = static_cast<const PlainPattern&>(*p);
-      for (const auto& l : plain.loads) uses = uses || l.node == tag;
-      for (const auto& d : plain.prescribed) uses = uses || d.node == tag;
-    } else if (p->kind() == LoadPattern::Kind::MultipleSupport) {
-      for (const auto& m : static_cast<const MultipleSupportPattern&>(*p).imposed)
-        uses = uses || m.node == tag;
-    }
-    if (uses)
+    if (p->usesNode(tag))
       throw InputError("node", std::to_string(tag) + " is loaded by pattern " +
                                    std::to_string(ptag) + "; remove the pattern first");
   }
@@ -204,15 +199,11 @@ LoadPattern* Domain::findPattern(int tag) {
 void Domain::removePattern(int tag) {
   auto it = patterns_.find(tag);
   if (it == patterns_.end()) throw InputError("pattern", std::to_string(tag) + " does not exist");
-  if (it->second->kind() == LoadPattern::Kind::MultipleSupport) {
-    // Imposed motions that took a fix's place give it back.
-    for (const auto& m : static_cast<const MultipleSupportPattern&>(*it->second).imposed) {
-      const bool fixed = std::any_of(fixes_.begin(), fixes_.end(), [&m](const SPConstraint& sp) {
-        return sp.node == m.node && sp.dof == m.dof;
-      });
-      if (m.replacedFix && !fixed && nodes_.count(m.node) != 0)
-        fixes_.push_back(SPConstraint{m.node, m.dof});
-    }
+  for (const SPConstraint& m : it->second->replacedFixes()) {  // supports give a fix back
+    const bool fixed = std::any_of(fixes_.begin(), fixes_.end(), [&m](const SPConstraint& sp) {
+      return sp.node == m.node && sp.dof == m.dof;
+    });
+    if (!fixed && nodes_.count(m.node) != 0) fixes_.push_back(m);
   }
   patterns_.erase(it);
   touch();
@@ -276,17 +267,13 @@ void Domain::setCommittedTime(double t) {
 
 void Domain::applyElementLoads(double t) {
   bool any = false;
-  for (const auto& [ptag, p] : patterns_)
-    if (p->kind() == LoadPattern::Kind::Plain)
-      any = any || !static_cast<const PlainPattern&>(*p).elementLoads.empty();
+  for (const auto& [ptag, p] : patterns_) any = any || !p->elementLoads().empty();
   if (!any && !elementLoadsApplied_) return;
   for (auto& [tag, e] : elements_) e->zeroLoad();
   for (const auto& [ptag, p] : patterns_) {
-    if (p->kind() != LoadPattern::Kind::Plain) continue;
-    const auto& plain = static_cast<const PlainPattern&>(*p);
-    if (plain.elementLoads.empty()) continue;
-    const double f = plain.factor(t);
-    for (const auto& l : plain.elementLoads) {
+    if (p->elementLoads().empty()) continue;
+    const double f = p->factor(t);
+    for (const ElementLoad& l : p->elementLoads()) {
       // The eleLoad command checked the element and the load; removeElement keeps them.
       elements::Element* e = findElement(l.element);
       if (e != nullptr) e->addLoad(l.load, f);
@@ -364,10 +351,9 @@ Eigen::VectorXd Domain::nodalLoad(int nodeTag) const {
   const Node& n = node(nodeTag);
   Eigen::VectorXd p = Eigen::VectorXd::Zero(n.ndf());
   for (const auto& [tag, pat] : patterns_) {
-    if (pat->kind() != LoadPattern::Kind::Plain) continue;
-    const auto& plain = static_cast<const PlainPattern&>(*pat);
-    const double f = plain.factor(time_);
-    for (const auto& load : plain.loads)
+    if (pat->nodalLoads().empty()) continue;
+    const double f = pat->factor(time_);
+    for (const NodalLoad& load : pat->nodalLoads())
       if (load.node == nodeTag) p += f * load.values;
   }
   return p;
