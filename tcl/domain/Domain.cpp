@@ -1,9 +1,4 @@
 // SPDX-License-Identifier: MIT
-// Over 400 lines: the domain owns every part of the model, and each mutator checks its input
-// against the other parts before it changes anything (a node still used by an element, a pattern
-// or a constraint; a dof both fixed and constrained); the checks need the whole model, so they
-// stay beside the maps they read. What patterns apply they say themselves (LoadPattern's virtual
-// methods), and recorders write through RecorderFile.
 #include "tcl/domain/Domain.h"
 
 #include <algorithm>
@@ -14,7 +9,7 @@
 namespace dabs::domain {
 
 Domain::Domain() = default;
-Domain::~Domain() { flushRecorders(); }
+Domain::~Domain() { recorders_.flush(); }
 
 Node& Domain::addNode(int tag, int ndm, int ndf, const Eigen::Vector3d& coords) {
   if (nodes_.count(tag) != 0)
@@ -299,21 +294,7 @@ void Domain::revertToStart() {
 
 int Domain::addRecorder(std::unique_ptr<Recorder> recorder) {
   recorder->initialize(*this);
-  const int tag = nextRecorderTag_++;
-  recorders_[tag] = std::move(recorder);
-  return tag;
-}
-
-void Domain::removeRecorder(int tag) {
-  auto it = recorders_.find(tag);
-  if (it == recorders_.end()) throw InputError("recorder", std::to_string(tag) + " does not exist");
-  it->second->flush();
-  recorders_.erase(it);
-}
-
-void Domain::removeAllRecorders() {
-  flushRecorders();
-  recorders_.clear();
+  return recorders_.add(std::move(recorder));
 }
 
 long Domain::materialUpdates() const {
@@ -322,29 +303,8 @@ long Domain::materialUpdates() const {
   return n;
 }
 
-void Domain::flushRecorders() {
-  for (auto& [tag, r] : recorders_) r->flush();
-}
-
 void Domain::record() {
-  bool reactionsDone = false;
-  for (auto& [tag, r] : recorders_) {
-    if (r->needsReactions() && !reactionsDone) {
-      calculateNodalReactions(false);
-      reactionsDone = true;
-    }
-    try {
-      r->record(*this);
-    } catch (const InputError& e) {
-      if (!recorderError_) recorderError_ = "recorder " + std::to_string(tag) + ": " + e.what();
-    }
-  }
-}
-
-std::optional<std::string> Domain::takeRecorderError() {
-  std::optional<std::string> error;
-  error.swap(recorderError_);
-  return error;
+  recorders_.record(*this, [this] { calculateNodalReactions(false); });
 }
 
 Eigen::VectorXd Domain::nodalLoad(int nodeTag) const {
@@ -414,8 +374,7 @@ void Domain::calculateNodalReactions(bool includeInertia) {
 }
 
 void Domain::clear() {
-  removeAllRecorders();
-  nextRecorderTag_ = 0;
+  recorders_.removeAll(true);
   elements_.clear();
   nodes_.clear();
   fixes_.clear();
