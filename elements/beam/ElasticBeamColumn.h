@@ -115,7 +115,7 @@ class ElasticBeamColumn : public FixedSizeElement<2, Ndf> {
 
   typename Transf::Basic q_ = Transf::Basic::Zero();
   BeamMemberLoads<Transf::Basic::RowsAtCompileTime> loads_;
-  bool constantCompat_ = false;  ///< B constant: k_ = k0_ + geometric part
+  bool constantCompat_ = false;   ///< B constant: k_ = k0_ + geometric part
   bool constantTangent_ = false;  ///< B constant and no geometric part: k_ = k0_ always
   Vector uTrial_ = Vector::Zero();
   Vector uCommitted_ = Vector::Zero();

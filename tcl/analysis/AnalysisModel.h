@@ -16,7 +16,6 @@
 
 namespace dabs::analysis {
 
-
 /// Which stiffness the tangent uses.
 enum class StiffnessKind { Current, Initial };
 
@@ -145,7 +144,7 @@ class AnalysisModel {
     std::vector<std::pair<int, int>> rowCol;  // (row, column) of each mat entry while building
     domain::RayleighFactors rayleigh;
     bool rayleighOn = false;
-    Eigen::VectorXd u, v, a;                              // gather buffers
+    Eigen::VectorXd u, v, a;  // gather buffers
     // Per local dof its equation (coefficient 1) or -1 when prescribed; empty when some dof is a
     // combination (constraints), and then `vec` scatters.
     std::vector<int> direct;

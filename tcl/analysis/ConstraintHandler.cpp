@@ -78,13 +78,13 @@ DofMap ConstraintHandler::apply(const domain::Domain& domain, const std::vector<
     const NodeDofs& nl = nodes[static_cast<std::size_t>(ni)];
     for (int d = 0; d < nl.node->ndf(); ++d) {
       const auto g = static_cast<std::size_t>(nl.firstDof + d);
-      const bool prescribed =
-          kind_ != ConstraintKind::Penalty && (slotOf[g] >= 0 || mpOf[g] >= 0);
+      const bool prescribed = kind_ != ConstraintKind::Penalty && (slotOf[g] >= 0 || mpOf[g] >= 0);
       if (!prescribed) eqOf[g] = neq++;
     }
   }
   // Terms of a dof, resolving chains of multi-point constraints.
-  std::function<std::vector<DofTerm>(int, int)> resolve = [&](int g, int depth) -> std::vector<DofTerm> {
+  std::function<std::vector<DofTerm>(int, int)> resolve = [&](int g,
+                                                              int depth) -> std::vector<DofTerm> {
     const auto gi = static_cast<std::size_t>(g);
     if (eqOf[gi] >= 0) return {DofTerm{eqOf[gi], 1.0}};
     if (slotOf[gi] >= 0) return {DofTerm{-slotOf[gi] - 1, 1.0}};
@@ -116,7 +116,7 @@ DofMap ConstraintHandler::apply(const domain::Domain& domain, const std::vector<
     }
 
   // --- penalty rows ------------------------------------------------------------------------
-    if (kind_ == ConstraintKind::Penalty) {
+  if (kind_ == ConstraintKind::Penalty) {
     for (int g = 0; g < ndofTotal; ++g) {
       if (slotOf[static_cast<std::size_t>(g)] >= 0) {
         PenaltyRow row;

@@ -40,9 +40,9 @@ struct DofMap {
   int numEquations = 0;
   std::vector<std::vector<DofTerm>> dofTerms;  ///< per node dof: its value as terms
   std::vector<int> directEq;  ///< per node dof: its equation when it is one (coefficient 1), or -1
-  std::vector<SupportSlot> slots;             ///< fixes first, then the patterns' supports
-  std::vector<int> patternSlots;              ///< slot of each pattern support, in pattern order
-  bool imposedMotion = false;                 ///< some support moves with an imposed velocity
+  std::vector<SupportSlot> slots;  ///< fixes first, then the patterns' supports
+  std::vector<int> patternSlots;   ///< slot of each pattern support, in pattern order
+  bool imposedMotion = false;      ///< some support moves with an imposed velocity
   std::vector<std::pair<domain::Node*, int>> eqDof;  ///< node and dof of each equation
   std::vector<PenaltyRow> penalties;
 };

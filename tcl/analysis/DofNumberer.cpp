@@ -32,7 +32,8 @@ DofNumberer::Graph DofNumberer::nodeGraph(const domain::Domain& domain,
   for (const auto& [etag, e] : domain.elements()) {
     const auto& nt = e->nodeTags();
     for (std::size_t i = 0; i < nt.size(); ++i)
-      for (std::size_t j = i + 1; j < nt.size(); ++j) link(nodeIndex.at(nt[i]), nodeIndex.at(nt[j]));
+      for (std::size_t j = i + 1; j < nt.size(); ++j)
+        link(nodeIndex.at(nt[i]), nodeIndex.at(nt[j]));
   }
   for (const auto& mp : domain.mps())
     link(nodeIndex.at(mp.retainedNode), nodeIndex.at(mp.constrainedNode));

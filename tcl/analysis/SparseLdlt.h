@@ -53,7 +53,7 @@ class SparseLdlt {
   std::vector<int> valueTo_;  ///< place of A's value k in the permuted upper triangle, or -1
   std::vector<int> cp_, ci_;  ///< permuted upper triangle, compressed columns
   std::vector<double> cx_;
-  std::vector<int> parent_;   ///< elimination tree
+  std::vector<int> parent_;  ///< elimination tree
   /// L's strictly lower part: column j's row indices and values start at colStart_[j] in li_ and
   /// lx_ (inside its supernode's block, below the block's diagonal), lnz_[j] of them after a
   /// factorisation.

@@ -30,8 +30,8 @@ struct ElementLoad {
 /// A node dof whose motion a pattern prescribes.
 struct SupportDof {
   int node = 0;
-  int dof = 0;               ///< 0-based
-  const char* source = "";   ///< the command that made it, for error messages
+  int dof = 0;                 ///< 0-based
+  const char* source = "";     ///< the command that made it, for error messages
   bool imposedMotion = false;  ///< moves with an imposed velocity (MultipleSupport)
 };
 /// Prescribed displacement, velocity and acceleration of a support dof.

@@ -46,7 +46,7 @@ TEST(AssemblyPatternTest, RepeatedCouplingsAreOneEntryAndTheDiagonalIsAlwaysTher
   pattern.couple(0, 2);
   pattern.couple(2, 0);
   const Eigen::SparseMatrix<double> A = pattern.build(3);
-  EXPECT_EQ(A.nonZeros(), 5);  // (0,0) (1,1) (2,2) (0,2) (2,0)
+  EXPECT_EQ(A.nonZeros(), 5);                          // (0,0) (1,1) (2,2) (0,2) (2,0)
   EXPECT_EQ(AssemblyPattern::valueIndex(A, 2, 0), 1);  // column 0 holds rows 0 and 2
 }
 

@@ -24,8 +24,8 @@ struct Model {
     for (int t = 1; t <= count; ++t) domain.addNode(t, 2, ndf, Eigen::Vector3d::Zero());
   }
   void addEqualDof(int retained, int constrained, int dof) {
-    domain.addMP(domain::MPConstraint{retained, constrained, {dof}, {dof},
-                                      Eigen::MatrixXd::Identity(1, 1)});
+    domain.addMP(
+        domain::MPConstraint{retained, constrained, {dof}, {dof}, Eigen::MatrixXd::Identity(1, 1)});
   }
   DofMap apply(ConstraintKind kind, double alphaSP = 0.0, double alphaMP = 0.0) {
     nodes.clear();
