@@ -1,19 +1,19 @@
 // SPDX-License-Identifier: MIT
+// Over 400 lines: the numbering (DofNumberer), the constraints (ConstraintHandler) and the sparse
+// pattern (AssemblyPattern) live in their own files; what stays here is what works on the
+// per-element and per-node scatter records (ElementLink, NodeLink), which are private to this
+// class: building them, the sleeping contact pairs, gathering and updating, and assembling the
+// residual and the tangent through them.
 #include "tcl/analysis/AnalysisModel.h"
 
 #include <algorithm>
-#include <deque>
-#include <numeric>
-#include <set>
+#include <span>
 #include <string>
 
-#include "materials/InputError.h"
+#include "tcl/analysis/AssemblyPattern.h"
+#include "tcl/analysis/DofNumberer.h"
 
 namespace dabs::analysis {
-
-namespace {
-constexpr int kMaxConstraintChain = 16;  // equalDOF chains longer than this are a cycle
-}
 
 AnalysisModel::AnalysisModel(domain::Domain& domain, ConstraintKind constraints,
                              NumbererKind numberer, double alphaSP, double alphaMP)
@@ -48,212 +48,34 @@ void AnalysisModel::build() {
 }
 
 void AnalysisModel::numberEquations() {
-  // --- node order and dof indices -------------------------------------------------------
   nodes_.clear();
   nodeIndex_.clear();
+  std::vector<NodeDofs> nodeDofs;
   int ndofTotal = 0;
   for (auto& [tag, node] : domain_.nodes()) {
     nodeIndex_[tag] = static_cast<int>(nodes_.size());
     nodes_.push_back(NodeLink{&node, ndofTotal, {}, {}, {}, domain_.nodeAlphaM(tag)});
+    nodeDofs.push_back(NodeDofs{&node, ndofTotal});
     ndofTotal += node.ndf();
   }
-  auto dofIndex = [&](int nodeTag, int dof) {
-    return nodes_[static_cast<std::size_t>(nodeIndex_.at(nodeTag))].firstDof + dof;
-  };
-
-  // --- single-point constraints: fixes, pattern sp, imposed motions -------------------------
-  slots_.clear();
-  std::vector<int> slotOf(static_cast<std::size_t>(ndofTotal), -1);
-  auto addSlot = [&](int nodeTag, int dof, const char* source) {
-    const domain::Node* n = domain_.findNode(nodeTag);
-    if (n == nullptr)
-      throw InputError(source,
-                       "refers to node " + std::to_string(nodeTag) + " which does not exist");
-    if (dof < 0 || dof >= n->ndf())
-      throw InputError(source, "dof " + std::to_string(dof + 1) + " is outside 1.." +
-                                   std::to_string(n->ndf()) + " of node " +
-                                   std::to_string(nodeTag));
-    const int g = dofIndex(nodeTag, dof);
-    if (slotOf[static_cast<std::size_t>(g)] >= 0)
-      throw InputError(source,
-                       "node " + std::to_string(nodeTag) + " dof " + std::to_string(dof + 1) +
-                           " has more than one single-point constraint (fix, sp or imposedMotion)");
-    slotOf[static_cast<std::size_t>(g)] = static_cast<int>(slots_.size());
-    slots_.push_back(Slot{nodeTag, dof});
-  };
-  imposedMotion_ = false;
-  for (const auto& sp : domain_.fixes()) addSlot(sp.node, sp.dof, "fix");
-  patternSlots_.clear();
-  for (const auto& [ptag, p] : domain_.patterns()) {
-    if (p->kind() == domain::LoadPattern::Kind::Plain) {
-      for (const auto& sp : static_cast<const domain::PlainPattern&>(*p).prescribed) {
-        patternSlots_.push_back(static_cast<int>(slots_.size()));
-        addSlot(sp.node, sp.dof, "sp");
-      }
-    } else if (p->kind() == domain::LoadPattern::Kind::MultipleSupport) {
-      for (const auto& im : static_cast<const domain::MultipleSupportPattern&>(*p).imposed) {
-        patternSlots_.push_back(static_cast<int>(slots_.size()));
-        addSlot(im.node, im.dof, "imposedMotion");
-        imposedMotion_ = true;
-      }
-    }
-  }
-
-  // --- multi-point constraints -------------------------------------------------------------
-  if (constraints_ == ConstraintKind::Plain && !domain_.mps().empty())
-    throw InputError(
-        "constraints Plain",
-        "cannot enforce equalDOF or rigidLink constraints; use constraints Transformation");
-  std::vector<int> mpOf(static_cast<std::size_t>(ndofTotal), -1);  // index into mps, row encoded
-  std::vector<int> mpRow(static_cast<std::size_t>(ndofTotal), -1);
-  const auto& mps = domain_.mps();
-  for (std::size_t m = 0; m < mps.size(); ++m) {
-    for (std::size_t r = 0; r < mps[m].constrainedDofs.size(); ++r) {
-      const int g = dofIndex(mps[m].constrainedNode, mps[m].constrainedDofs[r]);
-      if (slotOf[static_cast<std::size_t>(g)] >= 0 && constraints_ != ConstraintKind::Penalty)
-        throw InputError("equalDOF", "node " + std::to_string(mps[m].constrainedNode) + " dof " +
-                                         std::to_string(mps[m].constrainedDofs[r] + 1) +
-                                         " is both constrained and fixed");
-      mpOf[static_cast<std::size_t>(g)] = static_cast<int>(m);
-      mpRow[static_cast<std::size_t>(g)] = static_cast<int>(r);
-    }
-  }
-
-  // --- node ordering ----------------------------------------------------------------------
-  std::vector<int> order(nodes_.size());
-  std::iota(order.begin(), order.end(), 0);
-  if (numberer_ == NumbererKind::RCM && !nodes_.empty()) {
-    // Reverse Cuthill-McKee on the node graph (elements and multi-point constraints).
-    std::vector<std::set<int>> adj(nodes_.size());
-    auto link = [&](int a, int b) {
-      if (a != b) {
-        adj[static_cast<std::size_t>(a)].insert(b);
-        adj[static_cast<std::size_t>(b)].insert(a);
-      }
-    };
-    for (const auto& [etag, e] : domain_.elements()) {
-      const auto& nt = e->nodeTags();
-      for (std::size_t i = 0; i < nt.size(); ++i)
-        for (std::size_t j = i + 1; j < nt.size(); ++j)
-          link(nodeIndex_.at(nt[i]), nodeIndex_.at(nt[j]));
-    }
-    for (const auto& mp : mps)
-      link(nodeIndex_.at(mp.retainedNode), nodeIndex_.at(mp.constrainedNode));
-    std::vector<bool> seen(nodes_.size(), false);
-    std::vector<int> cm;
-    cm.reserve(nodes_.size());
-    while (cm.size() < nodes_.size()) {
-      int start = -1;
-      for (std::size_t i = 0; i < nodes_.size(); ++i) {
-        if (!seen[i] && (start < 0 || adj[i].size() < adj[static_cast<std::size_t>(start)].size()))
-          start = static_cast<int>(i);
-      }
-      std::deque<int> queue{start};
-      seen[static_cast<std::size_t>(start)] = true;
-      while (!queue.empty()) {
-        const int n = queue.front();
-        queue.pop_front();
-        cm.push_back(n);
-        std::vector<int> next;
-        for (int m : adj[static_cast<std::size_t>(n)])
-          if (!seen[static_cast<std::size_t>(m)]) next.push_back(m);
-        std::sort(next.begin(), next.end(), [&](int a, int b) {
-          return adj[static_cast<std::size_t>(a)].size() < adj[static_cast<std::size_t>(b)].size();
-        });
-        for (int m : next) {
-          seen[static_cast<std::size_t>(m)] = true;
-          queue.push_back(m);
-        }
-      }
-    }
-    order.assign(cm.rbegin(), cm.rend());
-  }
-
-  // --- equations --------------------------------------------------------------------------
-  dofTerms_.assign(static_cast<std::size_t>(ndofTotal), {});
-  std::vector<int> eqOf(static_cast<std::size_t>(ndofTotal), -1);
-  neq_ = 0;
-  for (int ni : order) {
-    const NodeLink& nl = nodes_[static_cast<std::size_t>(ni)];
-    for (int d = 0; d < nl.node->ndf(); ++d) {
-      const auto g = static_cast<std::size_t>(nl.firstDof + d);
-      const bool prescribed =
-          constraints_ != ConstraintKind::Penalty && (slotOf[g] >= 0 || mpOf[g] >= 0);
-      if (!prescribed) eqOf[g] = neq_++;
-    }
-  }
-  // Terms of a dof, resolving chains of multi-point constraints.
-  std::function<std::vector<Term>(int, int)> resolve = [&](int g, int depth) -> std::vector<Term> {
-    const auto gi = static_cast<std::size_t>(g);
-    if (eqOf[gi] >= 0) return {Term{eqOf[gi], 1.0}};
-    if (slotOf[gi] >= 0) return {Term{-slotOf[gi] - 1, 1.0}};
-    if (depth > kMaxConstraintChain)
-      throw InputError("equalDOF", "constraints form a cycle or a chain longer than 16 nodes");
-    const auto& mp = mps[static_cast<std::size_t>(mpOf[gi])];
-    const int r = mpRow[gi];
-    std::vector<Term> out;
-    for (std::size_t k = 0; k < mp.retainedDofs.size(); ++k) {
-      const double c = mp.Ccr(r, static_cast<Eigen::Index>(k));
-      if (c == 0.0) continue;
-      for (const Term& t : resolve(dofIndex(mp.retainedNode, mp.retainedDofs[k]), depth + 1))
-        out.push_back(Term{t.index, c * t.coef});
-    }
-    return out;
-  };
-  for (int g = 0; g < ndofTotal; ++g) dofTerms_[static_cast<std::size_t>(g)] = resolve(g, 0);
-  eqDof_.assign(static_cast<std::size_t>(neq_), {nullptr, 0});
-  for (const NodeLink& nl : nodes_)
-    for (int d = 0; d < nl.node->ndf(); ++d) {
-      const int eq = eqOf[static_cast<std::size_t>(nl.firstDof + d)];
-      if (eq >= 0) eqDof_[static_cast<std::size_t>(eq)] = {nl.node, d};
-    }
-
-  // --- penalty rows ------------------------------------------------------------------------
-  penalties_.clear();
-  if (constraints_ == ConstraintKind::Penalty) {
-    for (int g = 0; g < ndofTotal; ++g) {
-      if (slotOf[static_cast<std::size_t>(g)] >= 0) {
-        PenaltyRow row;
-        row.eqs = {{eqOf[static_cast<std::size_t>(g)], 1.0}};
-        row.slot = slotOf[static_cast<std::size_t>(g)];
-        row.alpha = alphaSP_;
-        penalties_.push_back(row);
-      }
-    }
-    for (const auto& mp : mps) {
-      for (std::size_t r = 0; r < mp.constrainedDofs.size(); ++r) {
-        PenaltyRow row;
-        row.eqs.push_back(
-            {eqOf[static_cast<std::size_t>(dofIndex(mp.constrainedNode, mp.constrainedDofs[r]))],
-             1.0});
-        for (std::size_t k = 0; k < mp.retainedDofs.size(); ++k) {
-          const double c = mp.Ccr(static_cast<Eigen::Index>(r), static_cast<Eigen::Index>(k));
-          if (c != 0.0)
-            row.eqs.push_back(
-                {eqOf[static_cast<std::size_t>(dofIndex(mp.retainedNode, mp.retainedDofs[k]))],
-                 -c});
-        }
-        row.alpha = alphaMP_;
-        penalties_.push_back(row);
-      }
-    }
-  }
-}
-
-int AnalysisModel::valueIndex(int row, int col) const {
-  const int* outer = A_.outerIndexPtr();
-  const int* inner = A_.innerIndexPtr();
-  const int* begin = inner + outer[col];
-  const int* end = inner + outer[col + 1];
-  const int* it = std::lower_bound(begin, end, row);
-  return static_cast<int>(it - inner);
+  const std::vector<int> order = DofNumberer(numberer_).order(domain_, nodeIndex_);
+  DofMap map = ConstraintHandler(constraints_, alphaSP_, alphaMP_)
+                   .apply(domain_, nodeDofs, nodeIndex_, order);
+  neq_ = map.numEquations;
+  dofTerms_ = std::move(map.dofTerms);
+  directEq_ = std::move(map.directEq);
+  slots_ = std::move(map.slots);
+  patternSlots_ = std::move(map.patternSlots);
+  imposedMotion_ = map.imposedMotion;
+  eqDof_ = std::move(map.eqDof);
+  penalties_ = std::move(map.penalties);
+  supportMotion_.assign(patternSlots_.size(), domain::SupportMotion{});
 }
 
 void AnalysisModel::buildScatter() {
   // Pattern: every equation pair coupled by an element, a nodal mass, a penalty row or the
   // diagonal.
-  std::vector<Eigen::Triplet<double>> triplets;
-  for (int i = 0; i < neq_; ++i) triplets.emplace_back(i, i, 0.0);
+  AssemblyPattern pattern;
   auto eqsOfDof = [&](int g, std::vector<std::pair<int, double>>& out) {
     out.clear();
     for (const Term& t : dofTerms_[static_cast<std::size_t>(g)])
@@ -293,14 +115,24 @@ void AnalysisModel::buildScatter() {
           for (auto [eq, c] : scratch) link.vec.push_back(VecEntry{local, eq, c});
       }
     }
+    link.direct.assign(static_cast<std::size_t>(n), -1);
+    for (const VecEntry& v : link.vec) {
+      auto& d = link.direct[static_cast<std::size_t>(v.local)];
+      if (d >= 0 || v.coef != 1.0) {
+        link.direct.clear();
+        break;
+      }
+      d = v.eq;
+    }
     for (int i = 0; i < n && !link.asleep; ++i)
       for (auto [ea, ca] : localEqs[static_cast<std::size_t>(i)])
         for (int j = 0; j < n; ++j)
           for (auto [eb, cb] : localEqs[static_cast<std::size_t>(j)]) {
-            triplets.emplace_back(ea, eb, 0.0);
+            pattern.couple(ea, eb);
             link.mat.push_back(MatEntry{j * n + i, -1, ca * cb});  // value fixed below
             link.rowCol.emplace_back(ea, eb);
           }
+    link.rates = !e->isLinear() || imposedMotion_ || !e->dampingTangent().isZero(0.0);
     elements_.push_back(std::move(link));
   }
   for (NodeLink& nl : nodes_) {
@@ -319,7 +151,7 @@ void AnalysisModel::buildScatter() {
         if (m(i, j) == 0.0) continue;
         for (auto [ea, ca] : localEqs[static_cast<std::size_t>(i)])
           for (auto [eb, cb] : localEqs[static_cast<std::size_t>(j)]) {
-            triplets.emplace_back(ea, eb, 0.0);
+            pattern.couple(ea, eb);
             nl.mass.push_back(MatEntry{j * ndf + i, -1, ca * cb});
             nl.rowCol.emplace_back(ea, eb);
           }
@@ -327,15 +159,12 @@ void AnalysisModel::buildScatter() {
   }
   for (PenaltyRow& row : penalties_)
     for (auto [ea, ca] : row.eqs)
-      for (auto [eb, cb] : row.eqs) triplets.emplace_back(ea, eb, 0.0);
-
-  A_.resize(neq_, neq_);
-  A_.setFromTriplets(triplets.begin(), triplets.end());
-  A_.makeCompressed();
+      for (auto [eb, cb] : row.eqs) pattern.couple(ea, eb);
+  A_ = pattern.build(neq_);
   // Each entry's place in the value array, from the (row, column) noted beside it.
   auto fix = [&](std::vector<MatEntry>& entries, std::vector<std::pair<int, int>>& rowCol) {
     for (std::size_t k = 0; k < entries.size(); ++k)
-      entries[k].value = valueIndex(rowCol[k].first, rowCol[k].second);
+      entries[k].value = AssemblyPattern::valueIndex(A_, rowCol[k].first, rowCol[k].second);
     rowCol.clear();
     rowCol.shrink_to_fit();
   };
@@ -365,7 +194,8 @@ void AnalysisModel::buildScatter() {
   for (PenaltyRow& row : penalties_) {
     row.valueIndex.clear();
     for (auto [ea, ca] : row.eqs)
-      for (auto [eb, cb] : row.eqs) row.valueIndex.push_back(valueIndex(ea, eb));
+      for (auto [eb, cb] : row.eqs)
+        row.valueIndex.push_back(AssemblyPattern::valueIndex(A_, ea, eb));
   }
   P_ = Eigen::VectorXd::Zero(neq_);
   influence_.clear();
@@ -444,24 +274,18 @@ void AnalysisModel::applyLoad(double t) {
   domain_.setTime(t);
   // Support values.
   for (Slot& s : slots_) s.disp = s.vel = s.accel = 0.0;
-  auto next = patternSlots_.begin();  // same pattern order as numberEquations
+  // Pattern supports in the order the constraint handler gave them slots.
+  std::size_t k = 0;
   for (const auto& [ptag, p] : domain_.patterns()) {
-    if (p->kind() == domain::LoadPattern::Kind::Plain) {
-      const auto& plain = static_cast<const domain::PlainPattern&>(*p);
-      const double f = plain.factor(t);
-      for (const auto& sp : plain.prescribed) {
-        Slot* s = &slots_[static_cast<std::size_t>(*next++)];
-        s->disp = sp.constant ? sp.reference : sp.reference * f;
-      }
-    } else if (p->kind() == domain::LoadPattern::Kind::MultipleSupport) {
-      const auto& ms = static_cast<const domain::MultipleSupportPattern&>(*p);
-      for (const auto& im : ms.imposed) {
-        const auto& gm = *ms.groundMotions.at(im.groundMotion);
-        Slot* s = &slots_[static_cast<std::size_t>(*next++)];
-        s->disp = gm.disp(t);
-        s->vel = gm.vel(t);
-        s->accel = gm.accel(t);
-      }
+    const std::size_t count = p->supportCount();
+    if (count == 0) continue;
+    const std::span<domain::SupportMotion> motion(supportMotion_.data() + k, count);
+    p->supportMotion(t, motion);
+    for (const domain::SupportMotion& m : motion) {
+      Slot& s = slots_[static_cast<std::size_t>(patternSlots_[k++])];
+      s.disp = m.disp;
+      s.vel = m.vel;
+      s.accel = m.accel;
     }
   }
   externalLoadAt(t, P_);
@@ -502,19 +326,16 @@ void AnalysisModel::externalLoadAt(double t, Eigen::VectorXd& P) {
   if (P.size() != neq_) P.resize(neq_);
   P.setZero();
   for (const auto& [ptag, p] : domain_.patterns()) {
-    if (p->kind() == domain::LoadPattern::Kind::Plain) {
-      const auto& plain = static_cast<const domain::PlainPattern&>(*p);
-      const double f = plain.factor(t);
-      for (const auto& load : plain.loads) {
+    if (!p->nodalLoads().empty()) {
+      const double f = p->factor(t);
+      for (const domain::NodalLoad& load : p->nodalLoads()) {
         const NodeLink& nl = nodes_[static_cast<std::size_t>(nodeIndex_.at(load.node))];
         for (const VecEntry& v : nl.vec) P(v.eq) += v.coef * f * load.values(v.local);
       }
-    } else if (p->kind() == domain::LoadPattern::Kind::UniformExcitation) {
-      // Effective earthquake load -M r a_g (OpenSees EarthquakePattern::applyLoad).
-      const auto& ue = static_cast<const domain::UniformExcitation&>(*p);
-      const double ag = ue.factor(t);
-      if (ag != 0.0) P.noalias() -= ag * influence(ue.dof());
     }
+    // Effective earthquake load -M r a_g (OpenSees EarthquakePattern::applyLoad).
+    if (const auto ground = p->groundAcceleration(t); ground && ground->value != 0.0)
+      P.noalias() -= ground->value * influence(ground->dof);
   }
 }
 
@@ -523,7 +344,14 @@ void AnalysisModel::setResponse(const Eigen::VectorXd& U, const Eigen::VectorXd&
   for (NodeLink& nl : nodes_) {
     domain::Node& n = *nl.node;
     for (int d = 0; d < n.ndf(); ++d) {
-      const auto& terms = dofTerms_[static_cast<std::size_t>(nl.firstDof + d)];
+      const auto g = static_cast<std::size_t>(nl.firstDof + d);
+      if (const int eq = directEq_[g]; eq >= 0) {  // the dof is an equation
+        n.disp(d) = U(eq);
+        n.vel(d) = V(eq);
+        n.accel(d) = A(eq);
+        continue;
+      }
+      const auto& terms = dofTerms_[g];
       n.disp(d) = termValue(terms, U, 0);
       n.vel(d) = termValue(terms, V, 1);
       n.accel(d) = termValue(terms, A, 2);
@@ -549,15 +377,33 @@ void AnalysisModel::getResponse(Eigen::VectorXd& U, Eigen::VectorXd& V, Eigen::V
 }
 
 Status AnalysisModel::updateElement(ElementLink& l, double dt) const {
-  int offset = 0;
+  double* u = l.u.data();
+  double* v = l.v.data();
+  double* a = l.a.data();
+  // x * 0 is 0 for a finite x and NaN for an infinite or NaN one, so `check` is 0 exactly when
+  // every displacement and velocity is finite (one pass, no branch per value).
+  double check = 0.0;
   for (const domain::Node* n : l.nodes) {
     const int ndf = n->ndf();
-    l.u.segment(offset, ndf) = n->disp;
-    l.v.segment(offset, ndf) = n->vel;
-    l.a.segment(offset, ndf) = n->accel;
-    offset += ndf;
+    const double* nu = n->disp.data();
+    for (int d = 0; d < ndf; ++d) {
+      u[d] = nu[d];
+      check += nu[d] * 0.0;
+    }
+    u += ndf;
+    if (l.rates) {
+      const double* nv = n->vel.data();
+      const double* na = n->accel.data();
+      for (int d = 0; d < ndf; ++d) {
+        v[d] = nv[d];
+        a[d] = na[d];
+        check += nv[d] * 0.0;
+      }
+      v += ndf;
+      a += ndf;
+    }
   }
-  if (!l.u.allFinite() || !l.v.allFinite()) return Status::NonFinite;
+  if (check != 0.0) return Status::NonFinite;
   return l.element->update(elements::Kinematics{l.u, l.v, l.a, time_, dt});
 }
 
@@ -629,6 +475,17 @@ void AnalysisModel::buildConstantDynamics() {
   eqVel_ = eqAcc_ = Eigen::VectorXd::Zero(neq_);
 }
 
+void AnalysisModel::subtractForce(const ElementLink& l, const Eigen::Ref<const Eigen::VectorXd>& f,
+                                  Eigen::VectorXd& B) {
+  if (l.direct.empty()) {
+    for (const VecEntry& v : l.vec) B(v.eq) -= v.coef * f(v.local);
+    return;
+  }
+  const auto n = static_cast<Eigen::Index>(l.direct.size());
+  for (Eigen::Index i = 0; i < n; ++i)
+    if (const int eq = l.direct[static_cast<std::size_t>(i)]; eq >= 0) B(eq) -= f(i);
+}
+
 void AnalysisModel::formResidual(const AssemblyCoefficients& c, Eigen::VectorXd& B) const {
   B = P_;
   // Dynamic forces from the constant global matrices unless a support moves with an imposed
@@ -640,8 +497,7 @@ void AnalysisModel::formResidual(const AssemblyCoefficients& c, Eigen::VectorXd&
     if (!e.isActive()) continue;
     if (global) {
       if (rayleighLeft_[k] == 0) {
-        const auto f = e.resistingForce();
-        for (const VecEntry& v : l.vec) B(v.eq) -= v.coef * f(v.local);
+        subtractForce(l, e.resistingForce(), B);
         continue;
       }
       Eigen::VectorXd& f = l.force;
@@ -664,8 +520,7 @@ void AnalysisModel::formResidual(const AssemblyCoefficients& c, Eigen::VectorXd&
       }
       for (const VecEntry& v : l.vec) B(v.eq) -= v.coef * f(v.local);
     } else {
-      const auto f = e.resistingForce();
-      for (const VecEntry& v : l.vec) B(v.eq) -= v.coef * f(v.local);
+      subtractForce(l, e.resistingForce(), B);
     }
   }
   if (c.dynamic) {

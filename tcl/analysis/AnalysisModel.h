@@ -11,15 +11,11 @@
 
 #include "contact/NodeToSurfaceContact3d.h"
 #include "materials/Status.h"
+#include "tcl/analysis/ConstraintHandler.h"
+#include "tcl/analysis/DofNumberer.h"
 #include "tcl/domain/Domain.h"
 
 namespace dabs::analysis {
-
-/// How constraints turn node dofs into equations (the `constraints` command).
-enum class ConstraintKind { Plain, Transformation, Penalty };
-/// Equation ordering (the `numberer` command). The sparse solvers reorder again (AMD/COLAMD), so
-/// the choice changes only the equation numbers, never the results.
-enum class NumbererKind { Plain, RCM };
 
 /// Which stiffness the tangent uses.
 enum class StiffnessKind { Current, Initial };
@@ -38,10 +34,11 @@ struct AssemblyCoefficients {
   }
 };
 
-/// The equations of a domain: numbers the free dofs, keeps each element's scatter indices into the
-/// sparse matrix's value array (so assembly is an indexed add), writes trial responses to nodes,
-/// and assembles the residual and tangent. Plays the role of OpenSees' AnalysisModel plus its
-/// constraint handler and DOF numberer (OpenSees/OpenSees:SRC/analysis/model/AnalysisModel.cpp).
+/// The equations of a domain: numbers the free dofs (DofNumberer for the node order,
+/// ConstraintHandler for what is an equation), keeps each element's scatter indices into the
+/// sparse matrix's value array (AssemblyPattern; assembly is an indexed add), writes trial
+/// responses to nodes, and assembles the residual and tangent. Plays the role of OpenSees'
+/// AnalysisModel (OpenSees/OpenSees:SRC/analysis/model/AnalysisModel.cpp).
 ///
 /// A node dof is either an equation or prescribed. A prescribed dof's value is a combination of
 /// equations and prescribed "slots" (support values from fix, sp and imposedMotion), which covers
@@ -128,14 +125,8 @@ class AnalysisModel {
   long sleepingPairs() const noexcept { return sleeping_; }
 
  private:
-  struct Term {
-    int index;  // >= 0: equation; < 0: prescribed slot -index-1
-    double coef;
-  };
-  struct Slot {
-    int node = 0, dof = 0;
-    double disp = 0.0, vel = 0.0, accel = 0.0;
-  };
+  using Term = DofTerm;
+  using Slot = SupportSlot;
   struct VecEntry {
     int local;
     int eq;
@@ -154,7 +145,14 @@ class AnalysisModel {
     std::vector<std::pair<int, int>> rowCol;  // (row, column) of each mat entry while building
     domain::RayleighFactors rayleigh;
     bool rayleighOn = false;
-    Eigen::VectorXd u, v, a;                              // gather buffers
+    Eigen::VectorXd u, v, a;  // gather buffers
+    // Per local dof its equation (coefficient 1) or -1 when prescribed; empty when some dof is a
+    // combination (constraints), and then `vec` scatters.
+    std::vector<int> direct;
+    // Whether updates gather velocities and accelerations: a linear element without a damping
+    // tangent has a force that depends on its displacements alone, and the residual needs its
+    // rates only when the elements form their own inertia and damping forces.
+    bool rates = true;
     mutable Eigen::VectorXd force;                        // residual work buffer
     Eigen::MatrixXd work;                                 // tangent work buffer
     contact::NodeToSurfaceContact3d<3>* pair3 = nullptr;  // a contact pair that may sleep
@@ -179,12 +177,6 @@ class AnalysisModel {
     std::vector<VecEntry> vec;
     double alphaM = 0.0;
   };
-  struct PenaltyRow {
-    std::vector<std::pair<int, double>> eqs;  // equation, coefficient
-    int slot = -1;                            // prescribed value g (or -1 for 0)
-    double alpha = 0.0;
-    std::vector<int> valueIndex;  // A_ value index of eqs[i] x eqs[j], row-major
-  };
 
   void numberEquations();
   /// Whether the pair of link l sleeps in the next pattern (sleepWanted_, else its committed
@@ -201,7 +193,9 @@ class AnalysisModel {
   void addElementMatrix(double* values, const ElementLink& l, const Eigen::MatrixXd& m) const;
   /// Adds cK K + cC C + cM M of one element to the matrix values.
   void addElementTangent(double* values, ElementLink& l, const AssemblyCoefficients& c) const;
-  int valueIndex(int row, int col) const;
+  /// B -= the element force f (local dofs) through the element's equations.
+  static void subtractForce(const ElementLink& l, const Eigen::Ref<const Eigen::VectorXd>& f,
+                            Eigen::VectorXd& B);
   double termValue(const std::vector<Term>& terms, const Eigen::VectorXd& x, int which) const;
 
   domain::Domain& domain_;
@@ -213,8 +207,10 @@ class AnalysisModel {
   double time_ = 0.0;
 
   std::vector<std::vector<Term>> dofTerms_;  // per node dof: combination of equations and slots
+  std::vector<int> directEq_;  // per node dof: its equation when it is one (coefficient 1), or -1
   std::vector<Slot> slots_;
   std::vector<int> patternSlots_;  // slot of each pattern sp / imposed motion, in pattern order
+  std::vector<domain::SupportMotion> supportMotion_;  // the patterns' support motion, same order
   std::vector<NodeLink> nodes_;
   std::vector<ElementLink> elements_;
   std::vector<PenaltyRow> penalties_;

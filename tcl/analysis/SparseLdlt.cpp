@@ -2,6 +2,7 @@
 #include "tcl/analysis/SparseLdlt.h"
 
 #include <Eigen/OrderingMethods>
+#include <algorithm>
 #include <cmath>
 
 namespace dabs::analysis {
@@ -61,10 +62,36 @@ void SparseLdlt::analyze(const Eigen::SparseMatrix<double>& A) {
       }
     }
   }
-  lp_.assign(n + 1, 0);
-  for (std::size_t k = 0; k < n; ++k) lp_[k + 1] = lp_[k] + lnz_[k];
-  li_.assign(static_cast<std::size_t>(lp_[n]), 0);
-  lx_.assign(static_cast<std::size_t>(lp_[n]), 0.0);
+  // Supernodes: column j+1 continues j's supernode when it is j's parent in the tree and its
+  // pattern below the diagonal is j's without row j+1.
+  superFirst_.assign(1, 0);
+  for (int j = 1; j < n_; ++j) {
+    const auto uj = static_cast<std::size_t>(j);
+    if (!(parent_[uj - 1] == j && lnz_[uj - 1] == lnz_[uj] + 1)) superFirst_.push_back(j);
+  }
+  if (n_ > 0) superFirst_.push_back(n_);
+  const std::size_t ns = superFirst_.size() - 1;
+  superHeight_.assign(ns, 0);
+  superStart_.assign(ns, 0);
+  colStart_.assign(n, 0);
+  std::size_t size = 0;
+  int maxHeight = 0;
+  factorNonZeros_ = 0;
+  for (std::size_t s = 0; s < ns; ++s) {
+    const int f = superFirst_[s], w = superFirst_[s + 1] - f;
+    const int h = lnz_[static_cast<std::size_t>(f)] + 1;
+    superHeight_[s] = h;
+    superStart_[s] = static_cast<int>(size);
+    for (int k = 0; k < w; ++k) {
+      colStart_[static_cast<std::size_t>(f + k)] = static_cast<int>(size) + k * h + k + 1;
+      factorNonZeros_ += lnz_[static_cast<std::size_t>(f + k)];
+    }
+    size += static_cast<std::size_t>(h) * static_cast<std::size_t>(w);
+    maxHeight = std::max(maxHeight, h);
+  }
+  li_.assign(size, 0);
+  lx_.assign(size, 0.0);  // the unused upper part of each block stays zero
+  gather_ = Eigen::VectorXd::Zero(maxHeight);
   d_ = Eigen::VectorXd::Zero(n_);
   y_.assign(n, 0.0);
   work_ = Eigen::VectorXd::Zero(n_);
@@ -73,7 +100,7 @@ void SparseLdlt::analyze(const Eigen::SparseMatrix<double>& A) {
   // reversed tree paths of ldl_numeric). It depends on the pattern alone, so it is found once here
   // rather than at every factorisation.
   rowStart_.assign(n + 1, 0);
-  rowPattern_.assign(static_cast<std::size_t>(lp_[n]), 0);
+  rowPattern_.assign(static_cast<std::size_t>(factorNonZeros_), 0);
   std::vector<int> stack(n, 0);
   flag_.assign(n, -1);
   int filled = 0;
@@ -117,8 +144,8 @@ Status SparseLdlt::factorize(const Eigen::SparseMatrix<double>& A) {
       const auto ui = static_cast<std::size_t>(rowPattern_[static_cast<std::size_t>(r)]);
       const double yi = y_[ui];
       y_[ui] = 0.0;
-      const int end = lp_[ui] + lnz_[ui];
-      for (int p = lp_[ui]; p < end; ++p)
+      const int end = colStart_[ui] + lnz_[ui];
+      for (int p = colStart_[ui]; p < end; ++p)
         y_[static_cast<std::size_t>(li_[static_cast<std::size_t>(p)])] -=
             lx_[static_cast<std::size_t>(p)] * yi;
       const double lki = yi / d_(static_cast<Eigen::Index>(ui));
@@ -134,19 +161,40 @@ Status SparseLdlt::factorize(const Eigen::SparseMatrix<double>& A) {
 }
 
 void SparseLdlt::solve(const Eigen::VectorXd& b, Eigen::VectorXd& x) {
+  using Column = Eigen::Map<const Eigen::VectorXd>;
+  using Work = Eigen::Map<Eigen::VectorXd>;
   Eigen::VectorXd& z = work_;
   for (int i = 0; i < n_; ++i) z(perm_[static_cast<std::size_t>(i)]) = b(i);
-  for (int j = 0; j < n_; ++j) {  // L z = P b
-    const double zj = z(j);
-    for (int p = lp_[static_cast<std::size_t>(j)]; p < lp_[static_cast<std::size_t>(j) + 1]; ++p)
-      z(li_[static_cast<std::size_t>(p)]) -= lx_[static_cast<std::size_t>(p)] * zj;
+  const std::size_t ns = superFirst_.size() > 0 ? superFirst_.size() - 1 : 0;
+  double* y = gather_.data();  // a supernode's rows: its own columns, then the rows below
+  // L z = P b, supernode by supernode: y holds the supernode's part of z and the updates of the
+  // rows below it; each column is one contiguous update of the rows under its diagonal.
+  for (std::size_t s = 0; s < ns; ++s) {
+    const int f = superFirst_[s], w = superFirst_[s + 1] - f, h = superHeight_[s];
+    const double* block = lx_.data() + superStart_[s];
+    const int* rows = li_.data() + superStart_[s];  // rows[r] of block row r >= w
+    for (int r = 0; r < w; ++r) y[r] = z(f + r);
+    std::fill(y + w, y + h, 0.0);
+    for (int k = 0; k < w; ++k) {
+      const double* col = block + static_cast<std::ptrdiff_t>(k) * h;
+      Work(y + k + 1, h - k - 1).noalias() -= y[k] * Column(col + k + 1, h - k - 1);
+    }
+    for (int r = 0; r < w; ++r) z(f + r) = y[r];
+    for (int r = w; r < h; ++r) z(rows[r]) += y[r];
   }
-  for (int j = 0; j < n_; ++j) z(j) /= d_(j);
-  for (int j = n_ - 1; j >= 0; --j) {  // L^T
-    double zj = z(j);
-    for (int p = lp_[static_cast<std::size_t>(j)]; p < lp_[static_cast<std::size_t>(j) + 1]; ++p)
-      zj -= lx_[static_cast<std::size_t>(p)] * z(li_[static_cast<std::size_t>(p)]);
-    z(j) = zj;
+  z.array() /= d_.array();
+  // L^T z = z, in reverse: each column's entry less its dot product with the rows below.
+  for (std::size_t s = ns; s-- > 0;) {
+    const int f = superFirst_[s], w = superFirst_[s + 1] - f, h = superHeight_[s];
+    const double* block = lx_.data() + superStart_[s];
+    const int* rows = li_.data() + superStart_[s];
+    for (int r = 0; r < w; ++r) y[r] = z(f + r);
+    for (int r = w; r < h; ++r) y[r] = z(rows[r]);
+    for (int k = w - 1; k >= 0; --k) {
+      const double* col = block + static_cast<std::ptrdiff_t>(k) * h;
+      y[k] -= Column(col + k + 1, h - k - 1).dot(Column(y + k + 1, h - k - 1));
+    }
+    for (int r = 0; r < w; ++r) z(f + r) = y[r];
   }
   if (x.size() != n_) x.resize(n_);
   for (int i = 0; i < n_; ++i) x(i) = z(perm_[static_cast<std::size_t>(i)]);

@@ -17,6 +17,15 @@ namespace dabs::analysis {
 /// there, the elimination tree and the column counts of L. factorize() then gathers the values
 /// through that map and factorises with no permutation pass and no allocation, and solve()
 /// allocates nothing once x has its size. No pivoting: stable for definite matrices.
+///
+/// L is stored by supernodes: consecutive columns with the same pattern below the diagonal block
+/// (column j+1 is j's parent and has one entry fewer; Liu, Ng & Peyton 1993, "On finding
+/// supernodes for sparse matrix computations", SIAM J. Matrix Anal. Appl. 14(1)) share one dense
+/// column-major block whose rows are the supernode's own columns and then its common rows below.
+/// The factorisation fills the columns of the blocks as the row algorithm finds them; the solve
+/// gathers a supernode's rows once into a dense work vector and updates it column by column with
+/// contiguous vector operations, so it reads each row index once per supernode instead of once per
+/// entry (a 6-dof node gives at least 6 columns).
 class SparseLdlt {
  public:
   /// Symbolic analysis of `A`'s pattern, which must be structurally symmetric with every
@@ -32,7 +41,11 @@ class SparseLdlt {
   const Eigen::VectorXd& pivots() const noexcept { return d_; }
   int size() const noexcept { return n_; }
   /// Nonzeros of L below the diagonal.
-  int factorNonZeros() const noexcept { return n_ > 0 ? lp_[static_cast<std::size_t>(n_)] : 0; }
+  int factorNonZeros() const noexcept { return factorNonZeros_; }
+  /// Number of supernodes of L.
+  int supernodes() const noexcept {
+    return superFirst_.empty() ? 0 : static_cast<int>(superFirst_.size()) - 1;
+  }
 
  private:
   int n_ = 0;
@@ -40,15 +53,22 @@ class SparseLdlt {
   std::vector<int> valueTo_;  ///< place of A's value k in the permuted upper triangle, or -1
   std::vector<int> cp_, ci_;  ///< permuted upper triangle, compressed columns
   std::vector<double> cx_;
-  std::vector<int> parent_;   ///< elimination tree
-  std::vector<int> lp_, li_;  ///< L, compressed columns (strictly lower part)
+  std::vector<int> parent_;  ///< elimination tree
+  /// L's strictly lower part: column j's row indices and values start at colStart_[j] in li_ and
+  /// lx_ (inside its supernode's block, below the block's diagonal), lnz_[j] of them after a
+  /// factorisation.
+  std::vector<int> colStart_, li_;
   std::vector<double> lx_;
+  int factorNonZeros_ = 0;
+  /// Supernode s holds columns superFirst_[s] .. superFirst_[s+1]-1; its block (height
+  /// superHeight_[s], column-major) starts at superStart_[s] in lx_ and li_.
+  std::vector<int> superFirst_, superHeight_, superStart_;
   Eigen::VectorXd d_;
   std::vector<int> rowStart_, rowPattern_;  ///< pattern of each row of L, in update order
   // Workspace of the symbolic and numeric factorisation and of the solve.
   std::vector<int> lnz_, flag_;
   std::vector<double> y_;
-  Eigen::VectorXd work_;
+  Eigen::VectorXd work_, gather_;  ///< gather_: the tallest supernode's rows
 };
 
 }  // namespace dabs::analysis

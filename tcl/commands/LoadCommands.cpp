@@ -96,16 +96,16 @@ domain::PlainPattern& currentPlain(Runtime& rt, ArgReader& a) {
   const int tag = a.option("-pattern", rt.currentPattern);
   domain::LoadPattern* p = rt.domain.findPattern(tag);
   if (p == nullptr) a.fail("no load pattern to add to; define `pattern Plain` first");
-  if (p->kind() != domain::LoadPattern::Kind::Plain)
-    a.fail("pattern " + std::to_string(tag) + " is not a Plain pattern");
-  return static_cast<domain::PlainPattern&>(*p);
+  domain::PlainPattern* plain = p->asPlain();
+  if (plain == nullptr) a.fail("pattern " + std::to_string(tag) + " is not a Plain pattern");
+  return *plain;
 }
 
 domain::MultipleSupportPattern& currentMultiple(Runtime& rt, ArgReader& a) {
   domain::LoadPattern* p = rt.domain.findPattern(rt.currentPattern);
-  if (p == nullptr || p->kind() != domain::LoadPattern::Kind::MultipleSupport)
-    a.fail("must be used inside `pattern MultipleSupport tag { ... }`");
-  return static_cast<domain::MultipleSupportPattern&>(*p);
+  domain::MultipleSupportPattern* multiple = p != nullptr ? p->asMultipleSupport() : nullptr;
+  if (multiple == nullptr) a.fail("must be used inside `pattern MultipleSupport tag { ... }`");
+  return *multiple;
 }
 
 void loadCmd(Runtime& rt, ArgReader& a) {
@@ -191,7 +191,7 @@ void eleLoadCmd(Runtime& rt, ArgReader& a) {
       a.fail("element " + std::to_string(tag) + " (" + std::string(e->typeName()) +
              ") takes no member loads");
   }
-  for (int tag : tags) p.elementLoads.push_back({tag, load});
+  for (int tag : tags) p.memberLoads.push_back({tag, load});
 }
 
 void spCmd(Runtime& rt, ArgReader& a) {
@@ -290,7 +290,7 @@ void getLoadFactorCmd(Runtime& rt, ArgReader& a) {
   const domain::LoadPattern* p = rt.domain.findPattern(tag);
   if (p == nullptr)
     a.fail(1, "patternTag", "load pattern " + std::to_string(tag) + " does not exist");
-  if (p->kind() == domain::LoadPattern::Kind::MultipleSupport)
+  if (!p->hasFactor())
     a.fail(1, "patternTag",
            "pattern " + std::to_string(tag) +
                " is MultipleSupport, whose ground motions have no single factor");

@@ -9,7 +9,7 @@
 namespace dabs::domain {
 
 Domain::Domain() = default;
-Domain::~Domain() { flushRecorders(); }
+Domain::~Domain() { recorders_.flush(); }
 
 Node& Domain::addNode(int tag, int ndm, int ndf, const Eigen::Vector3d& coords) {
   if (nodes_.count(tag) != 0)
@@ -74,8 +74,7 @@ void Domain::removeElement(int tag) {
   if (elements_.count(tag) == 0)
     throw InputError("element", std::to_string(tag) + " does not exist");
   for (const auto& [ptag, p] : patterns_) {
-    if (p->kind() != LoadPattern::Kind::Plain) continue;
-    for (const auto& l : static_cast<const PlainPattern&>(*p).elementLoads)
+    for (const ElementLoad& l : p->elementLoads())
       if (l.element == tag)
         throw InputError("element", std::to_string(tag) + " is loaded by pattern " +
                                         std::to_string(ptag) + "; remove the pattern first");
@@ -99,16 +98,7 @@ void Domain::removeNode(int tag) {
   // A pattern still loading the node would make every later analysis fail; the user removes the
   // pattern first (OpenSees leaves the dangling load in the pattern).
   for (const auto& [ptag, p] : patterns_) {
-    bool uses = false;
-    if (p->kind() == LoadPattern::Kind::Plain) {
-      const auto& plain = static_cast<const PlainPattern&>(*p);
-      for (const auto& l : plain.loads) uses = uses || l.node == tag;
-      for (const auto& d : plain.prescribed) uses = uses || d.node == tag;
-    } else if (p->kind() == LoadPattern::Kind::MultipleSupport) {
-      for (const auto& m : static_cast<const MultipleSupportPattern&>(*p).imposed)
-        uses = uses || m.node == tag;
-    }
-    if (uses)
+    if (p->usesNode(tag))
       throw InputError("node", std::to_string(tag) + " is loaded by pattern " +
                                    std::to_string(ptag) + "; remove the pattern first");
   }
@@ -204,15 +194,11 @@ LoadPattern* Domain::findPattern(int tag) {
 void Domain::removePattern(int tag) {
   auto it = patterns_.find(tag);
   if (it == patterns_.end()) throw InputError("pattern", std::to_string(tag) + " does not exist");
-  if (it->second->kind() == LoadPattern::Kind::MultipleSupport) {
-    // Imposed motions that took a fix's place give it back.
-    for (const auto& m : static_cast<const MultipleSupportPattern&>(*it->second).imposed) {
-      const bool fixed = std::any_of(fixes_.begin(), fixes_.end(), [&m](const SPConstraint& sp) {
-        return sp.node == m.node && sp.dof == m.dof;
-      });
-      if (m.replacedFix && !fixed && nodes_.count(m.node) != 0)
-        fixes_.push_back(SPConstraint{m.node, m.dof});
-    }
+  for (const SPConstraint& m : it->second->replacedFixes()) {  // supports give a fix back
+    const bool fixed = std::any_of(fixes_.begin(), fixes_.end(), [&m](const SPConstraint& sp) {
+      return sp.node == m.node && sp.dof == m.dof;
+    });
+    if (!fixed && nodes_.count(m.node) != 0) fixes_.push_back(m);
   }
   patterns_.erase(it);
   touch();
@@ -247,9 +233,19 @@ double Domain::nodeAlphaM(int nodeTag) const {
   return it == nodeAlphaM_.end() ? 0.0 : it->second;
 }
 
+void Domain::refreshLists() {
+  if (listVersion_ == modelVersion_) return;
+  nodeList_.clear();
+  for (auto& [tag, n] : nodes_) nodeList_.push_back(&n);
+  elementList_.clear();
+  for (auto& [tag, e] : elements_) elementList_.push_back(e.get());
+  listVersion_ = modelVersion_;
+}
+
 void Domain::commit() {
-  for (auto& [tag, n] : nodes_) n.commitState();
-  for (auto& [tag, e] : elements_) e->commitState();
+  refreshLists();
+  for (Node* n : nodeList_) n->commitState();
+  for (elements::Element* e : elementList_) e->commitState();
   committedTime_ = time_;
   record();
 }
@@ -266,17 +262,13 @@ void Domain::setCommittedTime(double t) {
 
 void Domain::applyElementLoads(double t) {
   bool any = false;
-  for (const auto& [ptag, p] : patterns_)
-    if (p->kind() == LoadPattern::Kind::Plain)
-      any = any || !static_cast<const PlainPattern&>(*p).elementLoads.empty();
+  for (const auto& [ptag, p] : patterns_) any = any || !p->elementLoads().empty();
   if (!any && !elementLoadsApplied_) return;
   for (auto& [tag, e] : elements_) e->zeroLoad();
   for (const auto& [ptag, p] : patterns_) {
-    if (p->kind() != LoadPattern::Kind::Plain) continue;
-    const auto& plain = static_cast<const PlainPattern&>(*p);
-    if (plain.elementLoads.empty()) continue;
-    const double f = plain.factor(t);
-    for (const auto& l : plain.elementLoads) {
+    if (p->elementLoads().empty()) continue;
+    const double f = p->factor(t);
+    for (const ElementLoad& l : p->elementLoads()) {
       // The eleLoad command checked the element and the load; removeElement keeps them.
       elements::Element* e = findElement(l.element);
       if (e != nullptr) e->addLoad(l.load, f);
@@ -287,8 +279,9 @@ void Domain::applyElementLoads(double t) {
 
 void Domain::revertToLastCommit() {
   applyElementLoads(committedTime_);
-  for (auto& [tag, n] : nodes_) n.revertToLastCommit();
-  for (auto& [tag, e] : elements_) e->revertToLastCommit();
+  refreshLists();
+  for (Node* n : nodeList_) n->revertToLastCommit();
+  for (elements::Element* e : elementList_) e->revertToLastCommit();
   time_ = committedTime_;
 }
 
@@ -301,21 +294,7 @@ void Domain::revertToStart() {
 
 int Domain::addRecorder(std::unique_ptr<Recorder> recorder) {
   recorder->initialize(*this);
-  const int tag = nextRecorderTag_++;
-  recorders_[tag] = std::move(recorder);
-  return tag;
-}
-
-void Domain::removeRecorder(int tag) {
-  auto it = recorders_.find(tag);
-  if (it == recorders_.end()) throw InputError("recorder", std::to_string(tag) + " does not exist");
-  it->second->flush();
-  recorders_.erase(it);
-}
-
-void Domain::removeAllRecorders() {
-  flushRecorders();
-  recorders_.clear();
+  return recorders_.add(std::move(recorder));
 }
 
 long Domain::materialUpdates() const {
@@ -324,39 +303,17 @@ long Domain::materialUpdates() const {
   return n;
 }
 
-void Domain::flushRecorders() {
-  for (auto& [tag, r] : recorders_) r->flush();
-}
-
 void Domain::record() {
-  bool reactionsDone = false;
-  for (auto& [tag, r] : recorders_) {
-    if (r->needsReactions() && !reactionsDone) {
-      calculateNodalReactions(false);
-      reactionsDone = true;
-    }
-    try {
-      r->record(*this);
-    } catch (const InputError& e) {
-      if (!recorderError_) recorderError_ = "recorder " + std::to_string(tag) + ": " + e.what();
-    }
-  }
-}
-
-std::optional<std::string> Domain::takeRecorderError() {
-  std::optional<std::string> error;
-  error.swap(recorderError_);
-  return error;
+  recorders_.record(*this, [this] { calculateNodalReactions(false); });
 }
 
 Eigen::VectorXd Domain::nodalLoad(int nodeTag) const {
   const Node& n = node(nodeTag);
   Eigen::VectorXd p = Eigen::VectorXd::Zero(n.ndf());
   for (const auto& [tag, pat] : patterns_) {
-    if (pat->kind() != LoadPattern::Kind::Plain) continue;
-    const auto& plain = static_cast<const PlainPattern&>(*pat);
-    const double f = plain.factor(time_);
-    for (const auto& load : plain.loads)
+    if (pat->nodalLoads().empty()) continue;
+    const double f = pat->factor(time_);
+    for (const NodalLoad& load : pat->nodalLoads())
       if (load.node == nodeTag) p += f * load.values;
   }
   return p;
@@ -417,8 +374,7 @@ void Domain::calculateNodalReactions(bool includeInertia) {
 }
 
 void Domain::clear() {
-  removeAllRecorders();
-  nextRecorderTag_ = 0;
+  recorders_.removeAll(true);
   elements_.clear();
   nodes_.clear();
   fixes_.clear();

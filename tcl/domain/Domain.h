@@ -14,6 +14,7 @@
 #include "tcl/domain/LoadPattern.h"
 #include "tcl/domain/Node.h"
 #include "tcl/domain/Recorder.h"
+#include "tcl/domain/RecorderSet.h"
 
 namespace dabs::domain {
 
@@ -134,14 +135,14 @@ class Domain {
   // --- recorders ------------------------------------------------------------------------
   /// Adds a recorder and returns its tag (0, 1, 2, ... as OpenSees does).
   int addRecorder(std::unique_ptr<Recorder> recorder);
-  void removeRecorder(int tag);
-  void removeAllRecorders();
-  void flushRecorders();
+  void removeRecorder(int tag) { recorders_.remove(tag); }
+  void removeAllRecorders() { recorders_.removeAll(false); }
+  void flushRecorders() { recorders_.flush(); }
   /// Records the current state with every recorder. A recorder that cannot write (a full disk)
   /// does not stop the others; its error is kept for takeRecorderError().
   void record();
   /// The first recorder write error since the last call, if any (the step loop stops on it).
-  std::optional<std::string> takeRecorderError();
+  std::optional<std::string> takeRecorderError() { return recorders_.takeError(); }
 
   /// Computes nodal reactions from element forces and applied loads; with `includeInertia`,
   /// inertia and damping forces too (`reactions -dynamic`).
@@ -163,12 +164,16 @@ class Domain {
   std::map<int, double> nodeAlphaM_;
   /// An element's slice of a nodal vector (disp, vel, accel), node by node.
   Eigen::VectorXd gatherElement(const elements::Element& e, Eigen::VectorXd Node::*field) const;
-  std::map<int, std::unique_ptr<Recorder>> recorders_;
-  int nextRecorderTag_ = 0;
-  std::optional<std::string> recorderError_;
+  RecorderSet recorders_;
   double time_ = 0.0;
   double committedTime_ = 0.0;
   long modelVersion_ = 0;
+  /// Nodes and elements in tag order as flat lists for the loops of every step (commit, revert),
+  /// which would otherwise take a tree step per map entry; rebuilt when the model version changes.
+  void refreshLists();
+  std::vector<Node*> nodeList_;
+  std::vector<elements::Element*> elementList_;
+  long listVersion_ = -1;
   /// Member loads at time t on the elements (see setTime).
   void applyElementLoads(double t);
   bool elementLoadsApplied_ = false;  ///< some element holds member loads

@@ -17,6 +17,48 @@ void LoadPattern::setConstant(double t) {
   constant_ = true;
 }
 
+bool LoadPattern::usesNode(int tag) const {
+  for (const NodalLoad& l : nodalLoads())
+    if (l.node == tag) return true;
+  for (const SupportDof& s : supportDofs())
+    if (s.node == tag) return true;
+  return false;
+}
+
+std::vector<SupportDof> PlainPattern::supportDofs() const {
+  std::vector<SupportDof> out;
+  for (const PrescribedDisp& p : prescribed) out.push_back({p.node, p.dof, "sp", false});
+  return out;
+}
+
+void PlainPattern::supportMotion(double t, std::span<SupportMotion> out) const {
+  const double f = factor(t);
+  for (std::size_t k = 0; k < prescribed.size(); ++k) {
+    const PrescribedDisp& p = prescribed[k];
+    out[k] = SupportMotion{p.constant ? p.reference : p.reference * f, 0.0, 0.0};
+  }
+}
+
+std::vector<SupportDof> MultipleSupportPattern::supportDofs() const {
+  std::vector<SupportDof> out;
+  for (const ImposedMotion& m : imposed) out.push_back({m.node, m.dof, "imposedMotion", true});
+  return out;
+}
+
+void MultipleSupportPattern::supportMotion(double t, std::span<SupportMotion> out) const {
+  for (std::size_t k = 0; k < imposed.size(); ++k) {
+    const GroundMotion& gm = *groundMotions.at(imposed[k].groundMotion);
+    out[k] = SupportMotion{gm.disp(t), gm.vel(t), gm.accel(t)};
+  }
+}
+
+std::vector<SPConstraint> MultipleSupportPattern::replacedFixes() const {
+  std::vector<SPConstraint> out;
+  for (const ImposedMotion& m : imposed)
+    if (m.replacedFix) out.push_back({m.node, m.dof});
+  return out;
+}
+
 GroundMotion::GroundMotion(std::shared_ptr<const TimeSeries> accel,
                            std::shared_ptr<const TimeSeries> vel,
                            std::shared_ptr<const TimeSeries> disp, double fact)

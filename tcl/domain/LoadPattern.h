@@ -4,36 +4,96 @@
 #include <Eigen/Core>
 #include <map>
 #include <memory>
+#include <optional>
+#include <span>
 #include <vector>
 
 #include "elements/BeamLoad.h"
+#include "tcl/domain/Constraints.h"
 #include "tcl/domain/TimeSeries.h"
 
 namespace dabs::domain {
 
+class PlainPattern;
+class MultipleSupportPattern;
+
+/// Reference nodal load (one value per node dof).
+struct NodalLoad {
+  int node = 0;
+  Eigen::VectorXd values;
+};
+/// Member load on a beam element in its local axes (eleLoad -type -beamUniform|-beamPoint).
+struct ElementLoad {
+  int element = 0;
+  elements::BeamLoad load;
+};
+/// A node dof whose motion a pattern prescribes.
+struct SupportDof {
+  int node = 0;
+  int dof = 0;                 ///< 0-based
+  const char* source = "";     ///< the command that made it, for error messages
+  bool imposedMotion = false;  ///< moves with an imposed velocity (MultipleSupport)
+};
+/// Prescribed displacement, velocity and acceleration of a support dof.
+struct SupportMotion {
+  double disp = 0.0;
+  double vel = 0.0;
+  double accel = 0.0;
+};
+/// Uniform ground acceleration a_g in one direction (0-based dof), applied as -M r a_g.
+struct GroundAcceleration {
+  int dof = 0;
+  double value = 0.0;
+};
+
 /// A load pattern: a time series scaling loads or support motions. After `loadConst` a pattern
-/// keeps the factor it had then, whatever the time (OpenSees' setLoadConstant).
+/// keeps the factor it had then, whatever the time (OpenSees' setLoadConstant). What a pattern
+/// applies (nodal and member loads, support motions, a ground acceleration) it tells through the
+/// virtual methods below, which are empty for the patterns that have none of it, so the domain
+/// and the analysis never ask which kind of pattern they hold.
 class LoadPattern {
  public:
-  enum class Kind { Plain, UniformExcitation, MultipleSupport };
-
-  LoadPattern(int tag, Kind kind, std::shared_ptr<const TimeSeries> series, double fact)
-      : tag_(tag), kind_(kind), series_(std::move(series)), fact_(fact) {}
+  LoadPattern(int tag, std::shared_ptr<const TimeSeries> series, double fact)
+      : tag_(tag), series_(std::move(series)), fact_(fact) {}
   virtual ~LoadPattern() = default;
 
   int tag() const noexcept { return tag_; }
-  Kind kind() const noexcept { return kind_; }
   /// Load factor at time t: fact * series(t), or the frozen factor after loadConst.
   double factor(double t) const;
+  /// False when the pattern has no single load factor (MultipleSupport: one per ground motion).
+  virtual bool hasFactor() const { return true; }
   /// Freezes the factor at its value at time t.
   void setConstant(double t);
   bool isConstant() const noexcept { return constant_; }
   /// The pattern's time series (may be null for MultipleSupport).
   const TimeSeries* series() const noexcept { return series_.get(); }
 
+  /// Reference nodal loads, each scaled by factor(t).
+  virtual std::span<const NodalLoad> nodalLoads() const { return {}; }
+  /// Member loads, each scaled by factor(t).
+  virtual std::span<const ElementLoad> elementLoads() const { return {}; }
+  /// Number of support dofs whose motion the pattern prescribes.
+  virtual std::size_t supportCount() const { return 0; }
+  /// Those support dofs, in the order of supportMotion.
+  virtual std::vector<SupportDof> supportDofs() const { return {}; }
+  /// The supports' motion at time t; `out` has supportCount() entries.
+  virtual void supportMotion(double /*t*/, std::span<SupportMotion> /*out*/) const {}
+  /// The uniform ground acceleration at time t, when the pattern is one.
+  virtual std::optional<GroundAcceleration> groundAcceleration(double /*t*/) const {
+    return std::nullopt;
+  }
+  /// Fixes whose place the pattern's supports took; removing the pattern fixes them again.
+  virtual std::vector<SPConstraint> replacedFixes() const { return {}; }
+  /// True when the pattern uses node `tag` (a load or a support).
+  bool usesNode(int tag) const;
+
+  /// This pattern as one that takes nodal loads, member loads and sp (load, eleLoad, sp), or null.
+  virtual PlainPattern* asPlain() noexcept { return nullptr; }
+  /// This pattern as one that takes ground motions (groundMotion, imposedMotion), or null.
+  virtual MultipleSupportPattern* asMultipleSupport() noexcept { return nullptr; }
+
  private:
   int tag_;
-  Kind kind_;
   std::shared_ptr<const TimeSeries> series_;
   double fact_;
   bool constant_ = false;
@@ -43,11 +103,8 @@ class LoadPattern {
 /// `pattern Plain`: nodal loads, member loads and prescribed displacements scaled by the series.
 class PlainPattern : public LoadPattern {
  public:
-  /// Reference nodal load (one value per node dof).
-  struct NodalLoad {
-    int node = 0;
-    Eigen::VectorXd values;
-  };
+  using NodalLoad = domain::NodalLoad;
+  using ElementLoad = domain::ElementLoad;
   /// Prescribed displacement: dof (0-based) of node equals reference value times the factor.
   struct PrescribedDisp {
     int node = 0;
@@ -55,19 +112,20 @@ class PlainPattern : public LoadPattern {
     double reference = 0.0;
     bool constant = false;  ///< `sp -const`: not scaled by the series
   };
-  /// Member load on a beam element in its local axes (eleLoad -type -beamUniform|-beamPoint),
-  /// scaled like the nodal loads.
-  struct ElementLoad {
-    int element = 0;
-    elements::BeamLoad load;
-  };
 
   PlainPattern(int tag, std::shared_ptr<const TimeSeries> series, double fact)
-      : LoadPattern(tag, Kind::Plain, std::move(series), fact) {}
+      : LoadPattern(tag, std::move(series), fact) {}
+
+  std::span<const NodalLoad> nodalLoads() const override { return loads; }
+  std::span<const ElementLoad> elementLoads() const override { return memberLoads; }
+  std::size_t supportCount() const override { return prescribed.size(); }
+  std::vector<SupportDof> supportDofs() const override;
+  void supportMotion(double t, std::span<SupportMotion> out) const override;
+  PlainPattern* asPlain() noexcept override { return this; }
 
   std::vector<NodalLoad> loads;
   std::vector<PrescribedDisp> prescribed;
-  std::vector<ElementLoad> elementLoads;
+  std::vector<ElementLoad> memberLoads;  ///< eleLoad, scaled like the nodal loads
 };
 
 /// `pattern UniformExcitation`: the supports all move with one ground acceleration in one
@@ -76,11 +134,14 @@ class UniformExcitation : public LoadPattern {
  public:
   UniformExcitation(int tag, int dof, std::shared_ptr<const TimeSeries> accel, double fact,
                     double vel0)
-      : LoadPattern(tag, Kind::UniformExcitation, std::move(accel), fact), dof_(dof), vel0_(vel0) {}
+      : LoadPattern(tag, std::move(accel), fact), dof_(dof), vel0_(vel0) {}
   /// Direction of shaking as a 0-based dof index.
   int dof() const noexcept { return dof_; }
   /// Initial relative velocity given to every node with mass in that direction (-vel0).
   double vel0() const noexcept { return vel0_; }
+  std::optional<GroundAcceleration> groundAcceleration(double t) const override {
+    return GroundAcceleration{dof_, factor(t)};
+  }
 
  private:
   int dof_;
@@ -121,8 +182,14 @@ class MultipleSupportPattern : public LoadPattern {
     /// dof again.
     bool replacedFix = false;
   };
-  explicit MultipleSupportPattern(int tag)
-      : LoadPattern(tag, Kind::MultipleSupport, nullptr, 1.0) {}
+  explicit MultipleSupportPattern(int tag) : LoadPattern(tag, nullptr, 1.0) {}
+  bool hasFactor() const override { return false; }
+  std::size_t supportCount() const override { return imposed.size(); }
+  std::vector<SupportDof> supportDofs() const override;
+  void supportMotion(double t, std::span<SupportMotion> out) const override;
+  std::vector<SPConstraint> replacedFixes() const override;
+  MultipleSupportPattern* asMultipleSupport() noexcept override { return this; }
+
   std::map<int, std::unique_ptr<GroundMotion>> groundMotions;
   std::vector<ImposedMotion> imposed;
 };

@@ -137,5 +137,54 @@ TEST(SparseLdltTest, DefiniteOnlySolverRefusesIndefiniteMatrix) {
   EXPECT_EQ(definite->factorize(A), Status::Singular);
 }
 
+TEST(SparseLdltTest, DenseMatrixIsOneSupernodeWithTheFullTriangle) {
+  // A full n x n matrix: every column of L below the diagonal is full, each column's pattern is
+  // the next one's plus that column, so the whole factor is one supernode of n(n-1)/2 entries.
+  constexpr int n = 9;
+  Eigen::MatrixXd r = Eigen::MatrixXd::Random(n, n);
+  const Eigen::MatrixXd dense = r * r.transpose() + n * Eigen::MatrixXd::Identity(n, n);
+  const Eigen::SparseMatrix<double> A = dense.sparseView(0.0, 0.0);
+  SparseLdlt ldlt;
+  ldlt.analyze(A);
+  ASSERT_TRUE(ok(ldlt.factorize(A)));
+  EXPECT_EQ(ldlt.supernodes(), 1);
+  EXPECT_EQ(ldlt.factorNonZeros(), n * (n - 1) / 2);
+  const Eigen::VectorXd b = Eigen::VectorXd::LinSpaced(n, 1.0, 3.0);
+  Eigen::VectorXd x;
+  ldlt.solve(b, x);
+  EXPECT_LT(relativeResidual(A, x, b), kSolveTol);
+}
+
+TEST(SparseLdltTest, DiagonalMatrixIsOneSupernodePerColumn) {
+  // No coupling: L is the identity, every column its own supernode (no parent in the tree).
+  constexpr int n = 7;
+  Eigen::SparseMatrix<double> A(n, n);
+  for (int i = 0; i < n; ++i) A.insert(i, i) = 1.0 + i;
+  A.makeCompressed();
+  SparseLdlt ldlt;
+  ldlt.analyze(A);
+  ASSERT_TRUE(ok(ldlt.factorize(A)));
+  EXPECT_EQ(ldlt.supernodes(), n);
+  EXPECT_EQ(ldlt.factorNonZeros(), 0);
+  Eigen::VectorXd x;
+  ldlt.solve(Eigen::VectorXd::Ones(n), x);
+  for (int i = 0; i < n; ++i) EXPECT_DOUBLE_EQ(x(i), 1.0 / (1.0 + i));
+}
+
+TEST(SparseLdltTest, NodeBlocksFormSupernodesOfAtLeastTheNodesDofs) {
+  // A chain of 3-dof nodes with full 6 x 6 couplings: a node's 3 dofs have the same pattern, so
+  // the factor has at most one supernode per node, and the solve agrees with a dense one.
+  const Eigen::SparseMatrix<double> A = chain(50, 0.2, 7);
+  SparseLdlt ldlt;
+  ldlt.analyze(A);
+  ASSERT_TRUE(ok(ldlt.factorize(A)));
+  EXPECT_LE(ldlt.supernodes(), 50);
+  const Eigen::VectorXd b = Eigen::VectorXd::LinSpaced(A.rows(), 2.0, -1.0);
+  Eigen::VectorXd x;
+  ldlt.solve(b, x);
+  const Eigen::VectorXd expected = Eigen::MatrixXd(A).llt().solve(b);
+  EXPECT_LT((x - expected).norm(), kSolveTol * expected.norm());
+}
+
 }  // namespace
 }  // namespace dabs::analysis
