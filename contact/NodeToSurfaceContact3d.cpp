@@ -1,4 +1,6 @@
 // SPDX-License-Identifier: MIT
+// Just over 400 lines: the update and its tangents, the far test that lets a pair sleep and the
+// responses all read the same private state, and each part is short.
 #include "contact/NodeToSurfaceContact3d.h"
 
 #include <Eigen/Dense>

@@ -1,4 +1,6 @@
 // SPDX-License-Identifier: MIT
+// Over 400 lines: one test file for the contact element, each test a separate case of its
+// behaviour (closed forms, FD tangents in every state, sleeping pairs, small impacts).
 // Element-level checks of the node-to-surface contact (the hard cases that need no driver):
 // closed forms for open/penetration/stick/slide, return-map memory and revert, FD tangents in
 // every state, corners, edges, sliding off, nodal equilibrium, search distance, and small

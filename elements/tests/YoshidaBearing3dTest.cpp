@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: MIT
+// Over 400 lines: one test file for the bearing element, each test a separate check.
 // Checks of the yoshidaBearing element: geometry, equilibrium, rigid-body motion,
 // FD tangents, damage by shear strain, failure handling, mass, and Newton convergence on a
 // bearing-mass oscillator under the Takatori record.

@@ -1,4 +1,6 @@
 // SPDX-License-Identifier: MIT
+// Over 400 lines: one test file for the viewer recorder, each test a separate part of the file
+// it writes.
 // The Viewer recorder's page holds the recorded values: the data block is parsed back here with a
 // JSON reader and a base64/varint decoder written for this test (independent of the writer) and
 // compared with the Node recorder's file and with closed forms.

@@ -1,0 +1,122 @@
+// SPDX-License-Identifier: MIT
+// Contact stepping on one node-to-surface pair whose committed gap the test sets: no prediction
+// before a step is known, the contact step when a pair is closed or about to close, the cut at
+// the predicted first contact (t_close = g h_last / (g_last - g), times the overshoot), and the
+// parameter checks. Expected step lengths are worked out by hand from those rules.
+#include "tcl/analysis/ContactStepping.h"
+
+#include <gtest/gtest.h>
+
+#include <memory>
+
+#include "contact/NodeToSurfaceContact3d.h"
+#include "materials/InputError.h"
+#include "tcl/domain/Domain.h"
+
+namespace dabs::analysis {
+namespace {
+
+constexpr double kZ0 = 0.1;  // height of the contactor above the target face at rest
+
+/// A target quad in z = 0 (nodes 1-4) and a contactor (node 10) kZ0 above it; the pair's
+/// committed gap is set by moving the contactor down and committing.
+class OnePair {
+ public:
+  OnePair() {
+    domain_.addNode(1, 3, 3, Eigen::Vector3d(0, 0, 0));
+    domain_.addNode(2, 3, 3, Eigen::Vector3d(2, 0, 0));
+    domain_.addNode(3, 3, 3, Eigen::Vector3d(2, 2, 0));
+    domain_.addNode(4, 3, 3, Eigen::Vector3d(0, 2, 0));
+    domain_.addNode(10, 3, 3, Eigen::Vector3d(0.5, 0.8, kZ0));
+    contact::NodeToSurfaceParams p;
+    p.K = 1e5;
+    p.validate();
+    auto pair = std::make_unique<contact::NodeToSurfaceContact3d<3>>(
+        1, 10, std::array<int, 4>{1, 2, 3, 4}, p);
+    pair_ = pair.get();
+    domain_.addElement(std::move(pair));
+  }
+  const domain::Domain& domain() const { return domain_; }
+  /// Commits the pair with the contactor at gap g (negative: penetration).
+  void commitGap(double g) {
+    Eigen::VectorXd u = Eigen::VectorXd::Zero(15), zero = Eigen::VectorXd::Zero(15);
+    u(2) = g - kZ0;
+    ASSERT_TRUE(ok(pair_->update(elements::Kinematics{u, zero, zero, 0.0, 0.0})));
+    pair_->commitState();
+    ASSERT_NEAR(pair_->committedState().gap, g, 1e-15);
+  }
+
+ private:
+  domain::Domain domain_;
+  contact::NodeToSurfaceContact3d<3>* pair_ = nullptr;
+};
+
+ContactSteppingParams params(double maxStep) {
+  ContactSteppingParams p;
+  p.maxStep = maxStep;
+  p.lookAhead = 2.0;
+  p.overshoot = 1.2;
+  p.validate();
+  return p;
+}
+
+TEST(ContactSteppingTest, OpenPairWithoutHistoryTakesTheOutputStep) {
+  OnePair model;
+  ContactStepping stepping(params(0.0005));
+  stepping.attach(model.domain());
+  EXPECT_EQ(stepping.pairs(), 1u);
+  EXPECT_DOUBLE_EQ(stepping.nextStep(0.01, 0.01), 0.01);
+  EXPECT_EQ(stepping.contactSteps(), 0);
+}
+
+TEST(ContactSteppingTest, ClosingPairWithinTheLookAheadTakesContactSteps) {
+  OnePair model;
+  ContactStepping stepping(params(0.0005));
+  stepping.attach(model.domain());
+  ASSERT_DOUBLE_EQ(stepping.nextStep(0.01, 0.01), 0.01);
+  // The gap shrank from 0.1 to 0.06 over 0.01 s: contact predicted in 0.06 * 0.01 / 0.04 =
+  // 0.015 s, within lookAhead x remaining = 0.02 s, and after the step's end (no cut): maxStep.
+  model.commitGap(0.06);
+  EXPECT_DOUBLE_EQ(stepping.nextStep(0.01, 0.01), 0.0005);
+  EXPECT_EQ(stepping.contactSteps(), 1);
+  // A gap that stopped shrinking predicts nothing; open: the rest of the output step.
+  EXPECT_DOUBLE_EQ(stepping.nextStep(0.0095, 0.01), 0.0095);
+}
+
+TEST(ContactSteppingTest, StepIsCutAtThePredictedContactTimesTheOvershoot) {
+  OnePair model;
+  ContactStepping stepping(params(0.1));  // a long maxStep, so the cut decides
+  stepping.attach(model.domain());
+  ASSERT_DOUBLE_EQ(stepping.nextStep(0.01, 0.01), 0.01);
+  model.commitGap(0.06);
+  // t_close = 0.015 s < remaining 0.05 s: the step ends at 1.2 x 0.015 = 0.018 s.
+  EXPECT_NEAR(stepping.nextStep(0.05, 0.05), 0.018, 1e-15);
+}
+
+TEST(ContactSteppingTest, ClosedPairTakesTheContactStepAndResetForgetsTheHistory) {
+  OnePair model;
+  ContactStepping stepping(params(0.0005));
+  stepping.attach(model.domain());
+  model.commitGap(-0.001);
+  EXPECT_DOUBLE_EQ(stepping.nextStep(0.01, 0.01), 0.0005);
+  model.commitGap(0.1);
+  stepping.reset();
+  model.commitGap(0.06);  // closing, but with no step remembered there is no prediction
+  EXPECT_DOUBLE_EQ(stepping.nextStep(0.01, 0.01), 0.01);
+}
+
+TEST(ContactSteppingTest, ParametersAreChecked) {
+  ContactSteppingParams p;
+  p.maxStep = 0.0;
+  EXPECT_THROW(p.validate(), InputError);
+  p = ContactSteppingParams();
+  p.lookAhead = -1.0;
+  EXPECT_THROW(p.validate(), InputError);
+  p = ContactSteppingParams();
+  p.overshoot = 0.9;
+  EXPECT_THROW(p.validate(), InputError);
+  EXPECT_NO_THROW(ContactSteppingParams().validate());
+}
+
+}  // namespace
+}  // namespace dabs::analysis
