@@ -32,7 +32,7 @@ void CorotationalTransf<2>::update(const Global& u) {
 
 CorotationalTransf<2>::GlobalMatrix CorotationalTransf<2>::globalStiffness(const BasicMatrix& kb,
                                                                            const Basic& q) const {
-  GlobalMatrix k = compat_.transpose() * kb * compat_;
+  GlobalMatrix k = congruence(compat_, kb);
   k += q(0) / lengthN_ * (z_ * z_.transpose());
   k += (q(1) + q(2)) / (lengthN_ * lengthN_) * (r_ * z_.transpose() + z_ * r_.transpose());
   return k;

@@ -141,7 +141,7 @@ void CorotationalTransf<3>::update(const Global& u) {
 
 CorotationalTransf<3>::GlobalMatrix CorotationalTransf<3>::globalStiffness(const BasicMatrix& kb,
                                                                            const Basic& q) const {
-  GlobalMatrix k = compat_.transpose() * kb * compat_;
+  GlobalMatrix k = congruence(compat_, kb);
   for (int i = 0; i < 6; ++i) k += q(i) * hessian_[i];
   return k;
 }

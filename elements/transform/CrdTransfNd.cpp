@@ -77,13 +77,13 @@ typename CrdTransfNd<Ndm>::Global CrdTransfNd<Ndm>::globalForce(const Basic& q) 
 template <int Ndm>
 typename CrdTransfNd<Ndm>::GlobalMatrix CrdTransfNd<Ndm>::globalStiffness(const BasicMatrix& kb,
                                                                           const Basic&) const {
-  return compat_.transpose() * kb * compat_;
+  return congruence(compat_, kb);
 }
 
 template <int Ndm>
 typename CrdTransfNd<Ndm>::GlobalMatrix CrdTransfNd<Ndm>::initialGlobalStiffness(
     const BasicMatrix& kb) const {
-  return compat0_.transpose() * kb * compat0_;
+  return congruence(compat0_, kb);
 }
 
 template <int Ndm>

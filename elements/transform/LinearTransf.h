@@ -21,6 +21,14 @@ class LinearTransf final : public CrdTransfNd<Ndm> {
   bool isLinear() const override { return true; }
   bool hasConstantCompatibility() const override { return true; }
   void update(const typename Base::Global& u) override { this->v_ = this->compat0_ * u; }
+  // B = B0 at every geometry: read the one matrix that update() reads too.
+  typename Base::Global globalForce(const typename Base::Basic& q) const override {
+    return this->compat0_.transpose() * q;
+  }
+  typename Base::GlobalMatrix globalStiffness(const typename Base::BasicMatrix& kb,
+                                              const typename Base::Basic& /*q*/) const override {
+    return Base::congruence(this->compat0_, kb);
+  }
 };
 
 using LinearTransf2d = LinearTransf<2>;

@@ -28,7 +28,7 @@ typename PDeltaTransf<Ndm>::Global PDeltaTransf<Ndm>::globalForce(const Basic& q
 template <int Ndm>
 typename PDeltaTransf<Ndm>::GlobalMatrix PDeltaTransf<Ndm>::globalStiffness(const BasicMatrix& kb,
                                                                             const Basic& q) const {
-  GlobalMatrix k = this->compat0_.transpose() * kb * this->compat0_;
+  GlobalMatrix k = Base::congruence(this->compat0_, kb);
   addGeometricStiffness(k, q);
   return k;
 }
