@@ -41,12 +41,4 @@ typename FrameTraits<Ndm>::GlobalMatrix consistentMass(double mass, double lengt
   return ml;
 }
 
-/// The planar and spatial instantiations under the names the elements use.
-inline Eigen::Matrix<double, 6, 6> consistentMass2d(double mass, double length) {
-  return consistentMass<2>(mass, length);
-}
-inline Eigen::Matrix<double, 12, 12> consistentMass3d(double mass, double length, double polar) {
-  return consistentMass<3>(mass, length, polar);
-}
-
 }  // namespace dabs::elements

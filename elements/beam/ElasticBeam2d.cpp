@@ -35,7 +35,7 @@ void ElasticBeam2d::initialize(const NodalCoordinates& x) {
   if (mass > 0.0 && !params_.consistentMass) {
     for (int d : {0, 1, 3, 4}) m_(d, d) = 0.5 * mass;
   } else if (mass > 0.0) {
-    m_ = transf_->globalFromLocal(consistentMass2d(mass, length));
+    m_ = transf_->globalFromLocal(consistentMass<2>(mass, length));
   }
   resetState();
 }

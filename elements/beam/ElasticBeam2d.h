@@ -24,7 +24,7 @@ struct ElasticBeam2dParams {
 /// undeformed length L, mapped by any 2D transformation (Linear, PDelta, Corotational).
 /// Mass: lumped m L/2 on each node's translations (no rotational mass), or with -cMass the cubic
 /// consistent mass (Przemieniecki 1968, Theory of Matrix Structural Analysis, eq. 11.23).
-class ElasticBeam2d final : public ElasticBeamColumn<CrdTransf2d, 3> {
+class ElasticBeam2d final : public ElasticBeamColumn<2> {
  public:
   using Params = ElasticBeam2dParams;
   ElasticBeam2d(int tag, int nodeI, int nodeJ, const Params& params,

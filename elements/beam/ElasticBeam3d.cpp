@@ -41,7 +41,7 @@ void ElasticBeam3d::initialize(const NodalCoordinates& x) {
   if (mass > 0.0 && !params_.consistentMass) {
     for (int d : {0, 1, 2, 6, 7, 8}) m_(d, d) = 0.5 * mass;
   } else if (mass > 0.0) {
-    m_ = transf_->globalFromLocal(consistentMass3d(mass, length, params_.torsion / params_.area));
+    m_ = transf_->globalFromLocal(consistentMass<3>(mass, length, params_.torsion / params_.area));
   }
   resetState();
 }

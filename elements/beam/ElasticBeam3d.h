@@ -27,7 +27,7 @@ struct ElasticBeam3dParams {
 /// with the undeformed length L, mapped by any 3D transformation. Mass: lumped m L/2 on each
 /// node's translations (no rotational mass), or with -cMass the cubic consistent mass plus a
 /// linear torsional (polar) mass with rho J/A per length, as OpenSees ElasticBeam3d.
-class ElasticBeam3d final : public ElasticBeamColumn<CrdTransf3d, 6> {
+class ElasticBeam3d final : public ElasticBeamColumn<3> {
  public:
   using Params = ElasticBeam3dParams;
   ElasticBeam3d(int tag, int nodeI, int nodeJ, const Params& params,

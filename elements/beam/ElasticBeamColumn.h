@@ -9,18 +9,23 @@
 
 #include "elements/FixedSizeElement.h"
 #include "elements/beam/BeamMemberLoads.h"
+#include "elements/transform/CrdTransfNd.h"
+#include "elements/transform/FrameTraits.h"
 
 namespace dabs::elements {
 
-/// What the 2D and 3D elastic beam-columns share: basic forces q = kb v through a coordinate
+/// What the 2D and 3D elastic beam-columns share (a template on the model dimension, as the
+/// other frame code; elements/README.md): basic forces q = kb v through a coordinate
 /// transformation, the stiffness formed once for transformations with a constant compatibility
 /// matrix (Linear, PDelta: only the geometric part is added per update), the trial/commit state
 /// and the responses. The derived class sets kb_ and the mass in initialize(). Member loads add
 /// their fixed-end forces q0 to the basic forces and their reactions p0 to the end forces
 /// (q = kb v + q0; OpenSees/OpenSees:SRC/element/elasticBeamColumn/ElasticBeam2d.cpp addLoad).
-template <class Transf, int Ndf>
-class ElasticBeamColumn : public FixedSizeElement<2, Ndf> {
+template <int Ndm>
+class ElasticBeamColumn : public FixedSizeElement<2, FrameTraits<Ndm>::kDofPerNode> {
  public:
+  using Transf = CrdTransfNd<Ndm>;
+  static constexpr int Ndf = FrameTraits<Ndm>::kDofPerNode;
   using Vector = typename FixedSizeElement<2, Ndf>::Vector;
 
   ElasticBeamColumn(int tag, int nodeI, int nodeJ, std::unique_ptr<Transf> transf)
