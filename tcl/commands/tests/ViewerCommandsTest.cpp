@@ -8,6 +8,8 @@
 
 #include "tcl/commands/tests/TclFixture.h"
 
+#include <unistd.h>
+
 namespace dabs::tcl::testing {
 namespace {
 
@@ -15,7 +17,10 @@ class ViewerCommandsTest : public TclFixture {
  protected:
   void SetUp() override {
     TclFixture::SetUp();
-    page_ = (std::filesystem::temp_directory_path() / "dabs_viewer_commands_test.html").string();
+    // One page per process: ctest runs these tests in parallel processes.
+    page_ = (std::filesystem::temp_directory_path() /
+             ("dabs_viewer_commands_test_" + std::to_string(::getpid()) + ".html"))
+                .string();
     // two nodes, a beam, a bearing-free model: enough for the options' checks
     ok("model basic -ndm 3 -ndf 6; node 1 0 0 0; node 2 5 0 0; node 3 5 0 0; "
        "geomTransf Linear 1 0 0 1; element elasticBeamColumn 7 1 2 1.0 2e8 8e7 1.0 1.0 1.0 1");

@@ -7,6 +7,8 @@
 #include <fstream>
 #include <string>
 
+#include <unistd.h>
+
 #include "materials/InputError.h"
 #include "tcl/domain/PathSeries.h"
 
@@ -14,7 +16,9 @@ namespace dabs::domain {
 namespace {
 
 std::vector<double> readText(const std::string& text) {
-  const std::string path = ::testing::TempDir() + "dabs_path_series_read.txt";
+  // One file per process: ctest runs this suite's tests in parallel processes.
+  const std::string path =
+      ::testing::TempDir() + "dabs_path_series_read_" + std::to_string(::getpid()) + ".txt";
   {
     std::ofstream f(path);
     f << text;
