@@ -40,29 +40,15 @@ class FixedSizeElement : public Element {
 
   Eigen::Ref<const Eigen::VectorXd> resistingForce() const override { return f_; }
   Eigen::Ref<const Eigen::MatrixXd> tangentStiff() const override {
-    if constexpr ((Stored & kStoreTangent) != 0)
-      return k_;
-    else
-      return zero();
+    return keptOrZero<kStoreTangent>(k_);
   }
   Eigen::Ref<const Eigen::MatrixXd> initialStiff() const override {
-    if constexpr ((Stored & kStoreInitial) != 0)
-      return k0_;
-    else
-      return zero();
+    return keptOrZero<kStoreInitial>(k0_);
   }
   Eigen::Ref<const Eigen::MatrixXd> dampingTangent() const override {
-    if constexpr ((Stored & kStoreDamping) != 0)
-      return c_;
-    else
-      return zero();
+    return keptOrZero<kStoreDamping>(c_);
   }
-  Eigen::Ref<const Eigen::MatrixXd> mass() const override {
-    if constexpr ((Stored & kStoreMass) != 0)
-      return m_;
-    else
-      return zero();
-  }
+  Eigen::Ref<const Eigen::MatrixXd> mass() const override { return keptOrZero<kStoreMass>(m_); }
 
  protected:
   struct NoMatrix {};
@@ -74,6 +60,14 @@ class FixedSizeElement : public Element {
       return Matrix::Zero();
     else
       return NoMatrix{};
+  }
+  /// `m` when the element keeps the matrix of `Bit`, else the shared zero matrix.
+  template <unsigned Bit, class Kept>
+  static Eigen::Ref<const Eigen::MatrixXd> keptOrZero(const Kept& m) {
+    if constexpr ((Stored & Bit) != 0)
+      return m;
+    else
+      return zero();
   }
   /// The zero matrix the getters of matrices not kept return (constant, never written).
   static const Matrix& zero() {

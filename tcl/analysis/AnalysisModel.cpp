@@ -505,7 +505,7 @@ void AnalysisModel::formResidual(const AssemblyCoefficients& c, Eigen::VectorXd&
       const auto& r = l.rayleigh;
       if (r.betaK != 0.0) f.noalias() += r.betaK * (e.tangentStiff() * l.v);
       if (r.betaKc != 0.0) f.noalias() += r.betaKc * (e.committedStiff() * l.v);
-      for (const VecEntry& v : l.vec) B(v.eq) -= v.coef * f(v.local);
+      subtractForce(l, f, B);
     } else if (c.dynamic) {
       Eigen::VectorXd& f = l.force;
       f = e.resistingForce();
@@ -518,7 +518,7 @@ void AnalysisModel::formResidual(const AssemblyCoefficients& c, Eigen::VectorXd&
         if (r.betaK0 != 0.0) f.noalias() += r.betaK0 * (e.initialStiff() * l.v);
         if (r.betaKc != 0.0) f.noalias() += r.betaKc * (e.committedStiff() * l.v);
       }
-      for (const VecEntry& v : l.vec) B(v.eq) -= v.coef * f(v.local);
+      subtractForce(l, f, B);
     } else {
       subtractForce(l, e.resistingForce(), B);
     }
@@ -538,7 +538,9 @@ void AnalysisModel::formResidual(const AssemblyCoefficients& c, Eigen::VectorXd&
       for (const NodeLink& nl : nodes_) {
         if (nl.mass.empty()) continue;
         const domain::Node& n = *nl.node;
-        const Eigen::VectorXd f = n.mass() * (n.accel + nl.alphaM * n.vel);
+        // At most 6 dofs a node: on the stack, no allocation in the iteration.
+        const Eigen::Matrix<double, Eigen::Dynamic, 1, 0, 6, 1> f =
+            n.mass() * (n.accel + nl.alphaM * n.vel);
         for (const VecEntry& v : nl.vec) B(v.eq) -= v.coef * f(v.local);
       }
     }
