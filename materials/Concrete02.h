@@ -57,6 +57,10 @@ class Concrete02 final : public StatefulUniaxial<Concrete02, Concrete02State> {
   /// The update as a function of the committed state: trial = the state at `strain`. Fiber
   /// sections keep only the states of their fibers and call this with one parameter set.
   [[nodiscard]] Status computeTrial(const State& committed, State& trial, double strain) const;
+  /// Turns `state` into the state computeTrial(state, trial, strain) leaves, given that state's
+  /// stress and tangent: the history updates alone, bit for bit the same. A fiber section keeps
+  /// only its fibers' trial stress and tangent, and commits with this.
+  void commitTrial(State& state, double strain, double stress, double tangent) const;
   /// The virgin state.
   State virginState() const { return initialState(); }
   double getInitialTangent() const override { return Ec0_; }
@@ -171,6 +175,21 @@ inline Status Concrete02::computeTrial(const State& committed, State& trial, dou
     }
   }
   return std::isfinite(trial.stress) ? Status::Ok : Status::NonFinite;
+}
+
+// The history updates of computeTrial, branch for branch: a new minimum strain on the
+// compression envelope, a new largest tensile strain past the reloading point epn.
+inline void Concrete02::commitTrial(State& state, double strain, double stress,
+                                    double tangent) const {
+  if (std::fabs(strain - state.strain) < DBL_EPSILON) return;
+  if (strain < state.ecmin) {
+    setMinimumStrain(state, strain, stress);
+  } else if (!(strain <= state.ept) && !(strain <= state.ept + state.dept)) {
+    state.dept = strain - state.ept;
+  }
+  state.strain = strain;
+  state.stress = stress;
+  state.tangent = tangent;
 }
 
 inline Status Concrete02::setTrialStrain(double strain, double /*strainRate*/) {

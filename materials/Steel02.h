@@ -67,6 +67,10 @@ class Steel02 final : public StatefulUniaxial<Steel02, Steel02State> {
   /// The update as a function of the committed state: trial = the state at `strain`. Fiber
   /// sections keep only the states of their fibers and call this with one parameter set.
   [[nodiscard]] Status computeTrial(const State& committed, State& trial, double strain) const;
+  /// Turns `state` into the state computeTrial(state, trial, strain) leaves, given that state's
+  /// stress and tangent: the branch bookkeeping alone, bit for bit the same. A fiber section
+  /// keeps only its fibers' trial stress and tangent, and commits with this.
+  void commitTrial(State& state, double strain, double stress, double tangent) const;
   /// The virgin state.
   State virginState() const { return initialState(); }
   double getInitialTangent() const override { return params_.E; }
@@ -76,6 +80,11 @@ class Steel02 final : public StatefulUniaxial<Steel02, Steel02State> {
   State initialState() const override;
   /// R = R0 (1 - cR1 xi / (cR2 + xi)) and 1 / (eps0 - epsR) for the branch of `s`.
   void setCurvature(State& s) const;
+  /// Puts `s` (the committed state with the trial strain) on the branch a shifted strain
+  /// increment `deps` from the committed point (epsP, sigP) follows: the first excursion or a
+  /// reversal. False when the material stays at its virgin point (s then has its stress and
+  /// tangent).
+  bool followBranch(State& s, double epsP, double sigP, double deps) const;
   Params params_;
   double epsy_ = 0.0;    ///< Fy / E
   double Esh_ = 0.0;     ///< b E
@@ -95,27 +104,16 @@ inline void Steel02::setCurvature(State& s) const {
   s.invSpan = 1.0 / (s.eps0 - s.epsR);
 }
 
-inline Status Steel02::computeTrial(const State& committed, State& trial, double strain) const {
+inline bool Steel02::followBranch(State& trial, double epsP, double sigP, double deps) const {
   const auto& p = params_;
   const double Esh = Esh_;
   const double epsy = epsy_;
-  // The curve works in strains shifted by the initial strain sigInit/E (C.-P. Lamarche's
-  // extension in OpenSees), so the virgin state sits at (sigInit/E, sigInit).
-  const double epsIni = epsIni_;
-  const double eps = strain + epsIni;
-  const double epsP = committed.strain + epsIni;  // committed shifted strain
-  const double sigP = committed.stress;
-  const double deps = eps - epsP;
-
-  trial = committed;
-  trial.strain = strain;
-
   if (trial.kon == 0 || trial.kon == 3) {
     if (std::fabs(deps) < 10.0 * DBL_EPSILON) {
       trial.tangent = p.E;
       trial.stress = p.sigInit;
       trial.kon = 3;
-      return Status::Ok;
+      return false;
     }
     // first excursion: asymptotes meet at (+-epsy, +-Fy); the curve starts at the origin
     trial.epsMax = epsy;
@@ -162,6 +160,23 @@ inline Status Steel02::computeTrial(const State& committed, State& trial, double
     setCurvature(trial);
   }
 
+  return true;
+}
+
+inline Status Steel02::computeTrial(const State& committed, State& trial, double strain) const {
+  const auto& p = params_;
+  // The curve works in strains shifted by the initial strain sigInit/E (C.-P. Lamarche's
+  // extension in OpenSees), so the virgin state sits at (sigInit/E, sigInit).
+  const double epsIni = epsIni_;
+  const double eps = strain + epsIni;
+  const double epsP = committed.strain + epsIni;  // committed shifted strain
+  const double sigP = committed.stress;
+  const double deps = eps - epsP;
+
+  trial = committed;
+  trial.strain = strain;
+  if (!followBranch(trial, epsP, sigP, deps)) return Status::Ok;
+
   // Menegotto-Pinto curve (Filippou et al. 1983, eqs. 3-5) and its exact derivative.
   const double epsRat = (eps - trial.epsR) * trial.invSpan;
   // |eps*|^R as exp(R log|eps*|): half the cost of pow, with a relative error of about
@@ -189,6 +204,17 @@ inline Status Steel02::computeTrial(const State& committed, State& trial, double
   trial.tangent = eStar * (trial.sig0 - trial.sigR) * trial.invSpan;
   return std::isfinite(trial.stress) && std::isfinite(trial.tangent) ? Status::Ok
                                                                      : Status::NonFinite;
+}
+
+inline void Steel02::commitTrial(State& state, double strain, double stress,
+                                 double tangent) const {
+  const double epsP = state.strain + epsIni_;
+  const double deps = strain + epsIni_ - epsP;
+  const double sigP = state.stress;
+  state.strain = strain;
+  static_cast<void>(followBranch(state, epsP, sigP, deps));
+  state.stress = stress;
+  state.tangent = tangent;
 }
 
 inline Status Steel02::setTrialStrain(double strain, double /*strainRate*/) {

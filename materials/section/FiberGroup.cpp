@@ -48,9 +48,7 @@ class TypedFiberGroup final : public FiberGroup {
 
   void add(double y, double z, double area, const UniaxialMaterial& prototype) override {
     if (mats_.empty()) type_ = std::type_index(typeid(prototype));
-    y_.push_back(y);
-    z_.push_back(z);
-    area_.push_back(area);
+    addGeometry(y, z, area);
     if constexpr (std::is_same_v<M, BoxedMaterial>) {
       mats_.emplace_back(prototype);
     } else {
@@ -70,9 +68,10 @@ class TypedFiberGroup final : public FiberGroup {
     // Two passes: the material calls first, then the sums in a loop without calls, whose nine
     // accumulators stay in registers (a call would make the compiler save them every fiber).
     Status status = Status::Ok;
+    const Geometry& g = geometry();
     const std::size_t n = mats_.size();
     for (std::size_t i = 0; i < n; ++i) {
-      const Status s = mats_[i].setTrialStrain(e0 - y_[i] * kz + z_[i] * ky);
+      const Status s = mats_[i].setTrialStrain(e0 - g.y[i] * kz + g.z[i] * ky);
       if (!ok(s)) status = s;
     }
     addTo(sums, false);
@@ -84,13 +83,15 @@ class TypedFiberGroup final : public FiberGroup {
 
   void addTo(FiberSums& sums, bool initial) const override {
     FiberSums local = sums;
+    const Geometry& g = geometry();
     const std::size_t n = mats_.size();
     if (initial) {
       for (std::size_t i = 0; i < n; ++i)
-        local.add(y_[i], z_[i], 0.0, mats_[i].getInitialTangent() * area_[i]);
+        local.add(g.y[i], g.z[i], 0.0, mats_[i].getInitialTangent() * g.area[i]);
     } else {
       for (std::size_t i = 0; i < n; ++i)
-        local.add(y_[i], z_[i], mats_[i].getStress() * area_[i], mats_[i].getTangent() * area_[i]);
+        local.add(g.y[i], g.z[i], mats_[i].getStress() * g.area[i],
+                  mats_[i].getTangent() * g.area[i]);
     }
     sums = local;
   }
@@ -119,27 +120,35 @@ class TypedFiberGroup final : public FiberGroup {
   std::type_index type_ = std::type_index(typeid(void));
 };
 
-/// Fibers of one material (one parameter set, the prototype's) kept as arrays of committed and
-/// trial states; the update is M::computeTrial. Fibers of another material of the same class
-/// (other parameters) go to another group.
+/// Fibers of one material (one parameter set, the prototype's) kept as arrays of states; the
+/// update is M::computeTrial. Fibers of another material of the same class (other parameters) go
+/// to another group.
+///
+/// A law with `commitTrial` (the state its computeTrial leaves, formed from the trial stress and
+/// tangent: only the history updates) keeps, besides its committed states, just the trial stress
+/// and tangent of each fiber, and commits by commitTrial at the strains of the last setTrial. A
+/// pass then writes 16 bytes a fiber instead of a whole state: on models whose fiber states do
+/// not fit in the cache, the passes are bound by memory traffic, not arithmetic. Other laws keep a
+/// trial state array and swap it with the committed one at commit.
 template <class M>
 class StateFiberGroup final : public FiberGroup {
  public:
   using State = typename M::State;
+  static constexpr bool kKeepsResponse = requires(const M& m, State& s) {
+    m.commitTrial(s, 0.0, 0.0, 0.0);
+  };
   /// `prototype` is the material object whose fibers this group holds (identity decides
   /// membership) and whose parameters it uses.
   explicit StateFiberGroup(const M& prototype) : law_(prototype), source_(&prototype) {}
 
-  double stress(int i) const override { return current()[static_cast<std::size_t>(i)].stress; }
-  double strain(int i) const override { return current()[static_cast<std::size_t>(i)].strain; }
+  double stress(int i) const override { return currentState(static_cast<std::size_t>(i)).stress; }
+  double strain(int i) const override { return currentState(static_cast<std::size_t>(i)).strain; }
   int materialTag() const override { return law_.tag(); }
 
   void add(double y, double z, double area, const UniaxialMaterial& /*prototype*/) override {
-    y_.push_back(y);
-    z_.push_back(z);
-    area_.push_back(area);
+    addGeometry(y, z, area);
     committed_.push_back(law_.virginState());
-    trial_.push_back(law_.virginState());
+    trial_.push_back(Trial{});
   }
   bool accepts(const UniaxialMaterial& material) const override { return &material == source_; }
 
@@ -151,22 +160,33 @@ class StateFiberGroup final : public FiberGroup {
   }
   void addTo(FiberSums& sums, bool initial) const override {
     FiberSums local = sums;
-    const std::size_t n = trial_.size();
+    const Geometry& g = geometry();
+    const std::size_t n = committed_.size();
     if (initial) {
       const double e0 = law_.getInitialTangent();
-      for (std::size_t i = 0; i < n; ++i) local.add(y_[i], z_[i], 0.0, e0 * area_[i]);
+      for (std::size_t i = 0; i < n; ++i) local.add(g.y[i], g.z[i], 0.0, e0 * g.area[i]);
     } else {
-      const std::vector<State>& states = current();
-      for (std::size_t i = 0; i < n; ++i)
-        local.add(y_[i], z_[i], states[i].stress * area_[i], states[i].tangent * area_[i]);
+      for (std::size_t i = 0; i < n; ++i) {
+        const auto [stress, tangent] = response(i);
+        local.add(g.y[i], g.z[i], stress * g.area[i], tangent * g.area[i]);
+      }
     }
     sums = local;
   }
-  // Every setTrial writes all trial states from the committed ones, so a commit can swap the two
-  // arrays instead of copying (on large models the copy streamed the whole state array through
-  // memory once more per step), and a revert only has to forget the trial.
+  // Every setTrial writes the trial of all fibers from the committed states, so a revert only
+  // has to forget the trial, and (without commitTrial) a commit swaps the two arrays instead of
+  // copying them.
   void commitState() override {
-    if (trialIsNew_) std::swap(committed_, trial_);
+    if (trialIsNew_) {
+      if constexpr (kKeepsResponse) {
+        if (planar_)
+          commitResponses<true>();
+        else
+          commitResponses<false>();
+      } else {
+        std::swap(committed_, trial_);
+      }
+    }
     trialIsNew_ = false;
   }
   void revertToLastCommit() override { trialIsNew_ = false; }
@@ -179,39 +199,100 @@ class StateFiberGroup final : public FiberGroup {
   }
 
  private:
+  struct Response {
+    double stress = 0.0, tangent = 0.0;
+  };
+  using Trial = std::conditional_t<kKeepsResponse, Response, State>;
+
   /// One pass: the update is inlined (no call to save the accumulators around), and each fiber's
   /// state is summed while it is in cache; on large models the state arrays do not fit in it. A
   /// plane section skips the z terms (a third of the sums).
   template <bool Planar>
   Status sweep(double e0, double kz, double ky, FiberSums& sums) {
     FiberSums local = sums;
-    const std::size_t n = trial_.size();
+    const Geometry& g = geometry();
+    const double* ys = g.y.data();
+    const double* zs = g.z.data();
+    const double* as = g.area.data();
+    const State* committed = committed_.data();
+    Trial* trial = trial_.data();
+    const std::size_t n = committed_.size();
     for (std::size_t i = 0; i < n; ++i) {
-      const double y = y_[i], a = area_[i];
-      State& t = trial_[i];
+      const double y = ys[i], a = as[i];
+      const double strain = Planar ? e0 - y * kz : e0 - y * kz + zs[i] * ky;
       // The only failure of these laws is a non-finite stress or tangent, and it makes the
       // sums non-finite too: the caller checks those once instead of every fiber here.
-      if constexpr (Planar) {
-        static_cast<void>(law_.computeTrial(committed_[i], t, e0 - y * kz));
-        local.addPlanar(y, t.stress * a, t.tangent * a);
+      double stress = 0.0, tangent = 0.0;
+      if constexpr (kKeepsResponse) {
+        State t;
+        static_cast<void>(law_.computeTrial(committed[i], t, strain));
+        stress = t.stress;
+        tangent = t.tangent;
+        trial[i] = Response{stress, tangent};
       } else {
-        const double z = z_[i];
-        static_cast<void>(law_.computeTrial(committed_[i], t, e0 - y * kz + z * ky));
-        local.add(y, z, t.stress * a, t.tangent * a);
+        State& t = trial[i];
+        static_cast<void>(law_.computeTrial(committed[i], t, strain));
+        stress = t.stress;
+        tangent = t.tangent;
       }
+      if constexpr (Planar)
+        local.addPlanar(y, stress * a, tangent * a);
+      else
+        local.add(y, zs[i], stress * a, tangent * a);
     }
     sums = local;
+    e0_ = e0;
+    kz_ = kz;
+    ky_ = ky;
+    planar_ = Planar;
     trialIsNew_ = true;
     return Status::Ok;
   }
 
-  /// The states the fibers are in: the trial ones after a setTrial, the committed ones after a
-  /// commit or revert (then trial_ holds stale values, overwritten by the next setTrial).
-  const std::vector<State>& current() const { return trialIsNew_ ? trial_ : committed_; }
+  template <bool Planar>
+  void commitResponses() {
+    const Geometry& g = geometry();
+    const double* y = g.y.data();
+    const double* z = g.z.data();
+    const Response* trial = trial_.data();
+    State* committed = committed_.data();
+    const double e0 = e0_, kz = kz_, ky = ky_;
+    const std::size_t n = committed_.size();
+    for (std::size_t i = 0; i < n; ++i) {
+      const double strain = Planar ? e0 - y[i] * kz : e0 - y[i] * kz + z[i] * ky;
+      law_.commitTrial(committed[i], strain, trial[i].stress, trial[i].tangent);
+    }
+  }
+
+  /// Fiber i's strain in the last setTrial, by the same expression the pass used.
+  double trialStrain(std::size_t i) const {
+    const Geometry& g = geometry();
+    return planar_ ? e0_ - g.y[i] * kz_ : e0_ - g.y[i] * kz_ + g.z[i] * ky_;
+  }
+  /// The stress and tangent the fibers are at: the trial ones after a setTrial, the committed
+  /// ones after a commit or revert.
+  Response response(std::size_t i) const {
+    if (!trialIsNew_) return {committed_[i].stress, committed_[i].tangent};
+    return {trial_[i].stress, trial_[i].tangent};
+  }
+  /// Fiber i's whole current state (for responses; formed again when only the response is kept).
+  State currentState(std::size_t i) const {
+    if (!trialIsNew_) return committed_[i];
+    if constexpr (kKeepsResponse) {
+      State t;
+      static_cast<void>(law_.computeTrial(committed_[i], t, trialStrain(i)));
+      return t;
+    } else {
+      return trial_[i];
+    }
+  }
 
   M law_;                           ///< parameters (its own state is not used)
   const UniaxialMaterial* source_;  ///< only compared with, while the section is built
-  std::vector<State> committed_, trial_;
+  std::vector<State> committed_;
+  std::vector<Trial> trial_;
+  double e0_ = 0.0, kz_ = 0.0, ky_ = 0.0;  ///< section strains of the last setTrial
+  bool planar_ = false;                    ///< the last setTrial was a plane one
   bool trialIsNew_ = false;  ///< trial_ was computed after the last commit or revert
 };
 

@@ -45,10 +45,10 @@ class FiberGroup {
  public:
   virtual ~FiberGroup() = default;
 
-  int size() const noexcept { return static_cast<int>(area_.size()); }
-  double y(int i) const { return y_[static_cast<std::size_t>(i)]; }
-  double z(int i) const { return z_[static_cast<std::size_t>(i)]; }
-  double area(int i) const { return area_[static_cast<std::size_t>(i)]; }
+  int size() const noexcept { return static_cast<int>(geometry_->area.size()); }
+  double y(int i) const { return geometry_->y[static_cast<std::size_t>(i)]; }
+  double z(int i) const { return geometry_->z[static_cast<std::size_t>(i)]; }
+  double area(int i) const { return geometry_->area[static_cast<std::size_t>(i)]; }
   /// Fiber i's trial stress and strain, and the tag of the group's material.
   virtual double stress(int i) const = 0;
   virtual double strain(int i) const = 0;
@@ -79,7 +79,23 @@ class FiberGroup {
   virtual bool accepts(const UniaxialMaterial& material) const = 0;
 
  protected:
-  std::vector<double> y_, z_, area_;
+  /// Coordinates and areas of the fibers. They never change once the section is built, so the
+  /// copies of a section (one per integration point and element) share one block: on a model
+  /// whose fiber states do not fit in the cache, each pass then streams only the states.
+  struct Geometry {
+    std::vector<double> y, z, area;
+  };
+  /// Appends a fiber's geometry (copying the block first if another group shares it).
+  void addGeometry(double y, double z, double area) {
+    if (geometry_.use_count() > 1) geometry_ = std::make_shared<Geometry>(*geometry_);
+    geometry_->y.push_back(y);
+    geometry_->z.push_back(z);
+    geometry_->area.push_back(area);
+  }
+  const Geometry& geometry() const noexcept { return *geometry_; }
+
+ private:
+  std::shared_ptr<Geometry> geometry_ = std::make_shared<Geometry>();
 };
 
 }  // namespace dabs::materials::section

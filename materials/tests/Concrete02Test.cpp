@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <random>
 
 namespace dabs::materials {
 namespace {
@@ -54,6 +55,47 @@ TEST(Concrete02Test, DefaultsFollowOpenSees) {
   EXPECT_DOUBLE_EQ(p.lambda, 0.1);
   EXPECT_DOUBLE_EQ(p.ft, 3.0);
   EXPECT_DOUBLE_EQ(p.Ets, 0.1 * kFpc / kEps0);
+}
+
+// A fiber section keeps only a fiber's trial stress and tangent and commits with commitTrial: the
+// committed history must be the one computeTrial forms, field for field, on a walk through every
+// branch (envelope, unloading, reloading, cracking, tension softening, crushing), with several
+// trials before each commit as in Newton iterations, and with repeated strains.
+TEST(Concrete02Test, CommitFromTrialResponseEqualsTheTrialState) {
+  const Concrete02 m = make();
+  Concrete02::State committed = m.virginState();
+  std::mt19937 random(7);
+  std::uniform_real_distribution<double> jitter(-2e-4, 2e-4);
+  const double peaks[] = {-0.001, 0.0004, -0.0025, 0.001, -0.004, 0.002, -0.008, 0.003, -0.012};
+  double strain = 0.0;
+  int commits = 0;
+  for (const double peak : peaks) {
+    for (int k = 1; k <= 12; ++k) {
+      const double target = strain + (peak - strain) * k / 12.0;
+      Concrete02::State trial;
+      for (int iteration = 0; iteration < 3; ++iteration)
+        ASSERT_TRUE(ok(m.computeTrial(committed, trial, target + jitter(random) / (1 << (2 * iteration)))));
+      const double last = k % 4 == 0 ? committed.strain : target;  // some steps do not move
+      ASSERT_TRUE(ok(m.computeTrial(committed, trial, last)));
+      Concrete02::State viaResponse = committed;
+      m.commitTrial(viaResponse, last, trial.stress, trial.tangent);
+      EXPECT_EQ(viaResponse.strain, trial.strain);
+      EXPECT_EQ(viaResponse.stress, trial.stress);
+      EXPECT_EQ(viaResponse.tangent, trial.tangent);
+      EXPECT_EQ(viaResponse.ecmin, trial.ecmin);
+      EXPECT_EQ(viaResponse.dept, trial.dept);
+      EXPECT_EQ(viaResponse.sigMin, trial.sigMin);
+      EXPECT_EQ(viaResponse.Er, trial.Er);
+      EXPECT_EQ(viaResponse.ept, trial.ept);
+      committed = trial;
+      ++commits;
+    }
+    strain = peak;
+  }
+  // The walk reached crushing and tension softening (otherwise branches went untested).
+  EXPECT_LT(committed.ecmin, kEpsU);
+  EXPECT_GT(committed.dept, kFt / kEc);
+  EXPECT_EQ(commits, 9 * 12);
 }
 
 }  // namespace

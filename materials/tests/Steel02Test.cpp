@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <random>
 
 namespace dabs::materials {
 namespace {
@@ -114,6 +115,54 @@ TEST(Steel02Test, InitialStressShiftsTheVirginState) {
   ASSERT_TRUE(ok(m.setTrialStrain(0.1 * kEpsY)));
   // internal strain 0.1 epsy + 100/E = 0.35 epsy on the first-loading curve
   EXPECT_NEAR(m.getStress(), kFy * menegottoPinto(0.35, kB, 15.0), kRelTol * kFy);
+}
+
+// A fiber section keeps only a bar's trial stress and tangent and commits with commitTrial: the
+// committed branch data must be the ones computeTrial forms, field for field, through the virgin
+// point (with an initial stress), first yield, reversals with isotropic hardening (a1..a4, whose
+// shift uses pow) and steps that do not move, with several trials before each commit.
+TEST(Steel02Test, CommitFromTrialResponseEqualsTheTrialState) {
+  Steel02::Params params{kFy, kE, kB};
+  params.a1 = 0.02;
+  params.a3 = 0.02;
+  params.sigInit = 40.0;
+  const Steel02 m(1, params);
+  Steel02::State committed = m.virginState();
+  std::mt19937 random(11);
+  std::uniform_real_distribution<double> jitter(-1e-4, 1e-4);
+  const double peaks[] = {0.0, 0.5, -1.0, 3.0, -4.0, 8.0, -2.0, 12.0, -12.0};
+  double strain = 0.0;
+  int reversals = 0;
+  for (const double peak : peaks) {
+    for (int k = 1; k <= 10; ++k) {
+      const double target = (strain + (peak - strain) * k / 10.0) * kEpsY;
+      Steel02::State trial;
+      for (int iteration = 0; iteration < 3; ++iteration)
+        ASSERT_TRUE(ok(m.computeTrial(committed, trial, target + jitter(random) * kEpsY)));
+      const double last = k % 5 == 0 ? committed.strain : target;  // some steps do not move
+      ASSERT_TRUE(ok(m.computeTrial(committed, trial, last)));
+      Steel02::State viaResponse = committed;
+      m.commitTrial(viaResponse, last, trial.stress, trial.tangent);
+      EXPECT_EQ(viaResponse.strain, trial.strain);
+      EXPECT_EQ(viaResponse.stress, trial.stress);
+      EXPECT_EQ(viaResponse.tangent, trial.tangent);
+      EXPECT_EQ(viaResponse.epsMin, trial.epsMin);
+      EXPECT_EQ(viaResponse.epsMax, trial.epsMax);
+      EXPECT_EQ(viaResponse.epsPl, trial.epsPl);
+      EXPECT_EQ(viaResponse.eps0, trial.eps0);
+      EXPECT_EQ(viaResponse.sig0, trial.sig0);
+      EXPECT_EQ(viaResponse.epsR, trial.epsR);
+      EXPECT_EQ(viaResponse.sigR, trial.sigR);
+      EXPECT_EQ(viaResponse.kon, trial.kon);
+      EXPECT_EQ(viaResponse.R, trial.R);
+      EXPECT_EQ(viaResponse.linearLimit, trial.linearLimit);
+      EXPECT_EQ(viaResponse.invSpan, trial.invSpan);
+      if (trial.kon != committed.kon) ++reversals;
+      committed = trial;
+    }
+    strain = peak;
+  }
+  EXPECT_GE(reversals, 8);  // the virgin point, first yield and every peak's reversal were passed
 }
 
 }  // namespace

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <limits>
 #include <numbers>
+#include <tuple>
 
 #include "materials/Concrete02.h"
 #include "materials/ENT.h"
@@ -240,6 +241,58 @@ TEST(FiberSectionTest, MixedMaterialsSumLikeTheFibersOneByOne) {
     for (auto& m : alone) m->commitState();
   }
   EXPECT_EQ(sec.materialUpdates(), 60);
+}
+
+TEST(FiberSectionTest, CopiesShareOnlyTheirGeometry) {
+  // The copies of a section (one per integration point) share the fibers' coordinates and areas
+  // but not their states: a copy and the original driven through different histories (trials,
+  // commits, reverts) must each give what a section built afresh gives for its own history, bit
+  // for bit, in resultants, tangent and fiber stresses and strains.
+  const Concrete02 concrete(1, Concrete02::Params::withDefaults(-30e3, -0.002, -6e3, -0.006));
+  Steel02::Params sp;
+  sp.Fy = 4e5;
+  sp.E = 2e8;
+  sp.b = 0.01;
+  const Steel02 steel(2, sp);
+  std::vector<FiberSection3d::Fiber> fibers;
+  for (int i = 0; i < 24; ++i)
+    fibers.push_back({0.4 * std::cos(0.9 * i), 0.3 * std::sin(1.1 * i), 0.01 + 0.002 * (i % 3),
+                      i % 4 == 0 ? static_cast<const UniaxialMaterial*>(&steel) : &concrete});
+  const FiberSection3d built(3, fibers, 50.0);
+  auto copy = built.clone();
+  auto original = built.clone();
+  FiberSection3d freshA(3, fibers, 50.0), freshB(3, fibers, 50.0);
+  // deformation k of history h: opposite curvatures for the two histories
+  auto deformation = [](int k, double sign) {
+    return Eigen::Vector4d(-2e-4 * k, sign * 1.5e-3 * k, -sign * 8e-4 * k, 1e-4 * k);
+  };
+  auto same = [](const SectionForceDeformation& a, const FiberSection3d& b) {
+    EXPECT_EQ(a.getStressResultant(), b.getStressResultant());
+    EXPECT_EQ(a.getSectionTangent(), b.getSectionTangent());
+    const auto& fa = dynamic_cast<const FiberSection3d&>(a);
+    for (int i = 0; i < b.numFibers(); ++i) {
+      EXPECT_EQ(fa.fiberStress(i), b.fiberStress(i));
+      EXPECT_EQ(fa.fiberStrain(i), b.fiberStrain(i));
+      EXPECT_EQ(fa.fiberArea(i), b.fiberArea(i));
+    }
+  };
+  for (int k = 1; k <= 6; ++k) {
+    for (auto [section, fresh, sign] : {std::tuple{original.get(), &freshA, 1.0},
+                                        std::tuple{copy.get(), &freshB, -1.0}}) {
+      ASSERT_TRUE(ok(section->setTrialDeformation(deformation(k + 3, sign))));  // overshoot
+      ASSERT_TRUE(ok(section->setTrialDeformation(deformation(k, sign))));
+      ASSERT_TRUE(ok(fresh->setTrialDeformation(deformation(k, sign))));
+      same(*section, *fresh);
+      if (k % 3 == 0) {  // a rejected step: back to the committed state
+        section->revertToLastCommit();
+        fresh->revertToLastCommit();
+      } else {
+        section->commitState();
+        fresh->commitState();
+      }
+      same(*section, *fresh);
+    }
+  }
 }
 
 TEST(FiberSectionTest, NonFiniteFiberStressFailsTheSection) {
