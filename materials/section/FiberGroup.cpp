@@ -126,10 +126,12 @@ class TypedFiberGroup final : public FiberGroup {
 ///
 /// A law with `commitTrial` (the state its computeTrial leaves, formed from the trial stress and
 /// tangent: only the history updates) keeps, besides its committed states, just the trial stress
-/// and tangent of each fiber, and commits by commitTrial at the strains of the last setTrial. A
-/// pass then writes 16 bytes a fiber instead of a whole state: on models whose fiber states do
-/// not fit in the cache, the passes are bound by memory traffic, not arithmetic. Other laws keep a
-/// trial state array and swap it with the committed one at commit.
+/// and tangent of each fiber, so a pass writes 16 bytes a fiber instead of a whole state. A commit
+/// is then only noted; the next pass folds it in (commitTrial at the strains of the committed
+/// trial) as it reads each state anyway. On a model whose fiber states do not fit in the cache
+/// the passes are bound by memory traffic, and this saves the state writes of every pass and a
+/// whole commit pass a step. Other laws keep a trial state array and swap it with the committed
+/// one at commit.
 template <class M>
 class StateFiberGroup final : public FiberGroup {
  public:
@@ -174,25 +176,22 @@ class StateFiberGroup final : public FiberGroup {
     sums = local;
   }
   // Every setTrial writes the trial of all fibers from the committed states, so a revert only
-  // has to forget the trial, and (without commitTrial) a commit swaps the two arrays instead of
-  // copying them.
+  // has to forget the trial.
   void commitState() override {
-    if (trialIsNew_) {
-      if constexpr (kKeepsResponse) {
-        if (planar_)
-          commitResponses<true>();
-        else
-          commitResponses<false>();
-      } else {
-        std::swap(committed_, trial_);
-      }
+    if (phase_ != Phase::Trial) return;
+    if constexpr (kKeepsResponse) {
+      phase_ = Phase::CommitPending;
+    } else {
+      std::swap(committed_, trial_);
+      phase_ = Phase::Committed;
     }
-    trialIsNew_ = false;
   }
-  void revertToLastCommit() override { trialIsNew_ = false; }
+  void revertToLastCommit() override {
+    if (phase_ == Phase::Trial) phase_ = Phase::Committed;
+  }
   void revertToStart() override {
     std::fill(committed_.begin(), committed_.end(), law_.virginState());
-    trialIsNew_ = false;
+    phase_ = Phase::Committed;
   }
   std::unique_ptr<FiberGroup> clone() const override {
     return std::make_unique<StateFiberGroup>(*this);
@@ -203,19 +202,37 @@ class StateFiberGroup final : public FiberGroup {
     double stress = 0.0, tangent = 0.0;
   };
   using Trial = std::conditional_t<kKeepsResponse, Response, State>;
+  enum class Phase {
+    Committed,      ///< committed_ is the current state; trial_ is stale
+    Trial,          ///< trial_ holds the trial at the strains of the last setTrial
+    CommitPending,  ///< that trial was committed; committed_ does not have it yet
+  };
+
+  template <bool Planar>
+  Status sweep(double e0, double kz, double ky, FiberSums& sums) {
+    // A group belongs to one section, so its passes are all plane or all spatial: the pending
+    // strains are formed by the same expression as when they were the trial's.
+    if (kKeepsResponse && phase_ == Phase::CommitPending)
+      sweepFolding<Planar, true>(e0, kz, ky, sums);
+    else
+      sweepFolding<Planar, false>(e0, kz, ky, sums);
+    return Status::Ok;
+  }
 
   /// One pass: the update is inlined (no call to save the accumulators around), and each fiber's
   /// state is summed while it is in cache; on large models the state arrays do not fit in it. A
-  /// plane section skips the z terms (a third of the sums).
-  template <bool Planar>
-  Status sweep(double e0, double kz, double ky, FiberSums& sums) {
+  /// plane section skips the z terms (a third of the sums). `Fold`: first commit each fiber's
+  /// pending trial into its state.
+  template <bool Planar, bool Fold>
+  void sweepFolding(double e0, double kz, double ky, FiberSums& sums) {
     FiberSums local = sums;
     const Geometry& g = geometry();
     const double* ys = g.y.data();
     const double* zs = g.z.data();
     const double* as = g.area.data();
-    const State* committed = committed_.data();
+    State* committed = committed_.data();
     Trial* trial = trial_.data();
+    const double e0Pending = e0_, kzPending = kz_, kyPending = ky_;
     const std::size_t n = committed_.size();
     for (std::size_t i = 0; i < n; ++i) {
       const double y = ys[i], a = as[i];
@@ -224,6 +241,11 @@ class StateFiberGroup final : public FiberGroup {
       // sums non-finite too: the caller checks those once instead of every fiber here.
       double stress = 0.0, tangent = 0.0;
       if constexpr (kKeepsResponse) {
+        if constexpr (Fold) {
+          const double pending =
+              Planar ? e0Pending - y * kzPending : e0Pending - y * kzPending + zs[i] * kyPending;
+          law_.commitTrial(committed[i], pending, trial[i].stress, trial[i].tangent);
+        }
         State t;
         static_cast<void>(law_.computeTrial(committed[i], t, strain));
         stress = t.stress;
@@ -245,23 +267,7 @@ class StateFiberGroup final : public FiberGroup {
     kz_ = kz;
     ky_ = ky;
     planar_ = Planar;
-    trialIsNew_ = true;
-    return Status::Ok;
-  }
-
-  template <bool Planar>
-  void commitResponses() {
-    const Geometry& g = geometry();
-    const double* y = g.y.data();
-    const double* z = g.z.data();
-    const Response* trial = trial_.data();
-    State* committed = committed_.data();
-    const double e0 = e0_, kz = kz_, ky = ky_;
-    const std::size_t n = committed_.size();
-    for (std::size_t i = 0; i < n; ++i) {
-      const double strain = Planar ? e0 - y[i] * kz : e0 - y[i] * kz + z[i] * ky;
-      law_.commitTrial(committed[i], strain, trial[i].stress, trial[i].tangent);
-    }
+    phase_ = Phase::Trial;
   }
 
   /// Fiber i's strain in the last setTrial, by the same expression the pass used.
@@ -269,17 +275,21 @@ class StateFiberGroup final : public FiberGroup {
     const Geometry& g = geometry();
     return planar_ ? e0_ - g.y[i] * kz_ : e0_ - g.y[i] * kz_ + g.z[i] * ky_;
   }
-  /// The stress and tangent the fibers are at: the trial ones after a setTrial, the committed
-  /// ones after a commit or revert.
+  /// The stress and tangent the fibers are at: the trial ones after a setTrial (also once
+  /// committed), the committed states' after a revert.
   Response response(std::size_t i) const {
-    if (!trialIsNew_) return {committed_[i].stress, committed_[i].tangent};
+    if (phase_ == Phase::Committed) return {committed_[i].stress, committed_[i].tangent};
     return {trial_[i].stress, trial_[i].tangent};
   }
   /// Fiber i's whole current state (for responses; formed again when only the response is kept).
   State currentState(std::size_t i) const {
-    if (!trialIsNew_) return committed_[i];
+    if (phase_ == Phase::Committed) return committed_[i];
     if constexpr (kKeepsResponse) {
-      State t;
+      State t = committed_[i];
+      if (phase_ == Phase::CommitPending) {
+        law_.commitTrial(t, trialStrain(i), trial_[i].stress, trial_[i].tangent);
+        return t;
+      }
       static_cast<void>(law_.computeTrial(committed_[i], t, trialStrain(i)));
       return t;
     } else {
@@ -293,7 +303,7 @@ class StateFiberGroup final : public FiberGroup {
   std::vector<Trial> trial_;
   double e0_ = 0.0, kz_ = 0.0, ky_ = 0.0;  ///< section strains of the last setTrial
   bool planar_ = false;                    ///< the last setTrial was a plane one
-  bool trialIsNew_ = false;  ///< trial_ was computed after the last commit or revert
+  Phase phase_ = Phase::Committed;
 };
 
 template <class M>
