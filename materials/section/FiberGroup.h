@@ -55,6 +55,13 @@ class FiberGroup {
   virtual int materialTag() const = 0;
   /// Adds a fiber with a clone of `prototype`.
   virtual void add(double y, double z, double area, const UniaxialMaterial& prototype) = 0;
+  /// Adds `area` to fiber i: a fiber of the same material at the same strain point (in a plane
+  /// section, the same y) has the same strain history, so the two are one fiber of their summed
+  /// area (OpenSees evaluates both).
+  void addArea(int i, double area) {
+    if (geometry_.use_count() > 1) geometry_ = std::make_shared<Geometry>(*geometry_);
+    geometry_->area[static_cast<std::size_t>(i)] += area;
+  }
 
   /// Sets every fiber's trial strain e0 - y kz + z ky and adds the fibers' trial forces and
   /// tangents to `sums`. Returns the last failed status, or Ok; a non-finite fiber stress or

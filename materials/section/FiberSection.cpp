@@ -4,7 +4,10 @@
 #include <array>
 #include <cstdlib>
 #include <limits>
+#include <map>
+#include <memory>
 #include <string>
+#include <tuple>
 
 #include "materials/InputError.h"
 #include "materials/ResponseArgs.h"
@@ -21,16 +24,34 @@ FiberSection<Ndm>::FiberSection(int tag, const std::vector<Fiber>& fibers, doubl
     : SectionForceDeformation(tag), gj_(torsionStiffness) {
   if (fibers.empty()) throw InputError("section Fiber " + std::to_string(tag), "has no fibers");
   if (Ndm == 3 && !(torsionStiffness >= 0.0)) throw InputError("-GJ", "must be zero or positive");
+  auto places = std::make_shared<std::vector<Place>>();
+  // Fibers of one material at one strain point ((y, z); y alone in a plane section, whose
+  // strain is eps - y kz) have the same strain history and so the same states: they are
+  // evaluated once, with their areas summed. Plane sections given with several fibers across
+  // the width (patches divided in z, bars in a layer at one depth) have many such.
+  std::map<std::tuple<const UniaxialMaterial*, double, double>, std::pair<std::size_t, int>>
+      evaluated;
   for (const Fiber& f : fibers) {
     if (!(f.area > 0.0)) throw InputError("fiber area", "must be positive");
     if (f.material == nullptr) throw InputError("fiber material", "is missing");
+    const auto key = std::make_tuple(f.material, f.y, Ndm == 3 ? f.z : 0.0);
+    if (const auto found = evaluated.find(key); found != evaluated.end()) {
+      const auto [g, index] = found->second;
+      groups_[g]->addArea(index, f.area);
+      places->push_back({f.y, f.z, f.area, g, index});
+      continue;
+    }
     std::size_t g = 0;
     while (g < groups_.size() && !groups_[g]->accepts(*f.material)) ++g;
     if (g == groups_.size()) groups_.push_back(FiberGroup::forMaterial(*f.material));
     // 2D sections ignore z (the strain is eps - y kz); keep it for responses only.
     groups_[g]->add(f.y, f.z, f.area, *f.material);
-    where_.emplace_back(g, groups_[g]->size() - 1);
+    const int index = groups_[g]->size() - 1;
+    evaluated.emplace(key, std::make_pair(g, index));
+    places->push_back({f.y, f.z, f.area, g, index});
   }
+  places_ = std::move(places);
+  for (const auto& g : groups_) evaluatedFibers_ += g->size();
   FiberSums initial;
   for (const auto& g : groups_) g->addTo(initial, true);
   store(initial, true);
@@ -40,7 +61,8 @@ FiberSection<Ndm>::FiberSection(int tag, const std::vector<Fiber>& fibers, doubl
 template <int Ndm>
 FiberSection<Ndm>::FiberSection(const FiberSection& o)
     : SectionForceDeformation(o),
-      where_(o.where_),
+      places_(o.places_),
+      evaluatedFibers_(o.evaluatedFibers_),
       gj_(o.gj_),
       e_(o.e_),
       eCommitted_(o.eCommitted_),
@@ -101,7 +123,7 @@ Status FiberSection<Ndm>::setTrialDeformation(const Eigen::Ref<const Eigen::Vect
         Ndm == 2 ? g->setTrialPlanar(e_(0), kz, sums) : g->setTrial(e_(0), kz, ky, sums);
     if (!ok(s)) status = s;
   }
-  materialUpdates_ += numFibers();
+  materialUpdates_ += evaluatedFibers_;
   store(sums, false);
   if (ok(status) && !(s_.allFinite() && k_.allFinite())) status = Status::NonFinite;
   return status;

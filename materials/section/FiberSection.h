@@ -51,11 +51,12 @@ class FiberSection final : public SectionForceDeformation {
   /// optionally among those of material matTag: [stress, strain]).
   std::optional<Eigen::VectorXd> response(std::span<const std::string> args) const override;
 
-  /// Fibers in the order they were given.
-  int numFibers() const noexcept { return static_cast<int>(where_.size()); }
-  double fiberY(int i) const { return group(i).y(index(i)); }
-  double fiberZ(int i) const { return group(i).z(index(i)); }
-  double fiberArea(int i) const { return group(i).area(index(i)); }
+  /// Fibers in the order they were given (as given: fibers merged for the evaluation are
+  /// listed each with its own place and area).
+  int numFibers() const noexcept { return static_cast<int>(places_->size()); }
+  double fiberY(int i) const { return place(i).y; }
+  double fiberZ(int i) const { return place(i).z; }
+  double fiberArea(int i) const { return place(i).area; }
   /// Fiber i's trial stress and strain, and its material's tag.
   double fiberStress(int i) const { return group(i).stress(index(i)); }
   double fiberStrain(int i) const { return group(i).strain(index(i)); }
@@ -69,13 +70,20 @@ class FiberSection final : public SectionForceDeformation {
   /// s_ and k_ (or k0_) from fiber sums, plus the uncoupled torsion in 3D.
   void store(const FiberSums& sums, bool initial);
   void sumCurrent();
-  const FiberGroup& group(int i) const {
-    return *groups_[where_[static_cast<std::size_t>(i)].first];
-  }
-  int index(int i) const { return where_[static_cast<std::size_t>(i)].second; }
+  /// A fiber as given, and where it is evaluated.
+  struct Place {
+    double y = 0.0, z = 0.0, area = 0.0;
+    std::size_t group = 0;  ///< its group
+    int index = 0;          ///< its fiber in the group (shared by fibers merged into one)
+  };
+  const Place& place(int i) const { return (*places_)[static_cast<std::size_t>(i)]; }
+  const FiberGroup& group(int i) const { return *groups_[place(i).group]; }
+  int index(int i) const { return place(i).index; }
 
   std::vector<std::unique_ptr<FiberGroup>> groups_;
-  std::vector<std::pair<std::size_t, int>> where_;  ///< fiber i -> (group, index in the group)
+  /// The fibers as given, shared by the copies of the section (they never change).
+  std::shared_ptr<const std::vector<Place>> places_;
+  long evaluatedFibers_ = 0;  ///< fibers after merging: the material updates of one pass
   double gj_ = 0.0;
   Vector e_ = Vector::Zero(), eCommitted_ = Vector::Zero(), s_ = Vector::Zero();
   Matrix k_ = Matrix::Zero(), k0_ = Matrix::Zero();

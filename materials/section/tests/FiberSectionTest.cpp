@@ -300,6 +300,52 @@ TEST(FiberSectionTest, CopiesShareOnlyTheirGeometry) {
   }
 }
 
+TEST(FiberSectionTest, FibersAtOneStrainPointAreEvaluatedOnce) {
+  // A plane section given with 4 fibers across the width at each of 10 depths, and 3 bars at one
+  // depth: fibers of one material at one y share their strain history, so the section evaluates
+  // 10 + 1 of them. Its resultants and tangent must be those of a section given the 11 fibers
+  // with the summed areas (to round-off), and every fiber as given keeps its place and area.
+  const Concrete02 concrete(1, Concrete02::Params::withDefaults(-30e3, -0.002, -6e3, -0.006));
+  Steel02::Params sp;
+  sp.Fy = 4e5;
+  sp.E = 2e8;
+  sp.b = 0.01;
+  const Steel02 steel(2, sp);
+  std::vector<FiberSection2d::Fiber> given, summed;
+  for (int iy = 0; iy < 10; ++iy) {
+    const double y = -0.225 + 0.05 * iy;
+    for (int iz = 0; iz < 4; ++iz) given.push_back({y, -0.15 + 0.1 * iz, 0.0125, &concrete});
+    summed.push_back({y, 0.0, 4 * 0.0125, &concrete});
+  }
+  for (int bar = 0; bar < 3; ++bar) given.push_back({0.2, -0.1 + 0.1 * bar, 5e-4, &steel});
+  summed.push_back({0.2, 0.0, 3 * 5e-4, &steel});
+  FiberSection2d sec(1, given), reference(2, summed);
+  ASSERT_EQ(sec.numFibers(), 43);
+  EXPECT_EQ(sec.fiberArea(41), 5e-4);
+  EXPECT_EQ(sec.fiberZ(42), 0.1);
+  const double phiY = 2e-3 / 0.45;
+  for (double phi : {0.5 * phiY, 2.0 * phiY, -1.0 * phiY, 4.0 * phiY}) {
+    const Eigen::Vector2d e(-3e-4, phi);
+    ASSERT_TRUE(ok(sec.setTrialDeformation(e)));
+    ASSERT_TRUE(ok(reference.setTrialDeformation(e)));
+    EXPECT_LT((sec.getStressResultant() - reference.getStressResultant()).norm(),
+              1e-14 * reference.getStressResultant().norm());
+    EXPECT_LT((sec.getSectionTangent() - reference.getSectionTangent()).norm(),
+              1e-14 * reference.getSectionTangent().norm());
+    EXPECT_EQ(sec.fiberStress(40), reference.fiberStress(10));  // a bar: the merged one's
+    EXPECT_EQ(sec.fiberStrain(5), reference.fiberStrain(1));    // depth 1, third across
+    sec.commitState();
+    reference.commitState();
+  }
+  EXPECT_EQ(sec.materialUpdates(), 4 * 11);
+  // In 3D the strain depends on z too: the same fibers are all evaluated.
+  std::vector<FiberSection3d::Fiber> spatial;
+  for (const auto& f : given) spatial.push_back({f.y, f.z, f.area, f.material});
+  FiberSection3d sec3(3, spatial);
+  ASSERT_TRUE(ok(sec3.setTrialDeformation(Eigen::Vector4d(-3e-4, phiY, phiY, 0.0))));
+  EXPECT_EQ(sec3.materialUpdates(), 43);
+}
+
 TEST(FiberSectionTest, NonFiniteFiberStressFailsTheSection) {
   // An infinite strain drives Steel02's Menegotto-Pinto ratio to inf / inf (NaN), which the
   // material alone reports as NonFinite; the section must report the same, in 2D and in 3D, and
