@@ -2,6 +2,7 @@
 #pragma once
 
 #include <cassert>
+#include <cstring>
 #include <memory>
 #include <optional>
 #include <span>
@@ -38,16 +39,29 @@ class ElasticBeamColumn : public FixedSizeElement<2, FrameTraits<Ndm>::kDofPerNo
   Eigen::Ref<const Eigen::MatrixXd> committedStiff() const override { return this->kc_; }
 
   bool acceptsBeamLoads() const override { return true; }
-  void zeroLoad() override { loads_.clear(); }
+  void zeroLoad() override {
+    if (loads_.empty()) return;
+    loads_.clear();
+    stateCurrent_ = false;
+  }
   void addLoad(const BeamLoad& load, double factor) override {
     loads_.add(load, factor, transf_->initialLength());
+    stateCurrent_ = false;
   }
 
   [[nodiscard]] Status update(const Kinematics& trial) override {
+    // Under a linear transformation the state is a function of the displacements and member
+    // loads alone: the same displacements, bit for bit, give the same state, which is kept. (A
+    // transient step's predictor leaves the displacements at the committed ones and updates
+    // every element; on a linear frame that was half of all element updates.)
+    if (stateCurrent_ && std::memcmp(trial.u.data(), uTrial_.data(), sizeof(uTrial_)) == 0)
+      return Status::Ok;
     uTrial_ = trial.u;
     formState(uTrial_);
     // x * 0 is 0 for a finite x and NaN otherwise: one branch-free pass instead of allFinite().
-    return (this->f_.array() * 0.0).sum() == 0.0 ? Status::Ok : Status::NonFinite;
+    const bool finite = (this->f_.array() * 0.0).sum() == 0.0;
+    stateCurrent_ = finite && constantTangent_;
+    return finite ? Status::Ok : Status::NonFinite;
   }
   void commitState() override {
     transf_->commitState();
@@ -60,6 +74,7 @@ class ElasticBeamColumn : public FixedSizeElement<2, FrameTraits<Ndm>::kDofPerNo
     transf_->revertToLastCommit();
     uTrial_ = uCommitted_;
     formState(uTrial_);
+    stateCurrent_ = false;
   }
   void revertToStart() override {
     transf_->revertToStart();
@@ -98,6 +113,7 @@ class ElasticBeamColumn : public FixedSizeElement<2, FrameTraits<Ndm>::kDofPerNo
     uTrial_.setZero();
     uCommitted_.setZero();
     formState(uTrial_);
+    stateCurrent_ = false;
   }
 
   std::unique_ptr<Transf> transf_;
@@ -122,6 +138,8 @@ class ElasticBeamColumn : public FixedSizeElement<2, FrameTraits<Ndm>::kDofPerNo
   BeamMemberLoads<Transf::Basic::RowsAtCompileTime> loads_;
   bool constantCompat_ = false;   ///< B constant: k_ = k0_ + geometric part
   bool constantTangent_ = false;  ///< B constant and no geometric part: k_ = k0_ always
+  /// The state is that of uTrial_ and the current member loads (kept by an update at uTrial_).
+  bool stateCurrent_ = false;
   Vector uTrial_ = Vector::Zero();
   Vector uCommitted_ = Vector::Zero();
 };

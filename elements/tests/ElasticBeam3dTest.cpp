@@ -7,6 +7,7 @@
 #include <Eigen/Geometry>
 #include <cmath>
 
+#include "elements/BeamLoad.h"
 #include "elements/beam/ElasticBeam3d.h"
 #include "elements/tests/ElementChecks.h"
 #include "elements/transform/LinearTransf.h"
@@ -201,6 +202,46 @@ TEST(ElasticBeam3dTest, RejectsBadGeometry) {
   ElasticBeam3d zero(1, 1, 2, params(), std::make_unique<LinearTransf3d>(1, vecxz()));
   EXPECT_THROW(zero.initialize({kXi, kXi}), InputError);
   EXPECT_THROW((ElasticBeam3d::Params{kA, kE, 0.0, kJ, kIy, kIz}.validate()), InputError);
+}
+
+TEST(ElasticBeam3dTest, UpdateAtTheSameDisplacementsFollowsLoadsAndReverts) {
+  // The beam keeps its state when updated at the same displacements; what else changes the
+  // state (member loads, a revert) must still show. Expected forces: k0 u, plus for a uniform
+  // load w along local y the end shears -w L / 2 and end moments -+w L^2 / 12 in local axes.
+  auto beam = makeBeam("Linear");
+  Eigen::VectorXd u1(12), u2(12);
+  for (int i = 0; i < 12; ++i) {
+    u1(i) = 1e-4 * (i + 1) * (i % 2 == 0 ? 1.0 : -1.0);
+    u2(i) = 2.5 * u1(i);
+  }
+  const Eigen::MatrixXd k0 = beam->initialStiff();
+  auto expectForce = [&](const Eigen::VectorXd& expected) {
+    EXPECT_LT((beam->resistingForce() - expected).norm(), kTol * expected.norm());
+  };
+  ASSERT_TRUE(ok(beam->update(state(u1).kinematics())));
+  expectForce(k0 * u1);
+  BeamLoad w;
+  w.w = Eigen::Vector3d(0.0, 10.0, 0.0);
+  beam->addLoad(w, 1.0);
+  ASSERT_TRUE(ok(beam->update(state(u1).kinematics())));  // same displacements, new load
+  const Eigen::Matrix3d r = beam->transformation().axes();  // rows: local x, y, z
+  Eigen::VectorXd reactions = Eigen::VectorXd::Zero(12);
+  const double wl = 10.0 * kL;
+  reactions.segment<3>(0) = r.transpose() * Eigen::Vector3d(0.0, -wl / 2, 0.0);
+  reactions.segment<3>(3) = r.transpose() * Eigen::Vector3d(0.0, 0.0, -wl * kL / 12);
+  reactions.segment<3>(6) = r.transpose() * Eigen::Vector3d(0.0, -wl / 2, 0.0);
+  reactions.segment<3>(9) = r.transpose() * Eigen::Vector3d(0.0, 0.0, wl * kL / 12);
+  expectForce(k0 * u1 + reactions);
+  beam->zeroLoad();
+  ASSERT_TRUE(ok(beam->update(state(u1).kinematics())));
+  expectForce(k0 * u1);
+  beam->commitState();
+  ASSERT_TRUE(ok(beam->update(state(u2).kinematics())));
+  expectForce(k0 * u2);
+  beam->revertToLastCommit();
+  expectForce(k0 * u1);
+  ASSERT_TRUE(ok(beam->update(state(u2).kinematics())));
+  expectForce(k0 * u2);
 }
 
 }  // namespace
