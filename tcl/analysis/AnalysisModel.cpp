@@ -560,56 +560,88 @@ void AnalysisModel::formResidual(const AssemblyCoefficients& c, Eigen::VectorXd&
   }
 }
 
-void AnalysisModel::addElementTangent(double* values, ElementLink& l,
-                                      const AssemblyCoefficients& c) const {
+void AnalysisModel::addElementTangent(double* values, ElementLink& l, const AssemblyCoefficients& c,
+                                      TangentTerms terms) const {
   const elements::Element& e = *l.element;
   Eigen::MatrixXd& local = l.work;
-  const auto k = c.stiffness == StiffnessKind::Current ? e.tangentStiff() : e.initialStiff();
-  local.noalias() = c.cK * k;
-  if (c.cC != 0.0) {
-    local.noalias() += c.cC * e.dampingTangent();
-    if (l.rayleighOn) {
-      const auto& r = l.rayleigh;
-      if (r.alphaM != 0.0) local.noalias() += (c.cC * r.alphaM) * e.mass();
-      if (r.betaK != 0.0) local.noalias() += (c.cC * r.betaK) * e.tangentStiff();
-      if (r.betaK0 != 0.0) local.noalias() += (c.cC * r.betaK0) * e.initialStiff();
-      if (r.betaKc != 0.0) local.noalias() += (c.cC * r.betaKc) * e.committedStiff();
+  const bool varying = terms != TangentTerms::Constant;
+  const bool constant = terms != TangentTerms::Varying;
+  const auto& r = l.rayleigh;
+  if (varying) {
+    const auto k = c.stiffness == StiffnessKind::Current ? e.tangentStiff() : e.initialStiff();
+    local.noalias() = c.cK * k;
+    if (c.cC != 0.0) {
+      local.noalias() += c.cC * e.dampingTangent();
+      if (l.rayleighOn) {
+        if (r.betaK != 0.0) local.noalias() += (c.cC * r.betaK) * e.tangentStiff();
+        if (r.betaKc != 0.0) local.noalias() += (c.cC * r.betaKc) * e.committedStiff();
+      }
     }
+  } else {
+    const bool damped = c.cC != 0.0 && l.rayleighOn && (r.alphaM != 0.0 || r.betaK0 != 0.0);
+    if (!damped && c.cM == 0.0) return;
+    local.setZero(e.numDof(), e.numDof());
   }
-  if (c.cM != 0.0) local.noalias() += c.cM * e.mass();
+  if (constant) {
+    if (c.cC != 0.0 && l.rayleighOn) {
+      if (r.alphaM != 0.0) local.noalias() += (c.cC * r.alphaM) * e.mass();
+      if (r.betaK0 != 0.0) local.noalias() += (c.cC * r.betaK0) * e.initialStiff();
+    }
+    if (c.cM != 0.0) local.noalias() += c.cM * e.mass();
+  }
   addElementMatrix(values, l, local);
 }
 
 const Eigen::SparseMatrix<double>& AnalysisModel::formTangent(const AssemblyCoefficients& c) {
   double* values = A_.valuePtr();
   const auto nnz = static_cast<std::size_t>(A_.nonZeros());
-  // What cannot change between assemblies with the same coefficients (linear elements, nodal
-  // masses, penalty rows) is summed once and copied; only the other elements are formed again.
-  if (!constantFor_ || !constantFor_->sameMatrix(c)) {
-    std::fill(values, values + nnz, 0.0);
-    for (ElementLink& l : awakeLinks())
-      if (l.element->isLinear() && l.element->isActive()) addElementTangent(values, l, c);
-    if (c.cM != 0.0 || c.cC != 0.0) {
-      for (NodeLink& nl : nodes_) {
-        const double f = c.cM + c.cC * nl.alphaM;
-        const double* m = nl.node->mass().data();
-        for (const MatEntry& me : nl.mass) values[me.value] += f * me.coef * m[me.local];
+  // What cannot change between assemblies with the same coefficients is summed once and copied:
+  // linear elements, nodal masses, penalty rows, and the mass and initial-stiffness damping of
+  // the other elements; those are formed again for their tangent and other damping terms alone.
+  // An element that turns active or inactive (a contact pair) makes the constant part anew.
+  for (;;) {
+    if (!constantFor_ || !constantFor_->sameMatrix(c)) {
+      std::fill(values, values + nnz, 0.0);
+      for (ElementLink& l : awakeLinks()) {
+        const bool active = l.element->isActive();
+        if (l.element->isLinear()) {
+          if (active) addElementTangent(values, l, c);
+        } else {
+          l.constantActive = active;
+          if (active) addElementTangent(values, l, c, TangentTerms::Constant);
+        }
       }
+      if (c.cM != 0.0 || c.cC != 0.0) {
+        for (NodeLink& nl : nodes_) {
+          const double f = c.cM + c.cC * nl.alphaM;
+          const double* m = nl.node->mass().data();
+          for (const MatEntry& me : nl.mass) values[me.value] += f * me.coef * m[me.local];
+        }
+      }
+      for (const PenaltyRow& row : penalties_) {
+        std::size_t idx = 0;
+        for (const auto& a : row.eqs)
+          for (const auto& b : row.eqs)
+            values[row.valueIndex[idx++]] += c.cK * row.alpha * a.second * b.second;
+      }
+      constantValues_.assign(values, values + nnz);
+      constantFor_ = c;
+    } else {
+      std::copy(constantValues_.begin(), constantValues_.end(), values);
     }
-    for (const PenaltyRow& row : penalties_) {
-      std::size_t idx = 0;
-      for (const auto& a : row.eqs)
-        for (const auto& b : row.eqs)
-          values[row.valueIndex[idx++]] += c.cK * row.alpha * a.second * b.second;
+    bool activityChanged = false;
+    for (ElementLink& l : awakeLinks()) {
+      if (l.element->isLinear()) continue;
+      const bool active = l.element->isActive();
+      if (active != l.constantActive) {
+        activityChanged = true;
+        break;
+      }
+      if (active) addElementTangent(values, l, c, TangentTerms::Varying);
     }
-    constantValues_.assign(values, values + nnz);
-    constantFor_ = c;
-  } else {
-    std::copy(constantValues_.begin(), constantValues_.end(), values);
+    if (!activityChanged) return A_;
+    constantFor_.reset();
   }
-  for (ElementLink& l : awakeLinks())
-    if (!l.element->isLinear() && l.element->isActive()) addElementTangent(values, l, c);
-  return A_;
 }
 
 Eigen::SparseMatrix<double> AnalysisModel::formMass() {

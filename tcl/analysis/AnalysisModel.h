@@ -155,6 +155,9 @@ class AnalysisModel {
     bool rates = true;
     mutable Eigen::VectorXd force;                        // residual work buffer
     Eigen::MatrixXd work;                                 // tangent work buffer
+    // A nonlinear element's constant matrix terms (mass, initial-stiffness Rayleigh damping) are
+    // in the tangent's constant part: was it active when that part was formed?
+    bool constantActive = false;
     contact::NodeToSurfaceContact3d<3>* pair3 = nullptr;  // a contact pair that may sleep
     contact::NodeToSurfaceContact3d<6>* pair6 = nullptr;
     bool asleep = false;  // left out of the pattern and the iterations
@@ -192,7 +195,11 @@ class AnalysisModel {
   /// Adds an element matrix (numDof x numDof) to the matrix values through the scatter indices.
   void addElementMatrix(double* values, const ElementLink& l, const Eigen::MatrixXd& m) const;
   /// Adds cK K + cC C + cM M of one element to the matrix values.
-  void addElementTangent(double* values, ElementLink& l, const AssemblyCoefficients& c) const;
+  /// Which of an element's matrix terms addElementTangent adds: all, those that never change
+  /// (mass and initial-stiffness damping), or the others.
+  enum class TangentTerms { All, Constant, Varying };
+  void addElementTangent(double* values, ElementLink& l, const AssemblyCoefficients& c,
+                         TangentTerms terms = TangentTerms::All) const;
   /// B -= the element force f (local dofs) through the element's equations.
   static void subtractForce(const ElementLink& l, const Eigen::Ref<const Eigen::VectorXd>& f,
                             Eigen::VectorXd& B);
