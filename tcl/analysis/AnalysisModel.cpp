@@ -168,7 +168,14 @@ void AnalysisModel::buildScatter() {
     rowCol.clear();
     rowCol.shrink_to_fit();
   };
-  for (ElementLink& l : elements_) fix(l.mat, l.rowCol);
+  for (ElementLink& l : elements_) {
+    fix(l.mat, l.rowCol);
+    l.matSlots.clear();
+    if (l.direct.empty() || l.mat.empty()) continue;
+    for (const MatEntry& m : l.mat) l.matSlots.emplace_back(m.local, m.value);
+    l.mat.clear();
+    l.mat.shrink_to_fit();
+  }
   // Sleepers after the awake links, each part in the domain's order (the assembly sums in the
   // same order as with every link in place); the pairs that may sleep with their far-test data.
   std::map<const elements::Element*, std::size_t> pairOrder;  // domain order of each pair
@@ -436,7 +443,11 @@ Status AnalysisModel::updateElements() {
 void AnalysisModel::addElementMatrix(double* values, const ElementLink& l,
                                      const Eigen::MatrixXd& m) const {
   const double* local = m.data();
-  for (const MatEntry& e : l.mat) values[e.value] += e.coef * local[e.local];
+  if (l.matSlots.empty()) {
+    for (const MatEntry& e : l.mat) values[e.value] += e.coef * local[e.local];
+    return;
+  }
+  for (const auto& [offset, value] : l.matSlots) values[value] += local[offset];
 }
 
 void AnalysisModel::buildConstantDynamics() {

@@ -141,7 +141,11 @@ class AnalysisModel {
     elements::Element* element;
     std::vector<domain::Node*> nodes;
     std::vector<VecEntry> vec;
-    std::vector<MatEntry> mat;
+    std::vector<MatEntry> mat;  // empty when matSlots scatters
+    // With `direct` (every dof one equation or none, coefficient 1): `mat` without its
+    // coefficients, half the bytes that the assembly of every iteration reads for every
+    // nonlinear element.
+    std::vector<std::pair<int, int>> matSlots;  // (local, value)
     std::vector<std::pair<int, int>> rowCol;  // (row, column) of each mat entry while building
     domain::RayleighFactors rayleigh;
     bool rayleighOn = false;
