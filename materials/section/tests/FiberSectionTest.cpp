@@ -35,6 +35,18 @@ ElasticPP epp() {
   return ElasticPP(1, p);
 }
 
+/// Concrete and bars of the mixed sections below (tags 1 and 2).
+Concrete02 concrete02() {
+  return Concrete02(1, Concrete02::Params::withDefaults(-30e3, -0.002, -6e3, -0.006));
+}
+Steel02 steel02() {
+  Steel02::Params p;
+  p.Fy = 4e5;
+  p.E = 2e8;
+  p.b = 0.01;
+  return Steel02(2, p);
+}
+
 template <int Ndm>
 FiberSection<Ndm> rectangle(const UniaxialMaterial& mat, double gj = 0.0) {
   FiberList pts;
@@ -196,12 +208,8 @@ TEST(FiberSectionTest, MixedMaterialsSumLikeTheFibersOneByOne) {
   // groups, ENT in the general one): resultants, tangent and the fiber order must be those of
   // the fibers summed one by one with their own material copies, s = sum sigma A a and
   // k = sum Et A a a^T with a = [1, -y, z].
-  const Concrete02 concrete(1, Concrete02::Params::withDefaults(-30e3, -0.002, -6e3, -0.006));
-  Steel02::Params sp;
-  sp.Fy = 4e5;
-  sp.E = 2e8;
-  sp.b = 0.01;
-  const Steel02 steel(2, sp);
+  const Concrete02 concrete = concrete02();
+  const Steel02 steel = steel02();
   ENT::Params ep;
   ep.E = 1e6;
   const ENT ent(3, ep);
@@ -248,12 +256,8 @@ TEST(FiberSectionTest, CopiesShareOnlyTheirGeometry) {
   // but not their states: a copy and the original driven through different histories (trials,
   // commits, reverts) must each give what a section built afresh gives for its own history, bit
   // for bit, in resultants, tangent and fiber stresses and strains.
-  const Concrete02 concrete(1, Concrete02::Params::withDefaults(-30e3, -0.002, -6e3, -0.006));
-  Steel02::Params sp;
-  sp.Fy = 4e5;
-  sp.E = 2e8;
-  sp.b = 0.01;
-  const Steel02 steel(2, sp);
+  const Concrete02 concrete = concrete02();
+  const Steel02 steel = steel02();
   std::vector<FiberSection3d::Fiber> fibers;
   for (int i = 0; i < 24; ++i)
     fibers.push_back({0.4 * std::cos(0.9 * i), 0.3 * std::sin(1.1 * i), 0.01 + 0.002 * (i % 3),
@@ -305,12 +309,8 @@ TEST(FiberSectionTest, FibersAtOneStrainPointAreEvaluatedOnce) {
   // depth: fibers of one material at one y share their strain history, so the section evaluates
   // 10 + 1 of them. Its resultants and tangent must be those of a section given the 11 fibers
   // with the summed areas (to round-off), and every fiber as given keeps its place and area.
-  const Concrete02 concrete(1, Concrete02::Params::withDefaults(-30e3, -0.002, -6e3, -0.006));
-  Steel02::Params sp;
-  sp.Fy = 4e5;
-  sp.E = 2e8;
-  sp.b = 0.01;
-  const Steel02 steel(2, sp);
+  const Concrete02 concrete = concrete02();
+  const Steel02 steel = steel02();
   std::vector<FiberSection2d::Fiber> given, summed;
   for (int iy = 0; iy < 10; ++iy) {
     const double y = -0.225 + 0.05 * iy;
