@@ -206,8 +206,7 @@ inline Status Steel02::computeTrial(const State& committed, State& trial, double
                                                                      : Status::NonFinite;
 }
 
-inline void Steel02::commitTrial(State& state, double strain, double stress,
-                                 double tangent) const {
+inline void Steel02::commitTrial(State& state, double strain, double stress, double tangent) const {
   const double epsP = state.strain + epsIni_;
   const double deps = strain + epsIni_ - epsP;
   const double sigP = state.stress;

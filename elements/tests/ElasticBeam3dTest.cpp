@@ -223,7 +223,7 @@ TEST(ElasticBeam3dTest, UpdateAtTheSameDisplacementsFollowsLoadsAndReverts) {
   BeamLoad w;
   w.w = Eigen::Vector3d(0.0, 10.0, 0.0);
   beam->addLoad(w, 1.0);
-  ASSERT_TRUE(ok(beam->update(state(u1).kinematics())));  // same displacements, new load
+  ASSERT_TRUE(ok(beam->update(state(u1).kinematics())));    // same displacements, new load
   const Eigen::Matrix3d r = beam->transformation().axes();  // rows: local x, y, z
   Eigen::VectorXd reactions = Eigen::VectorXd::Zero(12);
   const double wl = 10.0 * kL;

@@ -74,7 +74,8 @@ TEST(Concrete02Test, CommitFromTrialResponseEqualsTheTrialState) {
       const double target = strain + (peak - strain) * k / 12.0;
       Concrete02::State trial;
       for (int iteration = 0; iteration < 3; ++iteration)
-        ASSERT_TRUE(ok(m.computeTrial(committed, trial, target + jitter(random) / (1 << (2 * iteration)))));
+        ASSERT_TRUE(
+            ok(m.computeTrial(committed, trial, target + jitter(random) / (1 << (2 * iteration)))));
       const double last = k % 4 == 0 ? committed.strain : target;  // some steps do not move
       ASSERT_TRUE(ok(m.computeTrial(committed, trial, last)));
       Concrete02::State viaResponse = committed;

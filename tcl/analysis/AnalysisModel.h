@@ -146,7 +146,7 @@ class AnalysisModel {
     // coefficients, half the bytes that the assembly of every iteration reads for every
     // nonlinear element.
     std::vector<std::pair<int, int>> matSlots;  // (local, value)
-    std::vector<std::pair<int, int>> rowCol;  // (row, column) of each mat entry while building
+    std::vector<std::pair<int, int>> rowCol;    // (row, column) of each mat entry while building
     domain::RayleighFactors rayleigh;
     bool rayleighOn = false;
     Eigen::VectorXd u, v, a;  // gather buffers
@@ -157,8 +157,8 @@ class AnalysisModel {
     // tangent has a force that depends on its displacements alone, and the residual needs its
     // rates only when the elements form their own inertia and damping forces.
     bool rates = true;
-    mutable Eigen::VectorXd force;                        // residual work buffer
-    Eigen::MatrixXd work;                                 // tangent work buffer
+    mutable Eigen::VectorXd force;  // residual work buffer
+    Eigen::MatrixXd work;           // tangent work buffer
     // A nonlinear element's constant matrix terms (mass, initial-stiffness Rayleigh damping) are
     // in the tangent's constant part: was it active when that part was formed?
     bool constantActive = false;

@@ -281,8 +281,8 @@ TEST(FiberSectionTest, CopiesShareOnlyTheirGeometry) {
     }
   };
   for (int k = 1; k <= 6; ++k) {
-    for (auto [section, fresh, sign] : {std::tuple{original.get(), &freshA, 1.0},
-                                        std::tuple{copy.get(), &freshB, -1.0}}) {
+    for (auto [section, fresh, sign] :
+         {std::tuple{original.get(), &freshA, 1.0}, std::tuple{copy.get(), &freshB, -1.0}}) {
       ASSERT_TRUE(ok(section->setTrialDeformation(deformation(k + 3, sign))));  // overshoot
       ASSERT_TRUE(ok(section->setTrialDeformation(deformation(k, sign))));
       ASSERT_TRUE(ok(fresh->setTrialDeformation(deformation(k, sign))));
