@@ -10,10 +10,12 @@
 # viaduct-<nSpans>-<dt>-<contactDt>-<lookAhead>.txt) with the run's line and its quantities (a Tcl
 # dict): every joint's peak and residual longitudinal and transverse gaps and every bearing's
 # peak shear strain, which viaduct-compare.tcl compares with a reference run of the same size.
+# The default dt is the viaducts' (bridge.tcl viaductDt, 0.005 s) at every size, so that the
+# sizes are compared at the same settings.
 set ::bridgeLibraryOnly 1
 source [file join [file dirname [info script]] .. bridge bridge.tcl]
 set nSpans    [lindex $argv 0]
-set dt        [expr {$argc > 1 ? [lindex $argv 1] : $defaultDt}]
+set dt        [expr {$argc > 1 ? [lindex $argv 1] : $viaductDt}]
 set tol       [expr {$argc > 2 ? [lindex $argv 2] : $defaultTol}]
 set contactDt [expr {$argc > 3 ? [lindex $argv 3] : $contactDt}]
 set contactLookahead [expr {$argc > 4 ? [lindex $argv 4] : $contactLookahead}]
