@@ -3,6 +3,8 @@
 
 #include <Eigen/Core>
 #include <Eigen/SparseCore>
+#include <array>
+#include <cstdint>
 #include <functional>
 #include <optional>
 #include <span>
@@ -160,14 +162,28 @@ class AnalysisModel {
     bool asleep = false;  // left out of the pattern and the iterations
   };
   // The pairs that may sleep, in the domain's order, with what a sleeper's once-a-step test reads
-  // (kept here, compact, so that the test does not touch the element or its link).
+  // (kept here, compact, so that the test does not touch the element or its link): its contactor
+  // and the target face it shares with other pairs (FarFace).
   struct PairLink {
     std::size_t link = 0;  // index in elements_
-    contact::FarTest test;
-    std::array<const domain::Node*, 5> nodes{};
+    const domain::Node* contactor = nullptr;
+    Eigen::Vector3d X = Eigen::Vector3d::Zero();  // the contactor's reference coordinates
+    double distance = 0.0;                        // search distance
     contact::NodeToSurfaceContact3d<3>* pair3 = nullptr;
     contact::NodeToSurfaceContact3d<6>* pair6 = nullptr;
+    std::uint32_t face = 0;  // index in farFaces_
     bool asleep = false;
+  };
+  // A target face of pairs that may sleep (a broad phase per face: the pairs of a girder end's
+  // contactors against the other end's face share one): its nodes, reference coordinates and
+  // outward normal, and the top of its slab (ContactSearch::slabTop), formed at most once per
+  // check from the nodes' trial translations; each contactor's bound is then its height above it.
+  struct FarFace {
+    std::array<const domain::Node*, 4> nodes{};
+    std::array<Eigen::Vector3d, 4> X{};
+    Eigen::Vector3d n = Eigen::Vector3d::Zero();
+    double top = 0.0;   // slab top in the check farChecks_ == checked
+    long checked = -1;  // the check that formed top
   };
   struct NodeLink {
     domain::Node* node;
@@ -184,8 +200,12 @@ class AnalysisModel {
   bool wantsSleep(const ElementLink& l) const;
   /// Gather and work buffers of a link for n dofs (once).
   static void allocateBuffers(ElementLink& l, int n);
-  /// Sleeper's far test on its nodes' trial translations (true: still far, trial state set).
-  static bool sleeperStaysFar(const PairLink& p, double dt);
+  /// Sleeper's far test on its nodes' trial translations (true: still far, trial state set):
+  /// the slab bound over the face's top, and the pair's whole test (FarTest) when that is not
+  /// enough.
+  bool sleeperStaysFar(const PairLink& p, double dt);
+  /// The pair's own far test (the slab and the bounding sphere) on its five nodes.
+  bool sleeperStaysFarAlone(const PairLink& p, double dt) const;
   void buildScatter();
   void buildConstantDynamics();
   [[nodiscard]] Status updateElement(ElementLink& l, double dt) const;
@@ -232,6 +252,8 @@ class AnalysisModel {
   std::map<const elements::Element*, bool> sleepWanted_;  // pairs to wake (false) or put to sleep
   long sleeping_ = 0;
   std::vector<PairLink> pairLinks_;
+  std::vector<FarFace> farFaces_;
+  long farChecks_ = 0;  // checks of the sleepers so far (FarFace::checked)
   // elements_ holds the awake links first (in the domain's order) and the sleepers after them, so
   // the loops of the iterations stop at awake_ and never touch a sleeper.
   std::size_t awake_ = 0;
