@@ -163,7 +163,7 @@ class AnalysisModel {
   };
   // The pairs that may sleep, in the domain's order, with what a sleeper's once-a-step test reads
   // (kept here, compact, so that the test does not touch the element or its link): its contactor
-  // and the target face it shares with other pairs (FarFace).
+  // here, its target face in the FarFace of its run.
   struct PairLink {
     std::size_t link = 0;  // index in elements_
     const domain::Node* contactor = nullptr;
@@ -171,19 +171,17 @@ class AnalysisModel {
     double distance = 0.0;                        // search distance
     contact::NodeToSurfaceContact3d<3>* pair3 = nullptr;
     contact::NodeToSurfaceContact3d<6>* pair6 = nullptr;
-    std::uint32_t face = 0;  // index in farFaces_
     bool asleep = false;
   };
-  // A target face of pairs that may sleep (a broad phase per face: the pairs of a girder end's
-  // contactors against the other end's face share one): its nodes, reference coordinates and
-  // outward normal, and the top of its slab (ContactSearch::slabTop), formed at most once per
-  // check from the nodes' trial translations; each contactor's bound is then its height above it.
+  // A run of consecutive pairs (in the domain's order) against one target face: the same four
+  // nodes in the same order, reference coordinates and outward normal (`pounding` defines a girder
+  // end's contactors against the other end's face one after the other). The far test forms the
+  // face's slab top once per run (a broad phase per face) and each contactor's height above it.
   struct FarFace {
     std::array<const domain::Node*, 4> nodes{};
     std::array<Eigen::Vector3d, 4> X{};
     Eigen::Vector3d n = Eigen::Vector3d::Zero();
-    double top = 0.0;   // slab top in the check farChecks_ == checked
-    long checked = -1;  // the check that formed top
+    std::uint32_t first = 0, end = 0;  // its pairs: pairLinks_[first, end)
   };
   struct NodeLink {
     domain::Node* node;
@@ -200,12 +198,14 @@ class AnalysisModel {
   bool wantsSleep(const ElementLink& l) const;
   /// Gather and work buffers of a link for n dofs (once).
   static void allocateBuffers(ElementLink& l, int n);
+  /// The face's slab top (ContactSearch::slabTop) on its nodes' trial translations.
+  static double slabTopNow(const FarFace& f);
   /// Sleeper's far test on its nodes' trial translations (true: still far, trial state set):
-  /// the slab bound over the face's top, and the pair's whole test (FarTest) when that is not
-  /// enough.
-  bool sleeperStaysFar(const PairLink& p, double dt);
+  /// its height above the face's slab top `top`, and the pair's whole test (FarTest) when that
+  /// does not show it far.
+  static bool sleeperStaysFar(const PairLink& p, const FarFace& f, double top, double dt);
   /// The pair's own far test (the slab and the bounding sphere) on its five nodes.
-  bool sleeperStaysFarAlone(const PairLink& p, double dt) const;
+  static bool sleeperStaysFarAlone(const PairLink& p, const FarFace& f, double dt);
   void buildScatter();
   void buildConstantDynamics();
   [[nodiscard]] Status updateElement(ElementLink& l, double dt) const;
@@ -252,8 +252,7 @@ class AnalysisModel {
   std::map<const elements::Element*, bool> sleepWanted_;  // pairs to wake (false) or put to sleep
   long sleeping_ = 0;
   std::vector<PairLink> pairLinks_;
-  std::vector<FarFace> farFaces_;
-  long farChecks_ = 0;  // checks of the sleepers so far (FarFace::checked)
+  std::vector<FarFace> farFaces_;  // runs of pairLinks_ by target face, in order
   // elements_ holds the awake links first (in the domain's order) and the sleepers after them, so
   // the loops of the iterations stop at awake_ and never touch a sleeper.
   std::size_t awake_ = 0;
