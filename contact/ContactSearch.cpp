@@ -12,13 +12,9 @@ double ContactSearch::distanceLowerBound(const Eigen::Vector3d& contactor,
 }
 
 namespace {
-/// Height of the contactor above the face's highest corner along the outward normal n. One-sided:
-/// only the outward side counts (behind the face is penetration, never far).
 double slabDistance(const Eigen::Vector3d& contactor, const std::array<Eigen::Vector3d, 4>& quad,
                     const Eigen::Vector3d& n) noexcept {
-  double zMax = n.dot(quad[0]);
-  for (std::size_t i = 1; i < 4; ++i) zMax = std::max(zMax, n.dot(quad[i]));
-  return n.dot(contactor) - zMax;
+  return ContactSearch::slabBound(contactor, n, ContactSearch::slabTop(quad, n));
 }
 }  // namespace
 

@@ -2,6 +2,7 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <algorithm>
 #include <array>
 #include <limits>
 
@@ -38,6 +39,24 @@ class ContactSearch {
   static double distanceLowerBound(const Eigen::Vector3d& contactor,
                                    const std::array<Eigen::Vector3d, 4>& quad,
                                    const Eigen::Vector3d& n) noexcept;
+
+  /// Top of the slab the bilinear quad lies in along the unit vector n: its highest corner,
+  /// max_i n.x_i. Pairs that share a target face share it, so a broad phase over many contactors
+  /// forms it once per face (AnalysisModel's far test of sleeping pairs).
+  static double slabTop(const std::array<Eigen::Vector3d, 4>& quad,
+                        const Eigen::Vector3d& n) noexcept {
+    double top = n.dot(quad[0]);
+    for (std::size_t i = 1; i < 4; ++i) top = std::max(top, n.dot(quad[i]));
+    return top;
+  }
+  /// Slab bound of a contactor against a face with slabTop `top`: its height n.x - top above the
+  /// face's highest corner. One-sided: only the outward side counts (behind the face is
+  /// penetration, never far). Together with slabTop the same arithmetic as isFar's slab bound,
+  /// so a caller that forms the top once per face gets the same bound to the bit.
+  static double slabBound(const Eigen::Vector3d& contactor, const Eigen::Vector3d& n,
+                          double top) noexcept {
+    return n.dot(contactor) - top;
+  }
 
   /// True when the pair is farther apart than the search distance (and so may be skipped).
   /// Writes the distance lower bound to `bound` when the test was made: the slab bound when that

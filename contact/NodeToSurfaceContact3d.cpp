@@ -375,7 +375,7 @@ bool NodeToSurfaceContact3d<Ndf>::updateIfFar(const std::array<Eigen::Vector3d, 
 }
 
 template <int Ndf>
-bool NodeToSurfaceContact3d<Ndf>::setFarTrial(double bound, double dt) {
+bool NodeToSurfaceContact3d<Ndf>::setFarTrialFromCommitted(double bound, double dt) {
   if (!search_.enabled()) return false;
   if (settledFar_) {  // the step of a far pair from a far committed state: the gap alone changes
     trial_.gap = bound;

@@ -154,8 +154,15 @@ class NodeToSurfaceContact3d : public elements::FixedSizeElement<5, Ndf, 0u> {
   /// The second half of updateIfFar, for a pair whose far test (farTest()) the caller made: sets
   /// the trial state of a far pair with distance bound `bound` and returns true, or changes
   /// nothing and returns false when the step must be evaluated (a release step). Without a
-  /// search distance: false.
-  bool setFarTrial(double bound, double dt);
+  /// search distance: false. Inline for the step of a settled far pair (the gap alone changes),
+  /// which is what every sleeping pair's step takes.
+  bool setFarTrial(double bound, double dt) {
+    if (settledFar_ && search_.enabled()) {
+      trial_.gap = bound;
+      return true;
+    }
+    return setFarTrialFromCommitted(bound, dt);
+  }
   /// The data of the far test (a copy, for the analysis' own arrays).
   FarTest farTest() const { return FarTest{X_, frame_.n, search_}; }
   /// True when the pair was far (beyond its search distance) in the last committed state.
@@ -182,6 +189,8 @@ class NodeToSurfaceContact3d : public elements::FixedSizeElement<5, Ndf, 0u> {
 
  private:
   void clearForces();
+  /// setFarTrial's other cases: from a far committed state, or the release step (false).
+  bool setFarTrialFromCommitted(double bound, double dt);
   /// True when `s` is open, off the quad, without force or dashpot power (the far state).
   static bool quietFar(const NodeToSurfaceState& s) noexcept {
     return s.status == ContactStatus::Open && !s.projValid && s.force.isZero(0.0) &&

@@ -418,6 +418,21 @@ TEST(NodeToSurfaceContact3dTest, ParallelFacesAcrossAGapAreFarByTheSlab) {
   EXPECT_NEAR(ContactSearch::distanceLowerBound(Eigen::Vector3d(1, 1, 0.5), warped,
                                                 Eigen::Vector3d(0, 0, 1)),
               0.4, kTol);
+  // The same slab in two parts, as a broad phase per face forms it: the top once (the highest
+  // corner, 0.1), then a contactor's height above it (0.5 - 0.1); along a tilted unit normal
+  // (0.6, 0, 0.8) the corners' heights are 0, 1.28, 1.2 and -0.08, so the top is 1.28 and the
+  // point (1, 1, 0.5) is 0.6 + 0.4 - 1.28 = -0.28 above it. The far test takes the same bound.
+  EXPECT_EQ(ContactSearch::slabTop(warped, Eigen::Vector3d(0, 0, 1)), 0.1);
+  EXPECT_NEAR(ContactSearch::slabBound(Eigen::Vector3d(1, 1, 0.5), Eigen::Vector3d(0, 0, 1), 0.1),
+              0.4, kTol);
+  const Eigen::Vector3d tilted(0.6, 0.0, 0.8);
+  EXPECT_NEAR(ContactSearch::slabTop(warped, tilted), 1.28, kTol);
+  EXPECT_NEAR(ContactSearch::slabBound(Eigen::Vector3d(1, 1, 0.5), tilted, 1.28), -0.28, kTol);
+  double bound = 0.0;
+  EXPECT_TRUE(ContactSearch(0.3).isFar(Eigen::Vector3d(1, 1, 0.5), warped, Eigen::Vector3d(0, 0, 1),
+                                       bound));
+  EXPECT_EQ(bound, ContactSearch::slabBound(Eigen::Vector3d(1, 1, 0.5), Eigen::Vector3d(0, 0, 1),
+                                            ContactSearch::slabTop(warped, Eigen::Vector3d(0, 0, 1))));
 }
 
 // updateIfFar gives the state update() gives for a far pair, and declines a near one.

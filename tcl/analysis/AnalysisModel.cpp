@@ -7,6 +7,8 @@
 #include "tcl/analysis/AnalysisModel.h"
 
 #include <algorithm>
+#include <limits>
+#include <map>
 #include <span>
 #include <string>
 
@@ -185,16 +187,42 @@ void AnalysisModel::buildScatter() {
                         [](const ElementLink& l) { return !l.asleep; });
   awake_ = elements_.size() - static_cast<std::size_t>(sleeping_);
   pairLinks_.assign(pairOrder.size(), PairLink{});
+  std::vector<FarFace> faceOf(pairOrder.size());
   for (std::size_t k = 0; k < elements_.size(); ++k) {
     const ElementLink& l = elements_[k];
     if (!l.pair3 && !l.pair6) continue;
-    PairLink& p = pairLinks_[pairOrder.at(l.element)];
+    const std::size_t i = pairOrder.at(l.element);
+    PairLink& p = pairLinks_[i];
+    const contact::FarTest test = l.pair3 ? l.pair3->farTest() : l.pair6->farTest();
     p.link = k;
-    p.test = l.pair3 ? l.pair3->farTest() : l.pair6->farTest();
-    for (std::size_t j = 0; j < 5; ++j) p.nodes[j] = l.nodes[j];
+    p.contactor = l.nodes[0];
+    p.X = test.X[0];
+    p.distance = test.search.distance();
     p.pair3 = l.pair3;
     p.pair6 = l.pair6;
     p.asleep = l.asleep;
+    FarFace& f = faceOf[i];
+    for (std::size_t j = 0; j < 4; ++j) {
+      f.nodes[j] = l.nodes[j + 1];
+      f.X[j] = test.X[j + 1];
+    }
+    f.n = test.n;
+  }
+  // Runs of consecutive pairs against the same face (bitwise the same data, so the slab top the
+  // run forms once is the one each pair would form).
+  farFaces_.clear();
+  for (std::size_t i = 0; i < faceOf.size(); ++i) {
+    const FarFace& f = faceOf[i];
+    if (!farFaces_.empty()) {
+      FarFace& last = farFaces_.back();
+      if (last.nodes == f.nodes && last.X == f.X && last.n == f.n) {
+        last.end = static_cast<std::uint32_t>(i + 1);
+        continue;
+      }
+    }
+    farFaces_.push_back(f);
+    farFaces_.back().first = static_cast<std::uint32_t>(i);
+    farFaces_.back().end = static_cast<std::uint32_t>(i + 1);
   }
   for (NodeLink& nl : nodes_) fix(nl.mass, nl.rowCol);
   constantFor_.reset();
@@ -223,31 +251,68 @@ bool AnalysisModel::wantsSleep(const ElementLink& l) const {
   return l.pair3 ? l.pair3->committedFar() : l.pair6->committedFar();
 }
 
-bool AnalysisModel::sleeperStaysFar(const PairLink& p, double dt) {
+double AnalysisModel::slabTopNow(const FarFace& f) {
+  std::array<Eigen::Vector3d, 4> quad;
+  for (std::size_t j = 0; j < 4; ++j) quad[j] = f.X[j] + f.nodes[j]->disp.head<3>();
+  return contact::ContactSearch::slabTop(quad, f.n);
+}
+
+bool AnalysisModel::sleeperStaysFar(const PairLink& p, const FarFace& f, double top, double dt) {
+  // The same arithmetic as the pair's own test (ContactSearch::isFar takes the slab first), so
+  // the bound, and with it the gap the pair reports, is the same to the bit; when the slab does
+  // not show the pair far, the pair's whole test decides. A finite slab bound needs a finite
+  // position (a non-finite coordinate makes n.x non-finite), which the pair's test asks for.
+  const Eigen::Vector3d x = p.X + p.contactor->disp.head<3>();
+  const double slab = contact::ContactSearch::slabBound(x, f.n, top);
+  if (!(slab > p.distance && slab < std::numeric_limits<double>::infinity()))
+    return sleeperStaysFarAlone(p, f, dt);
+  return p.pair3 ? p.pair3->setFarTrial(slab, dt) : p.pair6->setFarTrial(slab, dt);
+}
+
+bool AnalysisModel::sleeperStaysFarAlone(const PairLink& p, const FarFace& f, double dt) {
+  const contact::FarTest test = p.pair3 ? p.pair3->farTest() : p.pair6->farTest();
   std::array<Eigen::Vector3d, 5> u;
-  for (std::size_t j = 0; j < 5; ++j) u[j] = p.nodes[j]->disp.head<3>();
+  u[0] = p.contactor->disp.head<3>();
+  for (std::size_t j = 0; j < 4; ++j) u[j + 1] = f.nodes[j]->disp.head<3>();
   double bound = 0.0;
-  if (!p.test.isFar(u, bound)) return false;
+  if (!test.isFar(u, bound)) return false;
   return p.pair3 ? p.pair3->setFarTrial(bound, dt) : p.pair6->setFarTrial(bound, dt);
 }
 
 AnalysisModel::SleepCheck AnalysisModel::checkSleepingPairs() {
   SleepCheck result = SleepCheck::Unchanged;
   const double dt = time_ - domain_.committedTime();
-  for (const PairLink& p : pairLinks_) {
-    if (p.asleep && sleeperStaysFar(p, dt)) continue;
-    ElementLink& l = elements_[p.link];
-    if (l.asleep) {
-      // Near: its full update for this trial state; with force the step missed it.
-      allocateBuffers(l, l.element->numDof());
-      const Status st = updateElement(l, dt);
-      ++elementUpdates_;
-      sleepWanted_[l.element] = false;
-      if (!ok(st) || l.element->isActive()) return SleepCheck::RedoStep;
-      result = SleepCheck::PatternChange;
-    } else if (l.pair3 ? l.pair3->trialFarBeyond(2.0) : l.pair6->trialFarBeyond(2.0)) {
-      sleepWanted_[l.element] = true;
-      if (result == SleepCheck::Unchanged) result = SleepCheck::PatternChange;
+  // Broad phase per target face: the bounding volume of a master surface is formed once and
+  // tested against each of its slave nodes, as in the global search of contact codes (the
+  // slave-master search of Benson and Hallquist, CMAME 78 (1990) 141-163; bounding volumes per
+  // contact surface, Yang and Laursen, Comput Mech 41 (2008) 189-205). Here the volume is the
+  // face's slab along its normal: its top is formed once per run of pairs against the face, and
+  // each of its contactors costs its height above it. The pairs are taken in the domain's order.
+  for (const FarFace& f : farFaces_) {
+    double top = 0.0;
+    bool topFormed = false;
+    for (std::uint32_t i = f.first; i < f.end; ++i) {
+      const PairLink& p = pairLinks_[i];
+      if (p.asleep) {
+        if (!topFormed) {
+          top = slabTopNow(f);
+          topFormed = true;
+        }
+        if (sleeperStaysFar(p, f, top, dt)) continue;
+      }
+      ElementLink& l = elements_[p.link];
+      if (l.asleep) {
+        // Near: its full update for this trial state; with force the step missed it.
+        allocateBuffers(l, l.element->numDof());
+        const Status st = updateElement(l, dt);
+        ++elementUpdates_;
+        sleepWanted_[l.element] = false;
+        if (!ok(st) || l.element->isActive()) return SleepCheck::RedoStep;
+        result = SleepCheck::PatternChange;
+      } else if (l.pair3 ? l.pair3->trialFarBeyond(2.0) : l.pair6->trialFarBeyond(2.0)) {
+        sleepWanted_[l.element] = true;
+        if (result == SleepCheck::Unchanged) result = SleepCheck::PatternChange;
+      }
     }
   }
   return result;
@@ -435,8 +500,9 @@ Status AnalysisModel::updateElements() {
     }
   }
   elementUpdates_ += count;
-  for (const Status s : elementStatus_)
-    if (!ok(s)) return s;
+  // The awake links' statuses (a sleeper's entry is never written).
+  for (std::size_t k = 0; k < awake_; ++k)
+    if (const Status s = elementStatus_[k]; !ok(s)) return s;
   return Status::Ok;
 }
 

@@ -3,6 +3,8 @@
 
 #include <Eigen/Core>
 #include <Eigen/SparseCore>
+#include <array>
+#include <cstdint>
 #include <functional>
 #include <optional>
 #include <span>
@@ -167,14 +169,26 @@ class AnalysisModel {
     bool asleep = false;  // left out of the pattern and the iterations
   };
   // The pairs that may sleep, in the domain's order, with what a sleeper's once-a-step test reads
-  // (kept here, compact, so that the test does not touch the element or its link).
+  // (kept here, compact, so that the test does not touch the element or its link): its contactor
+  // here, its target face in the FarFace of its run.
   struct PairLink {
     std::size_t link = 0;  // index in elements_
-    contact::FarTest test;
-    std::array<const domain::Node*, 5> nodes{};
+    const domain::Node* contactor = nullptr;
+    Eigen::Vector3d X = Eigen::Vector3d::Zero();  // the contactor's reference coordinates
+    double distance = 0.0;                        // search distance
     contact::NodeToSurfaceContact3d<3>* pair3 = nullptr;
     contact::NodeToSurfaceContact3d<6>* pair6 = nullptr;
     bool asleep = false;
+  };
+  // A run of consecutive pairs (in the domain's order) against one target face: the same four
+  // nodes in the same order, reference coordinates and outward normal (`pounding` defines a girder
+  // end's contactors against the other end's face one after the other). The far test forms the
+  // face's slab top once per run (a broad phase per face) and each contactor's height above it.
+  struct FarFace {
+    std::array<const domain::Node*, 4> nodes{};
+    std::array<Eigen::Vector3d, 4> X{};
+    Eigen::Vector3d n = Eigen::Vector3d::Zero();
+    std::uint32_t first = 0, end = 0;  // its pairs: pairLinks_[first, end)
   };
   struct NodeLink {
     domain::Node* node;
@@ -191,8 +205,14 @@ class AnalysisModel {
   bool wantsSleep(const ElementLink& l) const;
   /// Gather and work buffers of a link for n dofs (once).
   static void allocateBuffers(ElementLink& l, int n);
-  /// Sleeper's far test on its nodes' trial translations (true: still far, trial state set).
-  static bool sleeperStaysFar(const PairLink& p, double dt);
+  /// The face's slab top (ContactSearch::slabTop) on its nodes' trial translations.
+  static double slabTopNow(const FarFace& f);
+  /// Sleeper's far test on its nodes' trial translations (true: still far, trial state set):
+  /// its height above the face's slab top `top`, and the pair's whole test (FarTest) when that
+  /// does not show it far.
+  static bool sleeperStaysFar(const PairLink& p, const FarFace& f, double top, double dt);
+  /// The pair's own far test (the slab and the bounding sphere) on its five nodes.
+  static bool sleeperStaysFarAlone(const PairLink& p, const FarFace& f, double dt);
   void buildScatter();
   void buildConstantDynamics();
   [[nodiscard]] Status updateElement(ElementLink& l, double dt) const;
@@ -243,6 +263,7 @@ class AnalysisModel {
   std::map<const elements::Element*, bool> sleepWanted_;  // pairs to wake (false) or put to sleep
   long sleeping_ = 0;
   std::vector<PairLink> pairLinks_;
+  std::vector<FarFace> farFaces_;  // runs of pairLinks_ by target face, in order
   // elements_ holds the awake links first (in the domain's order) and the sleepers after them, so
   // the loops of the iterations stop at awake_ and never touch a sleeper.
   std::size_t awake_ = 0;

@@ -1,0 +1,226 @@
+// SPDX-License-Identifier: MIT
+// The once-a-step far test of sleeping contact pairs, made per target face (the face's slab top
+// formed once for every pair against it), against the pair's own test (FarTest::isFar, the
+// slab and the bounding sphere on its five nodes) and against a brute-force distance from the
+// contactor to the bilinear face: on random configurations every sleeper gets the verdict and
+// the bound of its own test to the bit, and no pair found far is within its search distance.
+// Then a contactor that crosses the search distance and the face in one step while the other
+// pairs of its face stay far is woken and the step is redone.
+#include <gtest/gtest.h>
+
+#include <array>
+#include <cmath>
+#include <memory>
+#include <random>
+#include <vector>
+
+#include "contact/NodeToSurfaceContact3d.h"
+#include "tcl/analysis/AnalysisModel.h"
+#include "tcl/domain/Domain.h"
+
+namespace dabs::analysis {
+namespace {
+
+using contact::NodeToSurfaceContact3d;
+using contact::NodeToSurfaceParams;
+
+constexpr double kSearch = 0.05;
+constexpr double kHeight = 0.2;  // contactors' height above their face at rest
+
+/// One pair as built: its element, the tags of its contactor and face nodes (a b c d).
+struct Pair {
+  elements::Element* element = nullptr;
+  int contactor = 0;
+  std::array<int, 4> face{};
+  double search = kSearch;
+};
+
+/// Faces of 2 x 1 m in planes z = 0 (nodes 100 f + 1..4, counterclockwise seen from above, so
+/// the outward normal is +z), 10 m apart along x; each with four contactors (nodes 100 f + 11..14)
+/// kHeight above it at points inside and just outside its edges. Pairs: each contactor against
+/// its face; against face 0 also one more contactor with a larger search distance and one that
+/// names the face's nodes in another order (a face of its own to the broad phase). Face 2 and its
+/// contactors have 6 dofs per node (NodeToSurfaceContact3d<6>).
+class Faces {
+ public:
+  explicit Faces(int faces = 3) {
+    for (int f = 0; f < faces; ++f) {
+      const int ndf = f == 2 ? 6 : 3;
+      const double x0 = 10.0 * f;
+      const int base = 100 * f;
+      const std::array<Eigen::Vector2d, 4> corners{
+          Eigen::Vector2d(0, 0), Eigen::Vector2d(2, 0), Eigen::Vector2d(2, 1), Eigen::Vector2d(0, 1)};
+      for (int i = 0; i < 4; ++i)
+        domain_.addNode(base + 1 + i, 3, ndf,
+                        Eigen::Vector3d(x0 + corners[static_cast<std::size_t>(i)].x(),
+                                        corners[static_cast<std::size_t>(i)].y(), 0.0));
+      const std::array<Eigen::Vector2d, 6> spots{Eigen::Vector2d(0.5, 0.5), Eigen::Vector2d(1.9, 0.1),
+                                                 Eigen::Vector2d(-0.1, 0.9), Eigen::Vector2d(2.2, 0.5),
+                                                 Eigen::Vector2d(1.0, 0.3), Eigen::Vector2d(0.2, 0.2)};
+      const int contactors = f == 0 ? 6 : 4;
+      for (int i = 0; i < contactors; ++i) {
+        const Eigen::Vector2d s = spots[static_cast<std::size_t>(i)];
+        const int tag = base + 11 + i;
+        domain_.addNode(tag, 3, ndf, Eigen::Vector3d(x0 + s.x(), s.y(), kHeight));
+        std::array<int, 4> face{base + 1, base + 2, base + 3, base + 4};
+        if (f == 0 && i == 5) face = {base + 2, base + 3, base + 4, base + 1};  // the same face
+        add(tag, face, f == 0 && i == 4 ? 2.0 * kSearch : kSearch, ndf);
+      }
+    }
+  }
+
+  domain::Domain& domain() { return domain_; }
+  const std::vector<Pair>& pairs() const { return pairs_; }
+  /// The translations of the pair's nodes (k, a, b, c, d).
+  std::array<Eigen::Vector3d, 5> translations(const Pair& p) {
+    std::array<Eigen::Vector3d, 5> u;
+    u[0] = domain_.node(p.contactor).disp.head<3>();
+    for (std::size_t j = 0; j < 4; ++j) u[j + 1] = domain_.node(p.face[j]).disp.head<3>();
+    return u;
+  }
+  contact::FarTest farTest(const Pair& p) const {
+    if (auto* e3 = dynamic_cast<NodeToSurfaceContact3d<3>*>(p.element)) return e3->farTest();
+    return dynamic_cast<NodeToSurfaceContact3d<6>*>(p.element)->farTest();
+  }
+  const contact::NodeToSurfaceState& trial(const Pair& p) const {
+    if (auto* e3 = dynamic_cast<NodeToSurfaceContact3d<3>*>(p.element)) return e3->trialState();
+    return dynamic_cast<NodeToSurfaceContact3d<6>*>(p.element)->trialState();
+  }
+  /// Brute force: the smallest distance from the contactor to points of the bilinear face on a
+  /// 101 x 101 grid of its parameters (at least the true distance, and within 1.2 cm of it).
+  double sampledDistance(const Pair& p) {
+    const auto u = translations(p);
+    std::array<Eigen::Vector3d, 5> x;
+    x[0] = domain_.node(p.contactor).coords() + u[0];
+    for (std::size_t j = 0; j < 4; ++j) x[j + 1] = domain_.node(p.face[j]).coords() + u[j + 1];
+    double best = INFINITY;
+    const int n = 100;
+    for (int i = 0; i <= n; ++i)
+      for (int j = 0; j <= n; ++j) {
+        const double s = double(i) / n, t = double(j) / n;
+        const Eigen::Vector3d q = (1 - s) * (1 - t) * x[1] + s * (1 - t) * x[2] + s * t * x[3] +
+                                  (1 - s) * t * x[4];
+        best = std::min(best, (x[0] - q).norm());
+      }
+    return best;
+  }
+
+ private:
+  void add(int contactor, const std::array<int, 4>& face, double search, int ndf) {
+    NodeToSurfaceParams p;
+    p.K = 1.0e6;
+    p.muS = p.muK = 0.3;
+    p.search = search;
+    p.validate();
+    const int tag = 1000 + static_cast<int>(pairs_.size());
+    std::unique_ptr<elements::Element> e;
+    if (ndf == 3)
+      e = std::make_unique<NodeToSurfaceContact3d<3>>(tag, contactor, face, p);
+    else
+      e = std::make_unique<NodeToSurfaceContact3d<6>>(tag, contactor, face, p);
+    pairs_.push_back(Pair{&domain_.addElement(std::move(e)), contactor, face, search});
+  }
+
+  domain::Domain domain_;
+  std::vector<Pair> pairs_;
+};
+
+TEST(SleepingPairsTest, FarTestPerFaceGivesEachPairsOwnVerdictAndBound) {
+  Faces model;
+  AnalysisModel analysis(model.domain(), ConstraintKind::Plain, NumbererKind::Plain);
+  analysis.build();
+  ASSERT_EQ(analysis.sleepingPairs(), static_cast<long>(model.pairs().size()));
+  std::mt19937 rng(20261124);
+  std::uniform_real_distribution<double> face(-0.04, 0.04);  // tilts and warps the faces
+  std::uniform_real_distribution<double> drift(-0.3, 0.3);   // in-plane drift of a contactor
+  // A contactor's height change: from far above to within the search distance of the top corner
+  // (at least 0.06 m above the plane, above the faces' corners, which stay below 0.055 m: no
+  // force, so a woken pair never asks for the step to be redone).
+  std::uniform_real_distribution<double> lift(-0.14, 0.02);
+  int far = 0, near = 0;
+  for (int trial = 0; trial < 300; ++trial) {
+    for (auto& [tag, node] : model.domain().nodes()) {
+      const bool contactor = tag % 100 > 10;
+      Eigen::Vector3d u = contactor ? Eigen::Vector3d(drift(rng), drift(rng), lift(rng))
+                                    : Eigen::Vector3d(face(rng), face(rng), face(rng));
+      // now and then a whole face moves up towards its contactors
+      if (!contactor && trial % 7 == 3) u.z() += 0.015;
+      model.domain().node(tag).disp.head<3>() = u;
+    }
+    // The pairs' own tests, and what each should get.
+    std::vector<char> expectFar;
+    std::vector<double> expectBound;
+    for (const Pair& p : model.pairs()) {
+      double bound = 0.0;
+      const bool isFar = model.farTest(p).isFar(model.translations(p), bound);
+      expectFar.push_back(isFar);
+      expectBound.push_back(bound);
+      if (isFar) {
+        // A lower bound of the distance, and a far pair is beyond its search distance.
+        const double d = model.sampledDistance(p);
+        EXPECT_LE(bound, d + 1e-12) << "trial " << trial;
+        EXPECT_GT(d, p.search) << "trial " << trial;
+      }
+    }
+    const long updatesBefore = analysis.elementUpdates();
+    const auto result = analysis.checkSleepingPairs();
+    int woken = 0;
+    for (std::size_t i = 0; i < model.pairs().size(); ++i) {
+      const Pair& p = model.pairs()[i];
+      if (expectFar[i]) {
+        ++far;
+        // The trial state of a far pair: open, no force, the bound of its own test as its gap.
+        EXPECT_EQ(model.trial(p).gap, expectBound[i]) << "trial " << trial << " pair " << i;
+        EXPECT_EQ(model.trial(p).status, contact::ContactStatus::Open);
+        EXPECT_TRUE(model.trial(p).force.isZero(0.0));
+      } else {
+        ++near;
+        ++woken;
+      }
+    }
+    // Each near pair woken (updated once), each far one not.
+    EXPECT_EQ(analysis.elementUpdates() - updatesBefore, woken) << "trial " << trial;
+    EXPECT_EQ(result, woken > 0 ? AnalysisModel::SleepCheck::PatternChange
+                                : AnalysisModel::SleepCheck::Unchanged)
+        << "trial " << trial;
+  }
+  // Both verdicts were met often (of 14 pairs x 300 configurations).
+  EXPECT_GT(far, 3000);
+  EXPECT_GT(near, 300);
+}
+
+TEST(SleepingPairsTest, ContactorCrossingTheFaceInOneStepIsWokenAndTheStepRedone) {
+  Faces model(1);
+  AnalysisModel analysis(model.domain(), ConstraintKind::Plain, NumbererKind::Plain);
+  analysis.build();
+  ASSERT_EQ(analysis.sleepingPairs(), 6);
+  // The contactor above the face's middle (node 11, at (0.5, 0.5), 0.2 m above) moves 0.21 m
+  // down in one step: 0.01 m into the face. The other contactors and the face stay at rest, far.
+  model.domain().node(11).disp.head<3>() = Eigen::Vector3d(0.0, 0.0, -(kHeight + 0.01));
+  EXPECT_EQ(analysis.checkSleepingPairs(), AnalysisModel::SleepCheck::RedoStep);
+  const auto& s = model.trial(model.pairs()[0]);
+  EXPECT_NEAR(s.gap, -0.01, 1e-12);
+  EXPECT_GT(s.force(0), 0.0);  // in contact: the step missed its force
+  // Only down to 0.04 m above the face: within the search distance, no force: woken for the next
+  // step, this one stands.
+  model.domain().node(11).disp.head<3>() = Eigen::Vector3d(0.0, 0.0, -(kHeight - 0.04));
+  EXPECT_EQ(analysis.checkSleepingPairs(), AnalysisModel::SleepCheck::PatternChange);
+  // The face rising 0.16 m under contactors that stay put, 0.04 m above its plane now: the four
+  // over the face are near (one of them with a search distance of 0.1 m, and one that names the
+  // face's nodes in another order) and are woken; the two beyond its edges stay asleep, since the
+  // face's bounding sphere (centre (1, 0.5, 0.16), radius sqrt(1.25) = 1.1180 m) is
+  // sqrt(1.2^2 + 0.04^2) - 1.1180 = 0.083 m from (2.2, 0.5, 0.2) and
+  // sqrt(1.1^2 + 0.4^2 + 0.04^2) - 1.1180 = 0.053 m from (-0.1, 0.9, 0.2), beyond 0.05 m.
+  model.domain().node(11).disp.setZero();
+  for (int n = 1; n <= 4; ++n) model.domain().node(n).disp.head<3>() = Eigen::Vector3d(0, 0, 0.16);
+  const long before = analysis.elementUpdates();
+  EXPECT_EQ(analysis.checkSleepingPairs(), AnalysisModel::SleepCheck::PatternChange);
+  EXPECT_EQ(analysis.elementUpdates() - before, 4);
+  const std::array<double, 2> expected{std::sqrt(1.2 * 1.2 + 0.04 * 0.04) - std::sqrt(1.25),
+                                       std::sqrt(1.1 * 1.1 + 0.4 * 0.4 + 0.04 * 0.04) - std::sqrt(1.25)};
+  EXPECT_NEAR(model.trial(model.pairs()[3]).gap, expected[0], 1e-12);  // node 14
+  EXPECT_NEAR(model.trial(model.pairs()[2]).gap, expected[1], 1e-12);  // node 13
+}
+
+}  // namespace
+}  // namespace dabs::analysis
