@@ -431,8 +431,9 @@ TEST(NodeToSurfaceContact3dTest, ParallelFacesAcrossAGapAreFarByTheSlab) {
   double bound = 0.0;
   EXPECT_TRUE(ContactSearch(0.3).isFar(Eigen::Vector3d(1, 1, 0.5), warped, Eigen::Vector3d(0, 0, 1),
                                        bound));
-  EXPECT_EQ(bound, ContactSearch::slabBound(Eigen::Vector3d(1, 1, 0.5), Eigen::Vector3d(0, 0, 1),
-                                            ContactSearch::slabTop(warped, Eigen::Vector3d(0, 0, 1))));
+  EXPECT_EQ(bound,
+            ContactSearch::slabBound(Eigen::Vector3d(1, 1, 0.5), Eigen::Vector3d(0, 0, 1),
+                                     ContactSearch::slabTop(warped, Eigen::Vector3d(0, 0, 1))));
 }
 
 // updateIfFar gives the state update() gives for a far pair, and declines a near one.

@@ -48,15 +48,15 @@ class Faces {
       const int ndf = f == 2 ? 6 : 3;
       const double x0 = 10.0 * f;
       const int base = 100 * f;
-      const std::array<Eigen::Vector2d, 4> corners{
-          Eigen::Vector2d(0, 0), Eigen::Vector2d(2, 0), Eigen::Vector2d(2, 1), Eigen::Vector2d(0, 1)};
+      const std::array<Eigen::Vector2d, 4> corners{Eigen::Vector2d(0, 0), Eigen::Vector2d(2, 0),
+                                                   Eigen::Vector2d(2, 1), Eigen::Vector2d(0, 1)};
       for (int i = 0; i < 4; ++i)
         domain_.addNode(base + 1 + i, 3, ndf,
                         Eigen::Vector3d(x0 + corners[static_cast<std::size_t>(i)].x(),
                                         corners[static_cast<std::size_t>(i)].y(), 0.0));
-      const std::array<Eigen::Vector2d, 6> spots{Eigen::Vector2d(0.5, 0.5), Eigen::Vector2d(1.9, 0.1),
-                                                 Eigen::Vector2d(-0.1, 0.9), Eigen::Vector2d(2.2, 0.5),
-                                                 Eigen::Vector2d(1.0, 0.3), Eigen::Vector2d(0.2, 0.2)};
+      const std::array<Eigen::Vector2d, 6> spots{
+          Eigen::Vector2d(0.5, 0.5), Eigen::Vector2d(1.9, 0.1), Eigen::Vector2d(-0.1, 0.9),
+          Eigen::Vector2d(2.2, 0.5), Eigen::Vector2d(1.0, 0.3), Eigen::Vector2d(0.2, 0.2)};
       const int contactors = f == 0 ? 6 : 4;
       for (int i = 0; i < contactors; ++i) {
         const Eigen::Vector2d s = spots[static_cast<std::size_t>(i)];
@@ -98,8 +98,8 @@ class Faces {
     for (int i = 0; i <= n; ++i)
       for (int j = 0; j <= n; ++j) {
         const double s = double(i) / n, t = double(j) / n;
-        const Eigen::Vector3d q = (1 - s) * (1 - t) * x[1] + s * (1 - t) * x[2] + s * t * x[3] +
-                                  (1 - s) * t * x[4];
+        const Eigen::Vector3d q =
+            (1 - s) * (1 - t) * x[1] + s * (1 - t) * x[2] + s * t * x[3] + (1 - s) * t * x[4];
         best = std::min(best, (x[0] - q).norm());
       }
     return best;
@@ -216,8 +216,9 @@ TEST(SleepingPairsTest, ContactorCrossingTheFaceInOneStepIsWokenAndTheStepRedone
   const long before = analysis.elementUpdates();
   EXPECT_EQ(analysis.checkSleepingPairs(), AnalysisModel::SleepCheck::PatternChange);
   EXPECT_EQ(analysis.elementUpdates() - before, 4);
-  const std::array<double, 2> expected{std::sqrt(1.2 * 1.2 + 0.04 * 0.04) - std::sqrt(1.25),
-                                       std::sqrt(1.1 * 1.1 + 0.4 * 0.4 + 0.04 * 0.04) - std::sqrt(1.25)};
+  const std::array<double, 2> expected{
+      std::sqrt(1.2 * 1.2 + 0.04 * 0.04) - std::sqrt(1.25),
+      std::sqrt(1.1 * 1.1 + 0.4 * 0.4 + 0.04 * 0.04) - std::sqrt(1.25)};
   EXPECT_NEAR(model.trial(model.pairs()[3]).gap, expected[0], 1e-12);  // node 14
   EXPECT_NEAR(model.trial(model.pairs()[2]).gap, expected[1], 1e-12);  // node 13
 }
