@@ -236,14 +236,13 @@ class StateFiberGroup final : public FiberGroup {
     const std::size_t n = committed_.size();
     for (std::size_t i = 0; i < n; ++i) {
       const double y = ys[i], a = as[i];
-      const double strain = Planar ? e0 - y * kz : e0 - y * kz + zs[i] * ky;
+      const double strain = fiberStrain<Planar>(e0, kz, ky, y, zs[i]);
       // The only failure of these laws is a non-finite stress or tangent, and it makes the
       // sums non-finite too: the caller checks those once instead of every fiber here.
       double stress = 0.0, tangent = 0.0;
       if constexpr (kKeepsResponse) {
         if constexpr (Fold) {
-          const double pending =
-              Planar ? e0Pending - y * kzPending : e0Pending - y * kzPending + zs[i] * kyPending;
+          const double pending = fiberStrain<Planar>(e0Pending, kzPending, kyPending, y, zs[i]);
           law_.commitTrial(committed[i], pending, trial[i].stress, trial[i].tangent);
         }
         State t;
@@ -270,10 +269,17 @@ class StateFiberGroup final : public FiberGroup {
     phase_ = Phase::Trial;
   }
 
-  /// Fiber i's strain in the last setTrial, by the same expression the pass used.
+  /// A fiber's strain under plane-section kinematics: one expression for every use, so that a
+  /// strain formed again (to commit, or for a response) is the pass's to the bit.
+  template <bool Planar>
+  static double fiberStrain(double e0, double kz, double ky, double y, double z) {
+    return Planar ? e0 - y * kz : e0 - y * kz + z * ky;
+  }
+  /// Fiber i's strain in the last setTrial.
   double trialStrain(std::size_t i) const {
     const Geometry& g = geometry();
-    return planar_ ? e0_ - g.y[i] * kz_ : e0_ - g.y[i] * kz_ + g.z[i] * ky_;
+    return planar_ ? fiberStrain<true>(e0_, kz_, ky_, g.y[i], g.z[i])
+                   : fiberStrain<false>(e0_, kz_, ky_, g.y[i], g.z[i]);
   }
   /// The stress and tangent the fibers are at: the trial ones after a setTrial (also once
   /// committed), the committed states' after a revert.

@@ -58,10 +58,7 @@ class FiberGroup {
   /// Adds `area` to fiber i: a fiber of the same material at the same strain point (in a plane
   /// section, the same y) has the same strain history, so the two are one fiber of their summed
   /// area (OpenSees evaluates both).
-  void addArea(int i, double area) {
-    if (geometry_.use_count() > 1) geometry_ = std::make_shared<Geometry>(*geometry_);
-    geometry_->area[static_cast<std::size_t>(i)] += area;
-  }
+  void addArea(int i, double area) { ownGeometry().area[static_cast<std::size_t>(i)] += area; }
 
   /// Sets every fiber's trial strain e0 - y kz + z ky and adds the fibers' trial forces and
   /// tangents to `sums`. Returns the last failed status, or Ok; a non-finite fiber stress or
@@ -92,16 +89,21 @@ class FiberGroup {
   struct Geometry {
     std::vector<double> y, z, area;
   };
-  /// Appends a fiber's geometry (copying the block first if another group shares it).
+  /// Appends a fiber's geometry.
   void addGeometry(double y, double z, double area) {
-    if (geometry_.use_count() > 1) geometry_ = std::make_shared<Geometry>(*geometry_);
-    geometry_->y.push_back(y);
-    geometry_->z.push_back(z);
-    geometry_->area.push_back(area);
+    Geometry& g = ownGeometry();
+    g.y.push_back(y);
+    g.z.push_back(z);
+    g.area.push_back(area);
   }
   const Geometry& geometry() const noexcept { return *geometry_; }
 
  private:
+  /// The geometry to change, copied first if another group shares it.
+  Geometry& ownGeometry() {
+    if (geometry_.use_count() > 1) geometry_ = std::make_shared<Geometry>(*geometry_);
+    return *geometry_;
+  }
   std::shared_ptr<Geometry> geometry_ = std::make_shared<Geometry>();
 };
 

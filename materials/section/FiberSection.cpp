@@ -51,7 +51,6 @@ FiberSection<Ndm>::FiberSection(int tag, const std::vector<Fiber>& fibers, doubl
     places->push_back({f.y, f.z, f.area, g, index});
   }
   places_ = std::move(places);
-  for (const auto& g : groups_) evaluatedFibers_ += g->size();
   FiberSums initial;
   for (const auto& g : groups_) g->addTo(initial, true);
   store(initial, true);
@@ -62,7 +61,6 @@ template <int Ndm>
 FiberSection<Ndm>::FiberSection(const FiberSection& o)
     : SectionForceDeformation(o),
       places_(o.places_),
-      evaluatedFibers_(o.evaluatedFibers_),
       gj_(o.gj_),
       e_(o.e_),
       eCommitted_(o.eCommitted_),
@@ -123,7 +121,7 @@ Status FiberSection<Ndm>::setTrialDeformation(const Eigen::Ref<const Eigen::Vect
         Ndm == 2 ? g->setTrialPlanar(e_(0), kz, sums) : g->setTrial(e_(0), kz, ky, sums);
     if (!ok(s)) status = s;
   }
-  materialUpdates_ += evaluatedFibers_;
+  for (const auto& g : groups_) materialUpdates_ += g->size();  // fibers after merging
   store(sums, false);
   if (ok(status) && !(s_.allFinite() && k_.allFinite())) status = Status::NonFinite;
   return status;

@@ -83,7 +83,6 @@ class FiberSection final : public SectionForceDeformation {
   std::vector<std::unique_ptr<FiberGroup>> groups_;
   /// The fibers as given, shared by the copies of the section (they never change).
   std::shared_ptr<const std::vector<Place>> places_;
-  long evaluatedFibers_ = 0;  ///< fibers after merging: the material updates of one pass
   double gj_ = 0.0;
   Vector e_ = Vector::Zero(), eCommitted_ = Vector::Zero(), s_ = Vector::Zero();
   Matrix k_ = Matrix::Zero(), k0_ = Matrix::Zero();
