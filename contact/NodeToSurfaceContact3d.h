@@ -176,6 +176,16 @@ class NodeToSurfaceContact3d : public elements::FixedSizeElement<5, Ndf, 0u> {
            trial_.gap > factor * search_.distance();
   }
   bool hasSearch() const noexcept { return search_.enabled(); }
+  /// True while the pair is settled far: its trial and committed states are far, quiet and equal
+  /// but for the gap (see settledFar_).
+  bool settledFar() const noexcept { return settledFar_; }
+  /// Sets the gap of a settled far pair in both states to `bound` (the analysis forms it anew
+  /// for a pair it left alone for some steps); false, changing nothing, when not settled far.
+  bool setSettledGap(double bound) noexcept {
+    if (!settledFar_) return false;
+    trial_.gap = committed_.gap = bound;
+    return true;
+  }
   /// True when the last committed state carried a compressive normal force (the next step may be
   /// a release step, which the far test must not skip).
   bool closedAtCommit() const noexcept {

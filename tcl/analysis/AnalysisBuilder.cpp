@@ -206,6 +206,7 @@ int AnalysisBuilder::analyze(int numSteps, double dt) {
   ensureModel();
   const long factorizationsBefore = factorizationsSoFar();
   const long elementUpdatesBefore = model_->elementUpdates();
+  const long farTestsBefore = model_->farTests();
   const long materialUpdatesBefore = domain_.materialUpdates();
   int result = 0;
   struct StepLoopGuard {
@@ -213,6 +214,15 @@ int AnalysisBuilder::analyze(int numSteps, double dt) {
     ~StepLoopGuard() { StopRequest::stepLoopRunning = 0; }
   } guard;
   const bool stepping = kind_ == Kind::Transient && contactStepping_ != nullptr;
+  // Far pairs may rest through the steps unless something reads them at every step: contact
+  // stepping reads every gap, and the script after each step may read anything (recorders name
+  // theirs). At the end every pair's state is as the check of every step leaves it, so one step
+  // (`analyze 1` in a loop) gains nothing from resting and checks every pair.
+  model_->beginSteps(stepping || (afterStep && kind_ == Kind::Transient) || numSteps < 2);
+  struct EndSteps {
+    AnalysisModel& model;
+    ~EndSteps() { model.endSteps(); }
+  } endSteps{*model_};
   const double t0 = domain_.committedTime();
   const long contactStepsBefore = stepping ? contactStepping_->contactSteps() : 0;
   for (int step = 0; step < numSteps && StopRequest::signal == 0 && result == 0; ++step) {
@@ -232,6 +242,7 @@ int AnalysisBuilder::analyze(int numSteps, double dt) {
   if (stepping) stats_.contactSteps += contactStepping_->contactSteps() - contactStepsBefore;
   stats_.factorizations += factorizationsSoFar() - factorizationsBefore;
   stats_.elementUpdates += model_->elementUpdates() - elementUpdatesBefore;
+  stats_.farTests += model_->farTests() - farTestsBefore;
   stats_.materialUpdates += domain_.materialUpdates() - materialUpdatesBefore;
   domain_.flushRecorders();
   return result;

@@ -33,6 +33,7 @@ struct AnalysisStatistics {
   long contactSteps = 0;     ///< steps shortened by contact stepping (shorter than analyze's dt)
   long patternChanges = 0;   ///< matrix patterns rebuilt as contact pairs woke or fell asleep
   long redoneSteps = 0;      ///< steps redone because a sleeping contact pair would carry force
+  long farTests = 0;         ///< far tests of sleeping contact pairs (one per pair and check)
 };
 
 /// Code `analyze` returns when a bearing with `-afterFailure stop` reached its failure strain: the

@@ -17,6 +17,25 @@
 
 namespace dabs::analysis {
 
+namespace {
+const double kInfinity = std::numeric_limits<double>::infinity();
+// A node's translations, trial or committed.
+Eigen::Vector3d translation(const domain::Node& n, bool committed) {
+  return committed ? Eigen::Vector3d(n.committedDisp.head<3>()) : Eigen::Vector3d(n.disp.head<3>());
+}
+// The far test's bound, max(slab, sphere), changes by at most 4 mu when each of the five nodes
+// moves by at most mu: the slab bound n.x_k - max_j n.x_j by 2 mu (|n| = 1), the sphere bound
+// |x_k - c| - r (c the corners' centroid, r the largest corner distance from it) by
+// |dx_k - dc| + |dr| <= 2 mu + 2 mu.
+constexpr double kBoundLipschitz = 4.0;
+// How far a pair may be brought towards its search distance before its exact test is due: its
+// bound's excess over the distance, less a margin for the round-off of the bound (coordinates of
+// a long viaduct reach 1e3 m, where one ulp is 1e-13 m; the margin is micrometres).
+double restSlack(double bound, double distance, const Eigen::Vector3d& X) {
+  return bound - distance - 1e-9 * (1.0 + std::abs(bound) + X.lpNorm<Eigen::Infinity>());
+}
+}  // namespace
+
 AnalysisModel::AnalysisModel(domain::Domain& domain, ConstraintKind constraints,
                              NumbererKind numberer, double alphaSP, double alphaMP)
     : domain_(domain),
@@ -224,6 +243,18 @@ void AnalysisModel::buildScatter() {
     farFaces_.back().first = static_cast<std::uint32_t>(i);
     farFaces_.back().end = static_cast<std::uint32_t>(i + 1);
   }
+  // Each pair's position in the domain's tag order (Domain::setDormant); no face rests yet.
+  std::size_t index = 0;
+  std::map<const elements::Element*, std::uint32_t> domainIndex;
+  for (const auto& [tag, e] : domain_.elements()) {
+    if (pairOrder.count(e.get()) != 0)
+      domainIndex.emplace(e.get(), static_cast<std::uint32_t>(index));
+    ++index;
+  }
+  for (PairLink& p : pairLinks_) p.domainIndex = domainIndex.at(elements_[p.link].element);
+  domain_.clearDormant();
+  markObserved();
+  buildWatch();  // no face rests
   for (NodeLink& nl : nodes_) fix(nl.mass, nl.rowCol);
   constantFor_.reset();
   for (PenaltyRow& row : penalties_) {
@@ -251,32 +282,179 @@ bool AnalysisModel::wantsSleep(const ElementLink& l) const {
   return l.pair3 ? l.pair3->committedFar() : l.pair6->committedFar();
 }
 
-double AnalysisModel::slabTopNow(const FarFace& f) {
+double AnalysisModel::slabTopAt(const FarFace& f, bool committed) {
   std::array<Eigen::Vector3d, 4> quad;
-  for (std::size_t j = 0; j < 4; ++j) quad[j] = f.X[j] + f.nodes[j]->disp.head<3>();
+  for (std::size_t j = 0; j < 4; ++j) quad[j] = f.X[j] + translation(*f.nodes[j], committed);
   return contact::ContactSearch::slabTop(quad, f.n);
 }
 
-bool AnalysisModel::sleeperStaysFar(const PairLink& p, const FarFace& f, double top, double dt) {
+bool AnalysisModel::sleeperBound(const PairLink& p, const FarFace& f, double top, bool committed,
+                                 double& bound) {
   // The same arithmetic as the pair's own test (ContactSearch::isFar takes the slab first), so
   // the bound, and with it the gap the pair reports, is the same to the bit; when the slab does
   // not show the pair far, the pair's whole test decides. A finite slab bound needs a finite
   // position (a non-finite coordinate makes n.x non-finite), which the pair's test asks for.
-  const Eigen::Vector3d x = p.X + p.contactor->disp.head<3>();
+  const Eigen::Vector3d x = p.X + translation(*p.contactor, committed);
   const double slab = contact::ContactSearch::slabBound(x, f.n, top);
-  if (!(slab > p.distance && slab < std::numeric_limits<double>::infinity()))
-    return sleeperStaysFarAlone(p, f, dt);
-  return p.pair3 ? p.pair3->setFarTrial(slab, dt) : p.pair6->setFarTrial(slab, dt);
-}
-
-bool AnalysisModel::sleeperStaysFarAlone(const PairLink& p, const FarFace& f, double dt) {
+  if (slab > p.distance && slab < kInfinity) {
+    bound = slab;
+    return true;
+  }
   const contact::FarTest test = p.pair3 ? p.pair3->farTest() : p.pair6->farTest();
   std::array<Eigen::Vector3d, 5> u;
-  u[0] = p.contactor->disp.head<3>();
-  for (std::size_t j = 0; j < 4; ++j) u[j + 1] = f.nodes[j]->disp.head<3>();
-  double bound = 0.0;
-  if (!test.isFar(u, bound)) return false;
-  return p.pair3 ? p.pair3->setFarTrial(bound, dt) : p.pair6->setFarTrial(bound, dt);
+  u[0] = translation(*p.contactor, committed);
+  for (std::size_t j = 0; j < 4; ++j) u[j + 1] = translation(*f.nodes[j], committed);
+  return test.isFar(u, bound);
+}
+
+void AnalysisModel::buildWatch() {
+  watchEqs_.clear();
+  watchSlots_.clear();
+  faceWatch_.assign(farFaces_.size(), FaceWatch{});
+  for (std::size_t r = 0; r < farFaces_.size(); ++r) {
+    const FarFace& f = farFaces_[r];
+    FaceWatch& w = faceWatch_[r];
+    std::vector<const domain::Node*> nodes(f.nodes.begin(), f.nodes.end());
+    for (std::uint32_t i = f.first; i < f.end; ++i) nodes.push_back(pairLinks_[i].contactor);
+    std::vector<int> eqs, slots;
+    for (const domain::Node* n : nodes) {
+      const NodeLink& nl = nodes_[static_cast<std::size_t>(nodeIndex_.at(n->tag()))];
+      for (int d = 0; d < 3; ++d) {
+        const auto g = static_cast<std::size_t>(nl.firstDof + d);
+        if (const int eq = directEq_[g]; eq >= 0) {
+          eqs.push_back(eq);
+          w.gainEq = std::max(w.gainEq, 1.0);
+          continue;
+        }
+        double eqGain = 0.0, slotGain = 0.0;
+        for (const Term& t : dofTerms_[g]) {
+          if (t.index >= 0) {
+            eqGain += std::abs(t.coef);
+            eqs.push_back(t.index);
+          } else {
+            slotGain += std::abs(t.coef);
+            slots.push_back(-t.index - 1);
+          }
+        }
+        w.gainEq = std::max(w.gainEq, eqGain);
+        w.gainSlot = std::max(w.gainSlot, slotGain);
+      }
+    }
+    for (std::vector<int>* v : {&eqs, &slots}) {
+      std::sort(v->begin(), v->end());
+      v->erase(std::unique(v->begin(), v->end()), v->end());
+    }
+    w.eqBegin = static_cast<std::uint32_t>(watchEqs_.size());
+    watchEqs_.insert(watchEqs_.end(), eqs.begin(), eqs.end());
+    w.eqEnd = static_cast<std::uint32_t>(watchEqs_.size());
+    w.slotBegin = static_cast<std::uint32_t>(watchSlots_.size());
+    watchSlots_.insert(watchSlots_.end(), slots.begin(), slots.end());
+    w.slotEnd = static_cast<std::uint32_t>(watchSlots_.size());
+  }
+  watchEqPrev_.assign(watchEqs_.size(), 0.0);
+  watchSlotPrev_.assign(watchSlots_.size(), 0.0);
+}
+
+void AnalysisModel::startRest(std::size_t r, double reach) {
+  FaceWatch& w = faceWatch_[r];
+  if (responseU_ == nullptr || responseU_->size() != neq_) return;  // no motion bound: no rest
+  for (std::uint32_t k = w.eqBegin; k < w.eqEnd; ++k) watchEqPrev_[k] = (*responseU_)(watchEqs_[k]);
+  for (std::uint32_t k = w.slotBegin; k < w.slotEnd; ++k)
+    watchSlotPrev_[k] = slots_[static_cast<std::size_t>(watchSlots_[k])].disp;
+  w.motion = 0.0;
+  w.horizon = reach;
+  const FarFace& f = farFaces_[r];
+  for (std::uint32_t i = f.first; i < f.end; ++i)
+    domain_.setDormant(pairLinks_[i].domainIndex, true);
+}
+
+void AnalysisModel::advanceMotion(std::size_t r) {
+  FaceWatch& w = faceWatch_[r];
+  if (responseU_ == nullptr || responseU_->size() != neq_) {  // no bound: the face is due
+    w.motion = kInfinity;
+    return;
+  }
+  const double* U = responseU_->data();
+  // The largest changes since the last check; a NaN change makes the motion infinite.
+  double eqMax = 0.0, slotMax = 0.0;
+  bool finite = true;
+  for (std::uint32_t k = w.eqBegin; k < w.eqEnd; ++k) {
+    const double u = U[watchEqs_[k]];
+    const double change = std::abs(u - watchEqPrev_[k]);
+    finite = finite && change < kInfinity;
+    eqMax = std::max(eqMax, change);
+    watchEqPrev_[k] = u;
+  }
+  for (std::uint32_t k = w.slotBegin; k < w.slotEnd; ++k) {
+    const double u = slots_[static_cast<std::size_t>(watchSlots_[k])].disp;
+    const double change = std::abs(u - watchSlotPrev_[k]);
+    finite = finite && change < kInfinity;
+    slotMax = std::max(slotMax, change);
+    watchSlotPrev_[k] = u;
+  }
+  // A translation moved by at most its gain times the largest change of what it is formed from,
+  // and a node (three translations) by sqrt(3) times that; the factor covers the sum's round-off.
+  const double step = std::sqrt(3.0) * (w.gainEq * eqMax + w.gainSlot * slotMax) * (1.0 + 1e-9);
+  w.motion = finite ? w.motion + step : kInfinity;
+}
+
+bool AnalysisModel::rerestFace(std::size_t r) {
+  const FarFace& f = farFaces_[r];
+  const double top = slabTopAt(f, false);
+  double slack = kInfinity;
+  for (std::uint32_t i = f.first; i < f.end; ++i) {
+    const PairLink& p = pairLinks_[i];
+    double bound = 0.0;
+    ++farTests_;
+    if (!sleeperBound(p, f, top, false, bound)) return false;
+    slack = std::min(slack, restSlack(bound, p.distance, p.X));
+  }
+  faceWatch_[r].horizon = faceWatch_[r].motion + slack / kBoundLipschitz;
+  return true;
+}
+
+void AnalysisModel::wakeFace(std::size_t r) {
+  // The committed positions are within the face's horizon, so every pair is far there, and its
+  // bound there is the gap the check of every step would have committed.
+  const FarFace& f = farFaces_[r];
+  const double top = slabTopAt(f, true);
+  for (std::uint32_t i = f.first; i < f.end; ++i) {
+    const PairLink& p = pairLinks_[i];
+    double bound = 0.0;
+    sleeperBound(p, f, top, true, bound);
+    if (p.pair3)
+      p.pair3->setSettledGap(bound);
+    else
+      p.pair6->setSettledGap(bound);
+    domain_.setDormant(p.domainIndex, false);
+  }
+  faceWatch_[r].horizon = -kInfinity;
+}
+
+std::size_t AnalysisModel::restingFaces() const {
+  return static_cast<std::size_t>(std::count_if(faceWatch_.begin(), faceWatch_.end(),
+                                                [](const FaceWatch& w) { return w.resting(); }));
+}
+
+void AnalysisModel::beginSteps(bool observeAll) {
+  endSteps();
+  observeAll_ = observeAll;
+  observedTags_ = observeAll ? std::vector<int>{} : domain_.recordedElements();
+  markObserved();
+}
+
+void AnalysisModel::endSteps() {
+  for (std::size_t r = 0; r < faceWatch_.size(); ++r)
+    if (faceWatch_[r].resting()) wakeFace(r);
+}
+
+void AnalysisModel::markObserved() {
+  mayRest_ = false;
+  for (PairLink& p : pairLinks_) {
+    const int tag = p.pair3 ? p.pair3->tag() : p.pair6->tag();
+    p.observed = observeAll_ || std::binary_search(observedTags_.begin(), observedTags_.end(), tag);
+    mayRest_ = mayRest_ || !p.observed;
+  }
 }
 
 AnalysisModel::SleepCheck AnalysisModel::checkSleepingPairs() {
@@ -288,18 +466,51 @@ AnalysisModel::SleepCheck AnalysisModel::checkSleepingPairs() {
   // contact surface, Yang and Laursen, Comput Mech 41 (2008) 189-205). Here the volume is the
   // face's slab along its normal: its top is formed once per run of pairs against the face, and
   // each of its contactors costs its height above it. The pairs are taken in the domain's order.
-  for (const FarFace& f : farFaces_) {
+  //
+  // Resting faces: a face whose pairs all sleep settled far and are read by nobody during the
+  // steps (no recorder, no contact stepping) is left alone until the motion of its pairs' nodes
+  // could have brought one of them to its search distance: each check adds a bound on that
+  // motion (from the largest change of the equations and support values the nodes'
+  // translations are formed from) to the face's motion, and its horizon is its motion at its
+  // last exact test plus the smallest excess of its pairs' bounds over their distances, over the
+  // bound's Lipschitz constant. This is the neighbour list with a skin of molecular dynamics
+  // (Verlet, Phys Rev 159 (1967) 98-103; the list is rebuilt when the largest displacement since
+  // could have closed the skin, Allen and Tildesley, Computer Simulation of Liquids, 2nd ed. 2017,
+  // sec. 5.3). The face is tested exactly when its horizon is reached, so a pair is woken at the
+  // same step as with the test of every step, and the results do not change. A resting pair is not
+  // committed (Domain::setDormant); its gap is formed at the committed positions when it is read
+  // again (wakeFace, endSteps).
+  for (std::size_t r = 0; r < farFaces_.size(); ++r) {
+    if (faceWatch_[r].resting()) {
+      advanceMotion(r);
+      if (faceWatch_[r].motion < faceWatch_[r].horizon) continue;  // far for sure
+      if (rerestFace(r)) continue;
+      wakeFace(r);
+    }
+    const FarFace& f = farFaces_[r];
     double top = 0.0;
     bool topFormed = false;
+    bool mayRest = mayRest_;
+    double slack = kInfinity;
     for (std::uint32_t i = f.first; i < f.end; ++i) {
       const PairLink& p = pairLinks_[i];
       if (p.asleep) {
         if (!topFormed) {
-          top = slabTopNow(f);
+          top = slabTopAt(f, false);
           topFormed = true;
         }
-        if (sleeperStaysFar(p, f, top, dt)) continue;
+        double bound = 0.0;
+        ++farTests_;
+        if (sleeperBound(p, f, top, false, bound) &&
+            (p.pair3 ? p.pair3->setFarTrial(bound, dt) : p.pair6->setFarTrial(bound, dt))) {
+          if (mayRest) {
+            mayRest = !p.observed && (p.pair3 ? p.pair3->settledFar() : p.pair6->settledFar());
+            slack = std::min(slack, restSlack(bound, p.distance, p.X));
+          }
+          continue;
+        }
       }
+      mayRest = false;
       ElementLink& l = elements_[p.link];
       if (l.asleep) {
         // Near: its full update for this trial state; with force the step missed it.
@@ -314,6 +525,7 @@ AnalysisModel::SleepCheck AnalysisModel::checkSleepingPairs() {
         if (result == SleepCheck::Unchanged) result = SleepCheck::PatternChange;
       }
     }
+    if (mayRest && f.end > f.first) startRest(r, slack / kBoundLipschitz);
   }
   return result;
 }
@@ -322,9 +534,50 @@ void AnalysisModel::applySleepChanges() {
   const Eigen::VectorXd P = P_;           // the external load of the current time stays
   for (const ElementLink& l : elements_)  // pairs without a change keep their state
     if (l.pair3 || l.pair6) sleepWanted_.emplace(l.element, l.asleep);
+  // Resting faces rest on (a new pattern moves no node): their pairs' gaps are formed now, and
+  // a face with the same pairs, all still asleep, watching the same equations, rests again with
+  // its motion bound and horizon.
+  struct Carried {
+    FaceWatch watch;
+    std::vector<int> eqs, slots;
+    std::vector<double> eqPrev, slotPrev;
+  };
+  std::map<const elements::Element*, Carried> carried;  // by the face's first pair
+  for (std::size_t r = 0; r < farFaces_.size(); ++r) {
+    const FaceWatch& w = faceWatch_[r];
+    if (!w.resting()) continue;
+    Carried c{w,
+              {watchEqs_.begin() + w.eqBegin, watchEqs_.begin() + w.eqEnd},
+              {watchSlots_.begin() + w.slotBegin, watchSlots_.begin() + w.slotEnd},
+              {watchEqPrev_.begin() + w.eqBegin, watchEqPrev_.begin() + w.eqEnd},
+              {watchSlotPrev_.begin() + w.slotBegin, watchSlotPrev_.begin() + w.slotEnd}};
+    carried.emplace(elements_[pairLinks_[farFaces_[r].first].link].element, std::move(c));
+    wakeFace(r);
+  }
   buildScatter();
   buildConstantDynamics();
   P_ = P;
+  for (std::size_t r = 0; r < farFaces_.size() && !carried.empty(); ++r) {
+    const FarFace& f = farFaces_[r];
+    const auto it = carried.find(elements_[pairLinks_[f.first].link].element);
+    if (it == carried.end()) continue;
+    const Carried& c = it->second;
+    FaceWatch& w = faceWatch_[r];
+    bool same = std::equal(c.eqs.begin(), c.eqs.end(), watchEqs_.begin() + w.eqBegin,
+                           watchEqs_.begin() + w.eqEnd) &&
+                std::equal(c.slots.begin(), c.slots.end(), watchSlots_.begin() + w.slotBegin,
+                           watchSlots_.begin() + w.slotEnd) &&
+                c.watch.gainEq == w.gainEq && c.watch.gainSlot == w.gainSlot;
+    for (std::uint32_t i = f.first; i < f.end && same; ++i)
+      same = pairLinks_[i].asleep && !pairLinks_[i].observed;
+    if (!same) continue;
+    std::copy(c.eqPrev.begin(), c.eqPrev.end(), watchEqPrev_.begin() + w.eqBegin);
+    std::copy(c.slotPrev.begin(), c.slotPrev.end(), watchSlotPrev_.begin() + w.slotBegin);
+    w.motion = c.watch.motion;
+    w.horizon = c.watch.horizon;
+    for (std::uint32_t i = f.first; i < f.end; ++i)
+      domain_.setDormant(pairLinks_[i].domainIndex, true);
+  }
 }
 
 double AnalysisModel::termValue(const std::vector<Term>& terms, const Eigen::VectorXd& x,
@@ -413,6 +666,7 @@ void AnalysisModel::externalLoadAt(double t, Eigen::VectorXd& P) {
 
 void AnalysisModel::setResponse(const Eigen::VectorXd& U, const Eigen::VectorXd& V,
                                 const Eigen::VectorXd& A) {
+  responseU_ = &U;
   for (NodeLink& nl : nodes_) {
     domain::Node& n = *nl.node;
     for (int d = 0; d < n.ndf(); ++d) {

@@ -6,6 +6,7 @@
 #include <array>
 #include <cstdint>
 #include <functional>
+#include <limits>
 #include <optional>
 #include <span>
 #include <string>
@@ -125,6 +126,18 @@ class AnalysisModel {
   /// the linear system must then analyse the new pattern.
   void applySleepChanges();
   long sleepingPairs() const noexcept { return sleeping_; }
+  /// Far tests of sleeping pairs made since construction (one per pair per check; a resting
+  /// face's pairs are not tested until its horizon is reached).
+  long farTests() const noexcept { return farTests_; }
+  /// Start of a run of steps (analyze): which pairs are observed at every step (read by a
+  /// recorder, or all of them with `observeAll`: contact stepping, a script after each step).
+  /// The others may rest: see checkSleepingPairs.
+  void beginSteps(bool observeAll);
+  /// End of a run of steps: every resting pair's gap formed at its nodes' committed positions,
+  /// as the step-by-step check would have left it, and no pair rests any longer.
+  void endSteps();
+  /// Target faces whose pairs rest (left alone: no check, no commit) at this moment.
+  std::size_t restingFaces() const;
 
  private:
   using Term = DofTerm;
@@ -178,7 +191,9 @@ class AnalysisModel {
     double distance = 0.0;                        // search distance
     contact::NodeToSurfaceContact3d<3>* pair3 = nullptr;
     contact::NodeToSurfaceContact3d<6>* pair6 = nullptr;
+    std::uint32_t domainIndex = 0;  // the element's position in the domain's tag order
     bool asleep = false;
+    bool observed = false;  // read at every step (beginSteps)
   };
   // A run of consecutive pairs (in the domain's order) against one target face: the same four
   // nodes in the same order, reference coordinates and outward normal (`pounding` defines a girder
@@ -205,14 +220,31 @@ class AnalysisModel {
   bool wantsSleep(const ElementLink& l) const;
   /// Gather and work buffers of a link for n dofs (once).
   static void allocateBuffers(ElementLink& l, int n);
-  /// The face's slab top (ContactSearch::slabTop) on its nodes' trial translations.
-  static double slabTopNow(const FarFace& f);
-  /// Sleeper's far test on its nodes' trial translations (true: still far, trial state set):
-  /// its height above the face's slab top `top`, and the pair's whole test (FarTest) when that
-  /// does not show it far.
-  static bool sleeperStaysFar(const PairLink& p, const FarFace& f, double top, double dt);
-  /// The pair's own far test (the slab and the bounding sphere) on its five nodes.
-  static bool sleeperStaysFarAlone(const PairLink& p, const FarFace& f, double dt);
+  /// The face's slab top (ContactSearch::slabTop) on its nodes' trial (or committed)
+  /// translations.
+  static double slabTopAt(const FarFace& f, bool committed);
+  /// The far test's verdict and bound on the nodes' trial (or committed) translations, without
+  /// writing the pair: the height above the face's slab top `top`, and the pair's whole test
+  /// (slab and bounding sphere, FarTest) when that does not show it far. The arithmetic of the
+  /// pair's own test, so the bound is the gap the pair reports, to the bit.
+  static bool sleeperBound(const PairLink& p, const FarFace& f, double top, bool committed,
+                           double& bound);
+  /// A resting face's motion bound advanced to this check (see checkSleepingPairs).
+  void advanceMotion(std::size_t r);
+  /// A face starts resting with horizon `reach` (the motion its pairs may take): the values of
+  /// its equations and slots now, and the domain leaves its pairs alone.
+  void startRest(std::size_t r, double reach);
+  /// A resting face whose horizon is reached: its pairs' exact test; true (and a new horizon)
+  /// when every one is still far.
+  bool rerestFace(std::size_t r);
+  /// A face stops resting: its pairs' gaps formed at the committed positions (as the check of
+  /// every step would have committed them) and the domain commits them again.
+  void wakeFace(std::size_t r);
+  /// Per face the equations and slots its nodes' translations (contactors and face) are formed
+  /// from, and their gains.
+  void buildWatch();
+  /// Each pair's `observed` (observeAll_, observedTags_) and mayRest_.
+  void markObserved();
   void buildScatter();
   void buildConstantDynamics();
   [[nodiscard]] Status updateElement(ElementLink& l, double dt) const;
@@ -260,10 +292,31 @@ class AnalysisModel {
   std::vector<double> constantValues_;
   std::optional<AssemblyCoefficients> constantFor_;
   long elementUpdates_ = 0;
+  long farTests_ = 0;
   std::map<const elements::Element*, bool> sleepWanted_;  // pairs to wake (false) or put to sleep
   long sleeping_ = 0;
   std::vector<PairLink> pairLinks_;
   std::vector<FarFace> farFaces_;  // runs of pairLinks_ by target face, in order
+  // Resting faces (see checkSleepingPairs), one per face of farFaces_: the equations and support
+  // slots the translations of its pairs' nodes are formed from (ranges of watchEqs_ and
+  // watchSlots_, their values at the last check in watchEqPrev_ and watchSlotPrev_), the largest
+  // sum of |coefficients| of one translation over them (1 for a dof that is an equation), the
+  // bound on its nodes' motion since it started resting, and the motion up to which its pairs
+  // are far for sure (-infinity when it does not rest).
+  struct FaceWatch {
+    std::uint32_t eqBegin = 0, eqEnd = 0, slotBegin = 0, slotEnd = 0;
+    double gainEq = 0.0, gainSlot = 0.0;
+    double motion = 0.0;
+    double horizon = -std::numeric_limits<double>::infinity();
+    bool resting() const noexcept { return horizon > -std::numeric_limits<double>::infinity(); }
+  };
+  std::vector<FaceWatch> faceWatch_;
+  std::vector<int> watchEqs_, watchSlots_;
+  std::vector<double> watchEqPrev_, watchSlotPrev_;
+  bool mayRest_ = false;  // some pair is not observed
+  bool observeAll_ = true;
+  std::vector<int> observedTags_;               // elements read by recorders (sorted)
+  const Eigen::VectorXd* responseU_ = nullptr;  // the displacements of the last setResponse
   // elements_ holds the awake links first (in the domain's order) and the sleepers after them, so
   // the loops of the iterations stop at awake_ and never touch a sleeper.
   std::size_t awake_ = 0;

@@ -251,7 +251,8 @@ void pounding(Runtime& rt, ArgReader& args) {
 /// its state as a dict: on, maxStep, lookAhead, overshoot, pairs (when on), and since the last
 /// wipeAnalysis contactSteps, patternChanges (matrix patterns rebuilt as far contact pairs
 /// fell asleep or woke, AnalysisModel's sleeping pairs) and redoneSteps (steps redone because a
-/// sleeping pair would have carried force). The -eachStep
+/// sleeping pair would have carried force) and farTests (far tests of sleeping pairs, one per
+/// pair and check; pairs of a resting face are not tested). The -eachStep
 /// script runs at global level after every committed step while stepping is on (a script that
 /// follows peaks between analyze's output steps); an error in it stops the analysis with that
 /// error. Set after `wipeAnalysis`, which turns stepping off.
@@ -269,7 +270,8 @@ void contactSteppingCmd(Runtime& rt, ArgReader& args) {
     }
     text += " contactSteps " + std::to_string(analysis.statistics().contactSteps) +
             " patternChanges " + std::to_string(analysis.statistics().patternChanges) +
-            " redoneSteps " + std::to_string(analysis.statistics().redoneSteps);
+            " redoneSteps " + std::to_string(analysis.statistics().redoneSteps) + " farTests " +
+            std::to_string(analysis.statistics().farTests);
     setResult(rt, text);
     return;
   }

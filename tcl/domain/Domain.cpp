@@ -239,15 +239,31 @@ void Domain::refreshLists() {
   for (auto& [tag, n] : nodes_) nodeList_.push_back(&n);
   elementList_.clear();
   for (auto& [tag, e] : elements_) elementList_.push_back(e.get());
+  dormant_.assign(elementList_.size(), 0);
   listVersion_ = modelVersion_;
 }
 
 void Domain::commit() {
   refreshLists();
   for (Node* n : nodeList_) n->commitState();
-  for (elements::Element* e : elementList_) e->commitState();
+  for (std::size_t i = 0; i < elementList_.size(); ++i)
+    if (!dormant_[i]) elementList_[i]->commitState();
   committedTime_ = time_;
   record();
+}
+
+void Domain::setDormant(std::size_t index, bool dormant) {
+  refreshLists();
+  if (index < dormant_.size()) dormant_[index] = dormant ? 1 : 0;
+}
+
+void Domain::clearDormant() { std::fill(dormant_.begin(), dormant_.end(), 0); }
+
+std::vector<int> Domain::recordedElements() const {
+  std::vector<int> tags = recorders_.elementsRead();
+  std::sort(tags.begin(), tags.end());
+  tags.erase(std::unique(tags.begin(), tags.end()), tags.end());
+  return tags;
 }
 
 void Domain::setTime(double t) {
@@ -281,7 +297,8 @@ void Domain::revertToLastCommit() {
   applyElementLoads(committedTime_);
   refreshLists();
   for (Node* n : nodeList_) n->revertToLastCommit();
-  for (elements::Element* e : elementList_) e->revertToLastCommit();
+  for (std::size_t i = 0; i < elementList_.size(); ++i)
+    if (!dormant_[i]) elementList_[i]->revertToLastCommit();
   time_ = committedTime_;
 }
 

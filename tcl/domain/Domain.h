@@ -122,6 +122,14 @@ class Domain {
   void revertToLastCommit();
   /// Back to the virgin state at time 0 (the `reset` command).
   void revertToStart();
+  /// Marks the element at `index` (its position in tag order, the order of elements()) dormant
+  /// or not. A dormant element's trial state equals its committed one and stays so until the
+  /// analysis takes it up again, so commit and revert skip it: a contact pair asleep far apart
+  /// for steps on end then costs nothing per step. The marks are cleared whenever the model
+  /// changes.
+  void setDormant(std::size_t index, bool dormant);
+  /// Clears every dormant mark.
+  void clearDormant();
   /// Increases whenever nodes, elements, constraints or patterns change; the analysis re-numbers
   /// its equations when this differs from what it saw.
   long modelVersion() const noexcept { return modelVersion_; }
@@ -138,6 +146,8 @@ class Domain {
   void removeRecorder(int tag) { recorders_.remove(tag); }
   void removeAllRecorders() { recorders_.removeAll(false); }
   void flushRecorders() { recorders_.flush(); }
+  /// Tags of the elements whose responses some recorder reads (sorted, unique).
+  std::vector<int> recordedElements() const;
   /// Records the current state with every recorder. A recorder that cannot write (a full disk)
   /// does not stop the others; its error is kept for takeRecorderError().
   void record();
@@ -173,6 +183,7 @@ class Domain {
   void refreshLists();
   std::vector<Node*> nodeList_;
   std::vector<elements::Element*> elementList_;
+  std::vector<char> dormant_;  ///< per element of elementList_ (setDormant)
   long listVersion_ = -1;
   /// Member loads at time t on the elements (see setTime).
   void applyElementLoads(double t);

@@ -17,6 +17,9 @@ class ElementRecorder final : public ResponseRecorder {
   ElementRecorder(RecorderOutput output, std::vector<int> elements,
                   std::vector<std::string> response);
   void initialize(const Domain& domain) override;
+  void elementsRead(std::vector<int>& tags) const override {
+    tags.insert(tags.end(), elements_.begin(), elements_.end());
+  }
 
  protected:
   void values(const Domain& domain, std::vector<double>& out) override;

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include <vector>
+
 namespace dabs::domain {
 
 class Domain;
@@ -23,6 +25,9 @@ class Recorder {
   virtual void initialize(const Domain& /*domain*/) {}
   /// True when the recorder needs reactions computed before it records.
   virtual bool needsReactions() const { return false; }
+  /// Appends the tags of the elements whose responses it records (the analysis keeps those
+  /// up to date at every step; see AnalysisModel's sleeping pairs).
+  virtual void elementsRead(std::vector<int>& /*tags*/) const {}
   /// Called when an eigen analysis finishes (recorders of eigenvectors write then).
   virtual void recordEigen(const Domain& /*domain*/) {}
 };

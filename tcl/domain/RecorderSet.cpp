@@ -24,6 +24,12 @@ void RecorderSet::removeAll(bool resetTags) {
   if (resetTags) nextTag_ = 0;
 }
 
+std::vector<int> RecorderSet::elementsRead() const {
+  std::vector<int> tags;
+  for (const auto& [tag, r] : recorders_) r->elementsRead(tags);
+  return tags;
+}
+
 void RecorderSet::flush() {
   for (auto& [tag, r] : recorders_) r->flush();
 }

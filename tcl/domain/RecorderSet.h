@@ -26,6 +26,8 @@ class RecorderSet {
   /// Records `domain` with every recorder; `reactions` is called once, before the first recorder
   /// that needs nodal reactions.
   void record(const Domain& domain, const std::function<void()>& reactions);
+  /// Tags of the elements the recorders read (Recorder::elementsRead), unsorted.
+  std::vector<int> elementsRead() const;
   /// The first write error since the last call, if any.
   std::optional<std::string> takeError();
 

@@ -160,6 +160,12 @@ void ViewerRecorder::initialize(const Domain& domain) {
   initialized_ = true;
 }
 
+void ViewerRecorder::elementsRead(std::vector<int>& tags) const {
+  tags.insert(tags.end(), contacts_.begin(), contacts_.end());
+  for (const ViewerPlot& p : options_.plots)
+    if (p.source == ViewerPlot::Source::Element) tags.push_back(p.tag);
+}
+
 void ViewerRecorder::record(const Domain& domain) {
   if (!initialized_) return;
   const double t = domain.time();

@@ -99,6 +99,8 @@ class ViewerRecorder final : public Recorder {
   /// Resolves the nodes and elements drawn and checks the plotted quantities exist.
   void initialize(const Domain& domain) override;
   void record(const Domain& domain) override;
+  /// The contacts (status, gap, force at every frame) and the elements plotted.
+  void elementsRead(std::vector<int>& tags) const override;
   /// Rewrites the page when frames were added (see the class comment for the rate limit).
   void flush() override;
   /// Writes the page now.

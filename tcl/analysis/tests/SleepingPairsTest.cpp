@@ -5,7 +5,10 @@
 // contactor to the bilinear face: on random configurations every sleeper gets the verdict and
 // the bound of its own test to the bit, and no pair found far is within its search distance.
 // Then a contactor that crosses the search distance and the face in one step while the other
-// pairs of its face stay far is woken and the step is redone.
+// pairs of its face stay far is woken and the step is redone. Resting faces (a face whose pairs
+// all sleep is left alone until the motion of their nodes could bring one to its search
+// distance): on random walks of the nodes, pairs wake at the same checks as with the test of
+// every step, with fewer tests, and are left out of the domain's commit while they rest.
 #include <gtest/gtest.h>
 
 #include <array>
@@ -17,6 +20,7 @@
 #include "contact/NodeToSurfaceContact3d.h"
 #include "tcl/analysis/AnalysisModel.h"
 #include "tcl/domain/Domain.h"
+#include "tcl/domain/Recorder.h"
 
 namespace dabs::analysis {
 namespace {
@@ -221,6 +225,141 @@ TEST(SleepingPairsTest, ContactorCrossingTheFaceInOneStepIsWokenAndTheStepRedone
       std::sqrt(1.1 * 1.1 + 0.4 * 0.4 + 0.04 * 0.04) - std::sqrt(1.25)};
   EXPECT_NEAR(model.trial(model.pairs()[3]).gap, expected[0], 1e-12);  // node 14
   EXPECT_NEAR(model.trial(model.pairs()[2]).gap, expected[1], 1e-12);  // node 13
+}
+
+/// Reads the responses of the elements it names (so the analysis keeps them up to date).
+struct ReadingRecorder final : domain::Recorder {
+  std::vector<int> tags;
+  void record(const domain::Domain& /*domain*/) override {}
+  void flush() override {}
+  void elementsRead(std::vector<int>& out) const override {
+    out.insert(out.end(), tags.begin(), tags.end());
+  }
+};
+
+/// The analysis' state of one check: nodes' trial translations from the walk, set through the
+/// equations (as an integrator does), the awake pairs updated, the sleepers checked, then the
+/// domain committed and the pattern rebuilt when pairs woke or fell asleep.
+AnalysisModel::SleepCheck step(AnalysisModel& analysis, domain::Domain& domain,
+                               const Eigen::VectorXd& U) {
+  const Eigen::VectorXd zero = Eigen::VectorXd::Zero(U.size());
+  analysis.setResponse(U, zero, zero);
+  EXPECT_TRUE(ok(analysis.updateElements()));
+  const auto result = analysis.checkSleepingPairs();
+  domain.commit();
+  if (result == AnalysisModel::SleepCheck::PatternChange) analysis.applySleepChanges();
+  return result;
+}
+
+TEST(SleepingPairsTest, RestingFacesWakeAtTheSameChecksWithFewerTests) {
+  // Two copies of the model walked alike: in one the faces may rest, in the other every sleeper
+  // is tested at every check (as when every pair is observed).
+  Faces resting, testedEachStep;
+  AnalysisModel a(resting.domain(), ConstraintKind::Plain, NumbererKind::Plain);
+  AnalysisModel b(testedEachStep.domain(), ConstraintKind::Plain, NumbererKind::Plain);
+  a.build();
+  b.build();
+  a.beginSteps(false);
+  b.beginSteps(true);
+  const int neq = a.numEquations();
+  ASSERT_EQ(neq, b.numEquations());
+  std::mt19937 rng(1124);
+  std::normal_distribution<double> jitter(0.0, 0.0002);
+  Eigen::VectorXd U = Eigen::VectorXd::Zero(neq);
+  int wakes = 0, rested = 0;
+  for (int k = 0; k < 600; ++k) {
+    // Faces shake a little; contactors shake, sink towards their faces for 150 checks and rise
+    // for 150, twice (so pairs wake, fall asleep beyond twice their distance, and rest again).
+    for (auto& [tag, node] : resting.domain().nodes()) {
+      const bool contactor = tag % 100 > 10;
+      for (int d = 0; d < 3; ++d) {
+        const int eq = a.equationOf(tag, d);
+        ASSERT_EQ(eq, b.equationOf(tag, d));
+        double du = jitter(rng);
+        if (contactor && d == 2) du += k % 300 < 150 ? -0.001 : 0.001;
+        // now and then one contactor dives at its face, 8 mm a check for 5 checks, and comes back:
+        // the motion bound's margin over a straight approach (sqrt(3) x 4) is what it relies on
+        if (contactor && d == 2 && tag % 100 == 11 + (k / 40) % 4 && k % 40 < 10)
+          du += k % 40 < 5 ? -0.008 : 0.008;
+        U(eq) += du;
+      }
+      // a contactor never goes below 0.01 m above its face's plane (no force: no redone steps)
+      const int ez = a.equationOf(tag, 2);
+      if (contactor) U(ez) = std::max(U(ez), 0.01 - kHeight);
+    }
+    const auto ra = step(a, resting.domain(), U);
+    const auto rb = step(b, testedEachStep.domain(), U);
+    ASSERT_EQ(ra, rb) << "check " << k;
+    if (ra == AnalysisModel::SleepCheck::PatternChange) ++wakes;
+    rested += a.restingFaces() > 0 ? 1 : 0;
+    EXPECT_EQ(b.restingFaces(), 0u);
+    EXPECT_EQ(a.sleepingPairs(), b.sleepingPairs()) << "check " << k;
+  }
+  a.endSteps();
+  b.endSteps();
+  EXPECT_EQ(a.elementUpdates(), b.elementUpdates());
+  EXPECT_GT(wakes, 4);     // pairs woke and fell asleep again
+  EXPECT_GT(rested, 100);  // and faces rested for many checks
+  // about half the tests on this restless walk (every node jitters, contactors dive)
+  EXPECT_LT(a.farTests(), 0.7 * static_cast<double>(b.farTests()));
+  // After the steps every pair reads as with the test of every step, to the bit.
+  for (std::size_t i = 0; i < resting.pairs().size(); ++i) {
+    const auto& sa = resting.trial(resting.pairs()[i]);
+    const auto& sb = testedEachStep.trial(testedEachStep.pairs()[i]);
+    EXPECT_EQ(sa.gap, sb.gap) << "pair " << i;
+    EXPECT_EQ(sa.status, sb.status) << "pair " << i;
+  }
+}
+
+TEST(SleepingPairsTest, RestingPairsAreNotCommittedAndRecordedPairsNeverRest) {
+  Faces model(1);
+  auto reader = std::make_unique<ReadingRecorder>();
+  reader->tags = {1005};  // the contactor that names its face's nodes in another order: a run
+  model.domain().addRecorder(std::move(reader));
+  AnalysisModel analysis(model.domain(), ConstraintKind::Plain, NumbererKind::Plain);
+  analysis.build();
+  analysis.beginSteps(false);
+  Eigen::VectorXd U = Eigen::VectorXd::Zero(analysis.numEquations());
+  // A pair rests once it is settled far (its committed state far, after one check and commit).
+  step(analysis, model.domain(), U);
+  step(analysis, model.domain(), U);
+  // Five pairs against the face as given rest; the recorded one, alone in its run, does not.
+  EXPECT_EQ(analysis.restingFaces(), 1u);
+  const long tests = analysis.farTests();
+  const Pair& first = model.pairs()[0];
+  auto* pair = dynamic_cast<NodeToSurfaceContact3d<3>*>(first.element);
+  ASSERT_NE(pair, nullptr);
+  const double committedGap = pair->committedState().gap;
+  // The contactors move 1 mm up and back by turns, the face stays: each check adds sqrt(3) mm
+  // to the motion bound, so the resting run's horizon, its smallest slack (0.2 m high, search
+  // distance 0.1 m for one of its pairs) over the far bound's Lipschitz constant 4, is reached
+  // after 0.025 / (sqrt(3) 1e-3) = 14.4 checks. Until then only the recorded pair is tested, and
+  // the resting pairs' committed gaps stay as they were although their trial gaps would change.
+  const int expectedAlone =
+      static_cast<int>(std::ceil((kHeight - 2.0 * kSearch) / 4.0 / (std::sqrt(3.0) * 1e-3))) - 1;
+  int checksAlone = 0;
+  for (int k = 0; k < 30; ++k) {
+    for (const auto& [tag, node] : model.domain().nodes())
+      if (tag % 100 > 10) U(analysis.equationOf(tag, 2)) = k % 2 == 0 ? 0.001 : 0.0;
+    const long before = analysis.farTests();
+    step(analysis, model.domain(), U);
+    EXPECT_EQ(pair->committedState().gap, committedGap) << "a resting pair is not committed";
+    if (analysis.farTests() - before > 1) {  // the horizon: the run's six pairs tested, far
+      EXPECT_EQ(analysis.farTests() - before, 6);
+      break;
+    }
+    ++checksAlone;  // the recorded pair alone
+  }
+  EXPECT_EQ(checksAlone, expectedAlone);
+  EXPECT_EQ(analysis.restingFaces(), 1u);  // far still: it rests on
+  EXPECT_GT(analysis.farTests(), tests);
+  // At the end its gap is its own test's bound at the committed positions.
+  analysis.endSteps();
+  double bound = 0.0;
+  ASSERT_TRUE(model.farTest(first).isFar(model.translations(first), bound));
+  EXPECT_EQ(pair->committedState().gap, bound);
+  EXPECT_EQ(pair->trialState().gap, bound);
+  EXPECT_EQ(analysis.restingFaces(), 0u);
 }
 
 }  // namespace
