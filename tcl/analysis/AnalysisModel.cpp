@@ -351,18 +351,21 @@ void AnalysisModel::buildWatch() {
     watchSlots_.insert(watchSlots_.end(), slots.begin(), slots.end());
     w.slotEnd = static_cast<std::uint32_t>(watchSlots_.size());
   }
-  watchEqPrev_.assign(watchEqs_.size(), 0.0);
-  watchSlotPrev_.assign(watchSlots_.size(), 0.0);
+  watchEqAtRest_.assign(watchEqs_.size(), 0.0);
+  watchSlotAtRest_.assign(watchSlots_.size(), 0.0);
 }
 
 void AnalysisModel::startRest(std::size_t r, double reach) {
   FaceWatch& w = faceWatch_[r];
   if (responseU_ == nullptr || responseU_->size() != neq_) return;  // no motion bound: no rest
-  for (std::uint32_t k = w.eqBegin; k < w.eqEnd; ++k) watchEqPrev_[k] = (*responseU_)(watchEqs_[k]);
+  for (std::uint32_t k = w.eqBegin; k < w.eqEnd; ++k)
+    watchEqAtRest_[k] = (*responseU_)(watchEqs_[k]);
   for (std::uint32_t k = w.slotBegin; k < w.slotEnd; ++k)
-    watchSlotPrev_[k] = slots_[static_cast<std::size_t>(watchSlots_[k])].disp;
+    watchSlotAtRest_[k] = slots_[static_cast<std::size_t>(watchSlots_[k])].disp;
   w.motion = 0.0;
+  const bool wasResting = w.resting();
   w.horizon = reach;
+  if (wasResting) return;
   const FarFace& f = farFaces_[r];
   for (std::uint32_t i = f.first; i < f.end; ++i)
     domain_.setDormant(pairLinks_[i].domainIndex, true);
@@ -375,27 +378,24 @@ void AnalysisModel::advanceMotion(std::size_t r) {
     return;
   }
   const double* U = responseU_->data();
-  // The largest changes since the last check; a NaN change makes the motion infinite.
+  // The largest changes since the face's last exact test (a NaN or infinite one: no bound).
   double eqMax = 0.0, slotMax = 0.0;
   bool finite = true;
   for (std::uint32_t k = w.eqBegin; k < w.eqEnd; ++k) {
-    const double u = U[watchEqs_[k]];
-    const double change = std::abs(u - watchEqPrev_[k]);
+    const double change = std::abs(U[watchEqs_[k]] - watchEqAtRest_[k]);
     finite = finite && change < kInfinity;
     eqMax = std::max(eqMax, change);
-    watchEqPrev_[k] = u;
   }
   for (std::uint32_t k = w.slotBegin; k < w.slotEnd; ++k) {
-    const double u = slots_[static_cast<std::size_t>(watchSlots_[k])].disp;
-    const double change = std::abs(u - watchSlotPrev_[k]);
+    const double change =
+        std::abs(slots_[static_cast<std::size_t>(watchSlots_[k])].disp - watchSlotAtRest_[k]);
     finite = finite && change < kInfinity;
     slotMax = std::max(slotMax, change);
-    watchSlotPrev_[k] = u;
   }
   // A translation moved by at most its gain times the largest change of what it is formed from,
   // and a node (three translations) by sqrt(3) times that; the factor covers the sum's round-off.
-  const double step = std::sqrt(3.0) * (w.gainEq * eqMax + w.gainSlot * slotMax) * (1.0 + 1e-9);
-  w.motion = finite ? w.motion + step : kInfinity;
+  const double moved = std::sqrt(3.0) * (w.gainEq * eqMax + w.gainSlot * slotMax) * (1.0 + 1e-9);
+  w.motion = finite ? moved : kInfinity;
 }
 
 bool AnalysisModel::rerestFace(std::size_t r) {
@@ -409,7 +409,7 @@ bool AnalysisModel::rerestFace(std::size_t r) {
     if (!sleeperBound(p, f, top, false, bound)) return false;
     slack = std::min(slack, restSlack(bound, p.distance, p.X));
   }
-  faceWatch_[r].horizon = faceWatch_[r].motion + slack / kBoundLipschitz;
+  startRest(r, slack / kBoundLipschitz);  // measured from here on
   return true;
 }
 
@@ -468,18 +468,18 @@ AnalysisModel::SleepCheck AnalysisModel::checkSleepingPairs() {
   // each of its contactors costs its height above it. The pairs are taken in the domain's order.
   //
   // Resting faces: a face whose pairs all sleep settled far and are read by nobody during the
-  // steps (no recorder, no contact stepping) is left alone until the motion of its pairs' nodes
-  // could have brought one of them to its search distance: each check adds a bound on that
-  // motion (from the largest change of the equations and support values the nodes'
-  // translations are formed from) to the face's motion, and its horizon is its motion at its
-  // last exact test plus the smallest excess of its pairs' bounds over their distances, over the
-  // bound's Lipschitz constant. This is the neighbour list with a skin of molecular dynamics
-  // (Verlet, Phys Rev 159 (1967) 98-103; the list is rebuilt when the largest displacement since
-  // could have closed the skin, Allen and Tildesley, Computer Simulation of Liquids, 2nd ed. 2017,
-  // sec. 5.3). The face is tested exactly when its horizon is reached, so a pair is woken at the
-  // same step as with the test of every step, and the results do not change. A resting pair is not
-  // committed (Domain::setDormant); its gap is formed at the committed positions when it is read
-  // again (wakeFace, endSteps).
+  // steps (no recorder, no contact stepping) is left alone until its pairs' nodes could have
+  // moved far enough to bring one of them to its search distance: how far they moved since the
+  // face's last exact test is bounded by the largest change since then of the equations and
+  // support values their translations are formed from, and the face is due when that reaches the
+  // smallest excess of its pairs' bounds over their distances at the test, over the bound's
+  // Lipschitz constant. This is the neighbour list with a skin of molecular dynamics (Verlet,
+  // Phys Rev 159 (1967) 98-103; the list is rebuilt when the largest displacement since it was
+  // built could have closed the skin, Allen and Tildesley, Computer Simulation of Liquids, 2nd
+  // ed. 2017, sec. 5.3). The face is tested exactly when its horizon is reached, so a pair is
+  // woken at the same step as with the test of every step, and the results do not change. A
+  // resting pair is not committed (Domain::setDormant); its gap is formed at the committed
+  // positions when it is read again (wakeFace, endSteps).
   for (std::size_t r = 0; r < farFaces_.size(); ++r) {
     if (faceWatch_[r].resting()) {
       advanceMotion(r);
@@ -540,7 +540,7 @@ void AnalysisModel::applySleepChanges() {
   struct Carried {
     FaceWatch watch;
     std::vector<int> eqs, slots;
-    std::vector<double> eqPrev, slotPrev;
+    std::vector<double> eqAtRest, slotAtRest;
   };
   std::map<const elements::Element*, Carried> carried;  // by the face's first pair
   for (std::size_t r = 0; r < farFaces_.size(); ++r) {
@@ -549,8 +549,8 @@ void AnalysisModel::applySleepChanges() {
     Carried c{w,
               {watchEqs_.begin() + w.eqBegin, watchEqs_.begin() + w.eqEnd},
               {watchSlots_.begin() + w.slotBegin, watchSlots_.begin() + w.slotEnd},
-              {watchEqPrev_.begin() + w.eqBegin, watchEqPrev_.begin() + w.eqEnd},
-              {watchSlotPrev_.begin() + w.slotBegin, watchSlotPrev_.begin() + w.slotEnd}};
+              {watchEqAtRest_.begin() + w.eqBegin, watchEqAtRest_.begin() + w.eqEnd},
+              {watchSlotAtRest_.begin() + w.slotBegin, watchSlotAtRest_.begin() + w.slotEnd}};
     carried.emplace(elements_[pairLinks_[farFaces_[r].first].link].element, std::move(c));
     wakeFace(r);
   }
@@ -571,8 +571,8 @@ void AnalysisModel::applySleepChanges() {
     for (std::uint32_t i = f.first; i < f.end && same; ++i)
       same = pairLinks_[i].asleep && !pairLinks_[i].observed;
     if (!same) continue;
-    std::copy(c.eqPrev.begin(), c.eqPrev.end(), watchEqPrev_.begin() + w.eqBegin);
-    std::copy(c.slotPrev.begin(), c.slotPrev.end(), watchSlotPrev_.begin() + w.slotBegin);
+    std::copy(c.eqAtRest.begin(), c.eqAtRest.end(), watchEqAtRest_.begin() + w.eqBegin);
+    std::copy(c.slotAtRest.begin(), c.slotAtRest.end(), watchSlotAtRest_.begin() + w.slotBegin);
     w.motion = c.watch.motion;
     w.horizon = c.watch.horizon;
     for (std::uint32_t i = f.first; i < f.end; ++i)

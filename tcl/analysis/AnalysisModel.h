@@ -229,10 +229,10 @@ class AnalysisModel {
   /// pair's own test, so the bound is the gap the pair reports, to the bit.
   static bool sleeperBound(const PairLink& p, const FarFace& f, double top, bool committed,
                            double& bound);
-  /// A resting face's motion bound advanced to this check (see checkSleepingPairs).
+  /// A resting face's bound on how far its nodes moved since its last exact test.
   void advanceMotion(std::size_t r);
-  /// A face starts resting with horizon `reach` (the motion its pairs may take): the values of
-  /// its equations and slots now, and the domain leaves its pairs alone.
+  /// A face starts (or goes on) resting with horizon `reach` (how far its nodes may move): the
+  /// values of its equations and slots now, and the domain leaves its pairs alone.
   void startRest(std::size_t r, double reach);
   /// A resting face whose horizon is reached: its pairs' exact test; true (and a new horizon)
   /// when every one is still far.
@@ -299,10 +299,10 @@ class AnalysisModel {
   std::vector<FarFace> farFaces_;  // runs of pairLinks_ by target face, in order
   // Resting faces (see checkSleepingPairs), one per face of farFaces_: the equations and support
   // slots the translations of its pairs' nodes are formed from (ranges of watchEqs_ and
-  // watchSlots_, their values at the last check in watchEqPrev_ and watchSlotPrev_), the largest
-  // sum of |coefficients| of one translation over them (1 for a dof that is an equation), the
-  // bound on its nodes' motion since it started resting, and the motion up to which its pairs
-  // are far for sure (-infinity when it does not rest).
+  // watchSlots_, their values at the face's last exact test in watchEqAtRest_ and
+  // watchSlotAtRest_), the largest sum of |coefficients| of one translation over them (1 for a
+  // dof that is an equation), the bound on how far its nodes have moved since that test, and the
+  // bound up to which its pairs are far for sure (-infinity when it does not rest).
   struct FaceWatch {
     std::uint32_t eqBegin = 0, eqEnd = 0, slotBegin = 0, slotEnd = 0;
     double gainEq = 0.0, gainSlot = 0.0;
@@ -312,7 +312,7 @@ class AnalysisModel {
   };
   std::vector<FaceWatch> faceWatch_;
   std::vector<int> watchEqs_, watchSlots_;
-  std::vector<double> watchEqPrev_, watchSlotPrev_;
+  std::vector<double> watchEqAtRest_, watchSlotAtRest_;
   bool mayRest_ = false;  // some pair is not observed
   bool observeAll_ = true;
   std::vector<int> observedTags_;               // elements read by recorders (sorted)

@@ -11,7 +11,10 @@
 #   dabs verification/bench/far-pairs.tcl ?joints? ?steps? ?repeat? ?csv? ?modes? ?order? ?process?
 #
 # `modes` (default "none far evaluated") runs a subset (e.g. one mode for valgrind); the
-# comparison lines need "none" among them. `order`: "joint" (default) defines each joint's pairs
+# comparison lines need "none" among them. Mode `removed` defines the far pairs and removes them
+# (`remove element`) before the analysis: the analysis of the model without pairs, on the heap
+# that defining the pairs between the joints' nodes and springs left (a control: what the
+# model's memory layout costs, apart from anything the pairs do). `order`: "joint" (default) defines each joint's pairs
 # with its nodes and springs, as a viaduct script built span by span does; "after" defines all
 # pairs after the rest of the model. `process`: "fresh" (default) runs each model in a process of
 # its own, the modes in turn within each repeat; "same" runs them all in this process, one mode's
@@ -40,13 +43,15 @@ proc pairs {j mode} {
   set a [expr {1000 * $j}]; set b [expr {1000 * $j + 100}]
   set opts [list -K 1.0e7 -mu_s 0.3]
   if {$mode eq "far"} { lappend opts -search 0.05 }
-  pounding [expr {100000 + 8 * $j}] \
+  lappend ::pairTags {*}[pounding [expr {100000 + 8 * $j}] \
       -side1 [list [expr {$a+1}] [expr {$a+2}] [expr {$a+3}] [expr {$a+4}]] [list [expr {$a+1}] [expr {$a+2}] [expr {$a+3}] [expr {$a+4}]] \
-      -side2 [list [expr {$b+1}] [expr {$b+2}] [expr {$b+3}] [expr {$b+4}]] [list [expr {$b+1}] [expr {$b+4}] [expr {$b+3}] [expr {$b+2}]] {*}$opts
+      -side2 [list [expr {$b+1}] [expr {$b+2}] [expr {$b+3}] [expr {$b+4}]] [list [expr {$b+1}] [expr {$b+4}] [expr {$b+3}] [expr {$b+2}]] {*}$opts]
 }
 
 proc build {J mode order} {
   wipe
+  set ::pairTags {}
+  set defined [expr {$mode eq "removed" ? "far" : $mode}]
   model basic -ndm 3 -ndf 3
   uniaxialMaterial Elastic 1 1.0e5
   set ele 0
@@ -65,11 +70,12 @@ proc build {J mode order} {
         element zeroLength [incr ele] [expr {$n + 50}] $n -mat 1 1 1 -dir 1 2 3
       }
     }
-    if {$mode ne "none" && $order eq "joint"} { pairs $j $mode }
+    if {$mode ne "none" && $order eq "joint"} { pairs $j $defined }
   }
   if {$mode ne "none" && $order eq "after"} {
-    for {set j 0} {$j < $J} {incr j} { pairs $j $mode }
+    for {set j 0} {$j < $J} {incr j} { pairs $j $defined }
   }
+  if {$mode eq "removed"} { foreach tag $::pairTags { remove element $tag } }
   timeSeries Trig 1 0.0 100.0 0.5 -factor 0.5
   pattern UniformExcitation 1 1 -accel 1
   constraints Plain; numberer RCM; system UmfPack
@@ -77,7 +83,7 @@ proc build {J mode order} {
   integrator Newmark 0.5 0.25; analysis Transient
 }
 
-# One run: {cpu_s iterations elementUpdates patternChanges disp_node1}.
+# One run: {cpu_s iterations elementUpdates patternChanges disp_node1 farTests}.
 proc runOnce {J steps mode order} {
   build $J $mode $order
   set t0 [cpuSeconds]
@@ -85,8 +91,9 @@ proc runOnce {J steps mode order} {
   set t [expr {[cpuSeconds] - $t0}]
   if {$rc != 0} { error "$mode: analyze returned $rc" }
   set st [analysisStatistics]
+  set cs [contactStepping]
   return [list $t [dict get $st iterations] [dict get $st elementUpdates] \
-      [dict get [contactStepping] patternChanges] [nodeDisp 1 1]]
+      [dict get $cs patternChanges] [nodeDisp 1 1] [dict get $cs farTests]]
 }
 
 if {$process eq "same" && $repeat == 1 && [llength $modes] == 1 && $csv eq "-"} {
@@ -120,14 +127,14 @@ for {set r 0} {$r < $repeat} {incr r} {
 }
 
 set rows {}
-puts [format "%-9s %6s %6s %9s %9s %10s %12s %8s %8s %12s" mode pairs steps cpu_s median_s us/step iterations elemUpd patterns peak_disp]
+puts [format "%-9s %6s %6s %9s %9s %10s %12s %8s %8s %8s %12s" mode pairs steps cpu_s median_s us/step iterations elemUpd patterns farTests peak_disp]
 foreach mode $modes {
   set best [tcl::mathfunc::min {*}$times($mode)]
   set med [median $times($mode)]
-  lassign $last($mode) t iterations updates patterns d
-  set pairs [expr {$mode eq "none" ? 0 : 8 * $J}]
-  puts [format "%-9s %6d %6d %9.2f %9.3f %10.1f %12d %8d %8s %12.6e" $mode $pairs $steps $best $med [expr {1e6 * $best / $steps}] \
-      $iterations $updates $patterns $d]
+  lassign $last($mode) t iterations updates patterns d farTests
+  set pairs [expr {$mode in {none removed} ? 0 : 8 * $J}]
+  puts [format "%-9s %6d %6d %9.2f %9.3f %10.1f %12d %8d %8s %8s %12.6e" $mode $pairs $steps $best $med [expr {1e6 * $best / $steps}] \
+      $iterations $updates $patterns $farTests $d]
   lappend rows [list $mode $pairs $steps $best $iterations $updates $d $med]
 }
 set base [lindex $rows 0 3]
