@@ -414,8 +414,9 @@ bool AnalysisModel::rerestFace(std::size_t r) {
 }
 
 void AnalysisModel::wakeFace(std::size_t r) {
-  // The committed positions are within the face's horizon, so every pair is far there, and its
-  // bound there is the gap the check of every step would have committed.
+  // The committed positions are within the face's horizon (the displacements the checks saw:
+  // beginSteps lets no face rest under an integrator that checks at others), so every pair is
+  // far there, and its bound there is the gap the check of every step would have committed.
   const FarFace& f = farFaces_[r];
   const double top = slabTopAt(f, true);
   for (std::uint32_t i = f.first; i < f.end; ++i) {
@@ -446,6 +447,7 @@ void AnalysisModel::beginSteps(bool observeAll) {
 void AnalysisModel::endSteps() {
   for (std::size_t r = 0; r < faceWatch_.size(); ++r)
     if (faceWatch_[r].resting()) wakeFace(r);
+  responseU_ = nullptr;  // the vector may go (eigen's, a replaced integrator's)
 }
 
 void AnalysisModel::markObserved() {
@@ -468,16 +470,17 @@ AnalysisModel::SleepCheck AnalysisModel::checkSleepingPairs() {
   // each of its contactors costs its height above it. The pairs are taken in the domain's order.
   //
   // Resting faces: a face whose pairs all sleep settled far and are read by nobody during the
-  // steps (no recorder, no contact stepping) is left alone until its pairs' nodes could have
-  // moved far enough to bring one of them to its search distance: how far they moved since the
-  // face's last exact test is bounded by the largest change since then of the equations and
-  // support values their translations are formed from, and the face is due when that reaches the
-  // smallest excess of its pairs' bounds over their distances at the test, over the bound's
-  // Lipschitz constant. This is the neighbour list with a skin of molecular dynamics (Verlet,
-  // Phys Rev 159 (1967) 98-103; the list is rebuilt when the largest displacement since it was
-  // built could have closed the skin, Allen and Tildesley, Computer Simulation of Liquids, 2nd
-  // ed. 2017, sec. 5.3). The face is tested exactly when its horizon is reached, so a pair is
-  // woken at the same step as with the test of every step, and the results do not change. A
+  // steps (beginSteps: no recorder names them, no contact stepping, no script after each step,
+  // more than one step, an integrator that checks at the committed displacements) is left alone
+  // until its pairs' nodes could have moved far enough to bring one of them to its search distance:
+  // how far they moved since the face's last exact test is bounded by the largest change since then
+  // of the equations and support values their translations are formed from, and the face is due
+  // when that reaches the smallest excess of its pairs' bounds over their distances at the test,
+  // over the bound's Lipschitz constant. This is the neighbour list with a skin of molecular
+  // dynamics (Verlet, Phys Rev 159 (1967) 98-103; the list is rebuilt when the largest displacement
+  // since it was built could have closed the skin, Allen and Tildesley, Computer Simulation of
+  // Liquids, 2nd ed. 2017, sec. 5.3). The face is tested exactly when its horizon is reached, so a
+  // pair is woken at the same step as with the test of every step, and the results do not change. A
   // resting pair is not committed (Domain::setDormant); its gap is formed at the committed
   // positions when it is read again (wakeFace, endSteps).
   for (std::size_t r = 0; r < farFaces_.size(); ++r) {

@@ -127,7 +127,8 @@ class AnalysisModel {
   void applySleepChanges();
   long sleepingPairs() const noexcept { return sleeping_; }
   /// Far tests of sleeping pairs made since construction (one per pair per check; a resting
-  /// face's pairs are not tested until its horizon is reached).
+  /// face's pairs are not tested until its horizon is reached, and twice at the check where a
+  /// pair of it wakes).
   long farTests() const noexcept { return farTests_; }
   /// Start of a run of steps (analyze): which pairs are observed at every step (read by a
   /// recorder, or all of them with `observeAll`: contact stepping, a script after each step).

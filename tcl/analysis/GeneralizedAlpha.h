@@ -21,6 +21,8 @@ class GeneralizedAlpha final : public Integrator {
   AssemblyCoefficients coefficients(StiffnessKind k) const override;
   Status commit(LinearSystem& system) override;
   void revertToLastStep() override;
+  /// The nodes hold (1 - alphaF) U_n + alphaF U_n+1 during the step.
+  bool checksCommittedDisplacements() const override { return alphaF_ == 1.0; }
 
  private:
   Status pushWeighted(LinearSystem& system);

@@ -29,6 +29,9 @@ class Integrator {
   virtual void revertToLastStep() {}
   /// Step size the integrator would like next (static integrators adapt it); 0 when unused.
   virtual void setStepSize(double /*dt*/) {}
+  /// True when the nodes hold the displacements the step commits while the step is checked (the
+  /// sleeping contact pairs' test); false when they hold weighted ones (HHT, generalized alpha).
+  virtual bool checksCommittedDisplacements() const { return true; }
 
  protected:
   /// Writes U, V, A to the nodes and updates the elements.

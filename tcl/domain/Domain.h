@@ -123,10 +123,10 @@ class Domain {
   /// Back to the virgin state at time 0 (the `reset` command).
   void revertToStart();
   /// Marks the element at `index` (its position in tag order, the order of elements()) dormant
-  /// or not. A dormant element's trial state equals its committed one and stays so until the
-  /// analysis takes it up again, so commit and revert skip it: a contact pair asleep far apart
-  /// for steps on end then costs nothing per step. The marks are cleared whenever the model
-  /// changes.
+  /// or not. A dormant element's state is the analysis' to keep until it takes the element up
+  /// again (a resting contact pair's gap is formed anew then), so commit and revert skip it: a
+  /// contact pair asleep far apart for steps on end then costs nothing per step. The marks are
+  /// cleared whenever the model changes, and the analysis clears them at the end of `analyze`.
   void setDormant(std::size_t index, bool dormant);
   /// Clears every dormant mark.
   void clearDormant();

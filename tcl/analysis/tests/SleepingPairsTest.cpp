@@ -344,7 +344,7 @@ TEST(SleepingPairsTest, RestingPairsAreNotCommittedAndRecordedPairsNeverRest) {
     const long before = analysis.farTests();
     step(analysis, model.domain(), U);
     EXPECT_EQ(pair->committedState().gap, committedGap) << "a resting pair is not committed";
-    if (analysis.farTests() - before > 1) {  // the horizon: the run's six pairs tested, far
+    if (analysis.farTests() - before > 1) {  // the horizon: the run's five pairs and the recorded
       EXPECT_EQ(analysis.farTests() - before, 6);
       break;
     }
