@@ -2,8 +2,9 @@
 // Over 400 lines: the numbering (DofNumberer), the constraints (ConstraintHandler) and the sparse
 // pattern (AssemblyPattern) live in their own files; what stays here is what works on the
 // per-element and per-node scatter records (ElementLink, NodeLink), which are private to this
-// class: building them, the sleeping contact pairs, gathering and updating, and assembling the
-// residual and the tangent through them.
+// class: building them, the sleeping contact pairs and their resting faces (whose motion bound
+// is MotionWatch's), gathering and updating, and assembling the residual and the tangent
+// through them.
 #include "tcl/analysis/AnalysisModel.h"
 
 #include <algorithm>
@@ -254,7 +255,7 @@ void AnalysisModel::buildScatter() {
   for (PairLink& p : pairLinks_) p.domainIndex = domainIndex.at(elements_[p.link].element);
   domain_.clearDormant();
   markObserved();
-  buildWatch();  // no face rests
+  buildWatch();
   for (NodeLink& nl : nodes_) fix(nl.mass, nl.rowCol);
   constantFor_.reset();
   for (PenaltyRow& row : penalties_) {
@@ -308,94 +309,40 @@ bool AnalysisModel::sleeperBound(const PairLink& p, const FarFace& f, double top
 }
 
 void AnalysisModel::buildWatch() {
-  watchEqs_.clear();
-  watchSlots_.clear();
-  faceWatch_.assign(farFaces_.size(), FaceWatch{});
-  for (std::size_t r = 0; r < farFaces_.size(); ++r) {
-    const FarFace& f = farFaces_[r];
-    FaceWatch& w = faceWatch_[r];
+  faceMotion_.clear();
+  for (const FarFace& f : farFaces_) {
+    faceMotion_.beginGroup();
     std::vector<const domain::Node*> nodes(f.nodes.begin(), f.nodes.end());
     for (std::uint32_t i = f.first; i < f.end; ++i) nodes.push_back(pairLinks_[i].contactor);
-    std::vector<int> eqs, slots;
     for (const domain::Node* n : nodes) {
       const NodeLink& nl = nodes_[static_cast<std::size_t>(nodeIndex_.at(n->tag()))];
       for (int d = 0; d < 3; ++d) {
         const auto g = static_cast<std::size_t>(nl.firstDof + d);
-        if (const int eq = directEq_[g]; eq >= 0) {
-          eqs.push_back(eq);
-          w.gainEq = std::max(w.gainEq, 1.0);
-          continue;
-        }
-        double eqGain = 0.0, slotGain = 0.0;
-        for (const Term& t : dofTerms_[g]) {
-          if (t.index >= 0) {
-            eqGain += std::abs(t.coef);
-            eqs.push_back(t.index);
-          } else {
-            slotGain += std::abs(t.coef);
-            slots.push_back(-t.index - 1);
-          }
-        }
-        w.gainEq = std::max(w.gainEq, eqGain);
-        w.gainSlot = std::max(w.gainSlot, slotGain);
+        if (const int eq = directEq_[g]; eq >= 0)
+          faceMotion_.addEquation(eq);
+        else
+          faceMotion_.addTranslation(dofTerms_[g]);
       }
     }
-    for (std::vector<int>* v : {&eqs, &slots}) {
-      std::sort(v->begin(), v->end());
-      v->erase(std::unique(v->begin(), v->end()), v->end());
-    }
-    w.eqBegin = static_cast<std::uint32_t>(watchEqs_.size());
-    watchEqs_.insert(watchEqs_.end(), eqs.begin(), eqs.end());
-    w.eqEnd = static_cast<std::uint32_t>(watchEqs_.size());
-    w.slotBegin = static_cast<std::uint32_t>(watchSlots_.size());
-    watchSlots_.insert(watchSlots_.end(), slots.begin(), slots.end());
-    w.slotEnd = static_cast<std::uint32_t>(watchSlots_.size());
+    faceMotion_.endGroup();
   }
-  watchEqAtRest_.assign(watchEqs_.size(), 0.0);
-  watchSlotAtRest_.assign(watchSlots_.size(), 0.0);
+  faceHorizon_.assign(farFaces_.size(), -kInfinity);
 }
 
 void AnalysisModel::startRest(std::size_t r, double reach) {
-  FaceWatch& w = faceWatch_[r];
   if (responseU_ == nullptr || responseU_->size() != neq_) return;  // no motion bound: no rest
-  for (std::uint32_t k = w.eqBegin; k < w.eqEnd; ++k)
-    watchEqAtRest_[k] = (*responseU_)(watchEqs_[k]);
-  for (std::uint32_t k = w.slotBegin; k < w.slotEnd; ++k)
-    watchSlotAtRest_[k] = slots_[static_cast<std::size_t>(watchSlots_[k])].disp;
-  w.motion = 0.0;
-  const bool wasResting = w.resting();
-  w.horizon = reach;
+  faceMotion_.snapshot(r, *responseU_, slots_);
+  const bool wasResting = faceHorizon_[r] > -kInfinity;
+  faceHorizon_[r] = reach;
   if (wasResting) return;
   const FarFace& f = farFaces_[r];
   for (std::uint32_t i = f.first; i < f.end; ++i)
     domain_.setDormant(pairLinks_[i].domainIndex, true);
 }
 
-void AnalysisModel::advanceMotion(std::size_t r) {
-  FaceWatch& w = faceWatch_[r];
-  if (responseU_ == nullptr || responseU_->size() != neq_) {  // no bound: the face is due
-    w.motion = kInfinity;
-    return;
-  }
-  const double* U = responseU_->data();
-  // The largest changes since the face's last exact test (a NaN or infinite one: no bound).
-  double eqMax = 0.0, slotMax = 0.0;
-  bool finite = true;
-  for (std::uint32_t k = w.eqBegin; k < w.eqEnd; ++k) {
-    const double change = std::abs(U[watchEqs_[k]] - watchEqAtRest_[k]);
-    finite = finite && change < kInfinity;
-    eqMax = std::max(eqMax, change);
-  }
-  for (std::uint32_t k = w.slotBegin; k < w.slotEnd; ++k) {
-    const double change =
-        std::abs(slots_[static_cast<std::size_t>(watchSlots_[k])].disp - watchSlotAtRest_[k]);
-    finite = finite && change < kInfinity;
-    slotMax = std::max(slotMax, change);
-  }
-  // A translation moved by at most its gain times the largest change of what it is formed from,
-  // and a node (three translations) by sqrt(3) times that; the factor covers the sum's round-off.
-  const double moved = std::sqrt(3.0) * (w.gainEq * eqMax + w.gainSlot * slotMax) * (1.0 + 1e-9);
-  w.motion = finite ? moved : kInfinity;
+double AnalysisModel::faceMoved(std::size_t r) const {
+  if (responseU_ == nullptr || responseU_->size() != neq_) return kInfinity;
+  return faceMotion_.moved(r, *responseU_, slots_);
 }
 
 bool AnalysisModel::rerestFace(std::size_t r) {
@@ -429,12 +376,12 @@ void AnalysisModel::wakeFace(std::size_t r) {
       p.pair6->setSettledGap(bound);
     domain_.setDormant(p.domainIndex, false);
   }
-  faceWatch_[r].horizon = -kInfinity;
+  faceHorizon_[r] = -kInfinity;
 }
 
 std::size_t AnalysisModel::restingFaces() const {
-  return static_cast<std::size_t>(std::count_if(faceWatch_.begin(), faceWatch_.end(),
-                                                [](const FaceWatch& w) { return w.resting(); }));
+  return static_cast<std::size_t>(std::count_if(faceHorizon_.begin(), faceHorizon_.end(),
+                                                [](double h) { return h > -kInfinity; }));
 }
 
 void AnalysisModel::beginSteps(bool observeAll) {
@@ -445,8 +392,8 @@ void AnalysisModel::beginSteps(bool observeAll) {
 }
 
 void AnalysisModel::endSteps() {
-  for (std::size_t r = 0; r < faceWatch_.size(); ++r)
-    if (faceWatch_[r].resting()) wakeFace(r);
+  for (std::size_t r = 0; r < faceHorizon_.size(); ++r)
+    if (faceHorizon_[r] > -kInfinity) wakeFace(r);
   responseU_ = nullptr;  // the vector may go (eigen's, a replaced integrator's)
 }
 
@@ -484,9 +431,8 @@ AnalysisModel::SleepCheck AnalysisModel::checkSleepingPairs() {
   // resting pair is not committed (Domain::setDormant); its gap is formed at the committed
   // positions when it is read again (wakeFace, endSteps).
   for (std::size_t r = 0; r < farFaces_.size(); ++r) {
-    if (faceWatch_[r].resting()) {
-      advanceMotion(r);
-      if (faceWatch_[r].motion < faceWatch_[r].horizon) continue;  // far for sure
+    if (faceHorizon_[r] > -kInfinity) {
+      if (faceMoved(r) < faceHorizon_[r]) continue;  // far for sure
       if (rerestFace(r)) continue;
       wakeFace(r);
     }
@@ -541,20 +487,16 @@ void AnalysisModel::applySleepChanges() {
   // a face with the same pairs, all still asleep, watching the same equations, rests again with
   // its motion bound and horizon.
   struct Carried {
-    FaceWatch watch;
-    std::vector<int> eqs, slots;
-    std::vector<double> eqAtRest, slotAtRest;
+    MotionWatch::Saved motion;
+    double horizon;
+    std::uint32_t pairs;
   };
   std::map<const elements::Element*, Carried> carried;  // by the face's first pair
   for (std::size_t r = 0; r < farFaces_.size(); ++r) {
-    const FaceWatch& w = faceWatch_[r];
-    if (!w.resting()) continue;
-    Carried c{w,
-              {watchEqs_.begin() + w.eqBegin, watchEqs_.begin() + w.eqEnd},
-              {watchSlots_.begin() + w.slotBegin, watchSlots_.begin() + w.slotEnd},
-              {watchEqAtRest_.begin() + w.eqBegin, watchEqAtRest_.begin() + w.eqEnd},
-              {watchSlotAtRest_.begin() + w.slotBegin, watchSlotAtRest_.begin() + w.slotEnd}};
-    carried.emplace(elements_[pairLinks_[farFaces_[r].first].link].element, std::move(c));
+    if (!(faceHorizon_[r] > -kInfinity)) continue;
+    carried.emplace(
+        elements_[pairLinks_[farFaces_[r].first].link].element,
+        Carried{faceMotion_.save(r), faceHorizon_[r], farFaces_[r].end - farFaces_[r].first});
     wakeFace(r);
   }
   buildScatter();
@@ -564,20 +506,11 @@ void AnalysisModel::applySleepChanges() {
     const FarFace& f = farFaces_[r];
     const auto it = carried.find(elements_[pairLinks_[f.first].link].element);
     if (it == carried.end()) continue;
-    const Carried& c = it->second;
-    FaceWatch& w = faceWatch_[r];
-    bool same = std::equal(c.eqs.begin(), c.eqs.end(), watchEqs_.begin() + w.eqBegin,
-                           watchEqs_.begin() + w.eqEnd) &&
-                std::equal(c.slots.begin(), c.slots.end(), watchSlots_.begin() + w.slotBegin,
-                           watchSlots_.begin() + w.slotEnd) &&
-                c.watch.gainEq == w.gainEq && c.watch.gainSlot == w.gainSlot;
+    bool same = f.end - f.first == it->second.pairs;
     for (std::uint32_t i = f.first; i < f.end && same; ++i)
       same = pairLinks_[i].asleep && !pairLinks_[i].observed;
-    if (!same) continue;
-    std::copy(c.eqAtRest.begin(), c.eqAtRest.end(), watchEqAtRest_.begin() + w.eqBegin);
-    std::copy(c.slotAtRest.begin(), c.slotAtRest.end(), watchSlotAtRest_.begin() + w.slotBegin);
-    w.motion = c.watch.motion;
-    w.horizon = c.watch.horizon;
+    if (!same || !faceMotion_.restore(r, it->second.motion)) continue;
+    faceHorizon_[r] = it->second.horizon;
     for (std::uint32_t i = f.first; i < f.end; ++i)
       domain_.setDormant(pairLinks_[i].domainIndex, true);
   }

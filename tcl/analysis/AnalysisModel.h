@@ -16,6 +16,7 @@
 #include "materials/Status.h"
 #include "tcl/analysis/ConstraintHandler.h"
 #include "tcl/analysis/DofNumberer.h"
+#include "tcl/analysis/MotionWatch.h"
 #include "tcl/domain/Domain.h"
 
 namespace dabs::analysis {
@@ -230,8 +231,9 @@ class AnalysisModel {
   /// pair's own test, so the bound is the gap the pair reports, to the bit.
   static bool sleeperBound(const PairLink& p, const FarFace& f, double top, bool committed,
                            double& bound);
-  /// A resting face's bound on how far its nodes moved since its last exact test.
-  void advanceMotion(std::size_t r);
+  /// A resting face's bound on how far its nodes moved since its last exact test (infinity
+  /// without the displacements).
+  double faceMoved(std::size_t r) const;
   /// A face starts (or goes on) resting with horizon `reach` (how far its nodes may move): the
   /// values of its equations and slots now, and the domain leaves its pairs alone.
   void startRest(std::size_t r, double reach);
@@ -242,7 +244,7 @@ class AnalysisModel {
   /// every step would have committed them) and the domain commits them again.
   void wakeFace(std::size_t r);
   /// Per face the equations and slots its nodes' translations (contactors and face) are formed
-  /// from, and their gains.
+  /// from (faceMotion_); no face rests.
   void buildWatch();
   /// Each pair's `observed` (observeAll_, observedTags_) and mayRest_.
   void markObserved();
@@ -298,22 +300,12 @@ class AnalysisModel {
   long sleeping_ = 0;
   std::vector<PairLink> pairLinks_;
   std::vector<FarFace> farFaces_;  // runs of pairLinks_ by target face, in order
-  // Resting faces (see checkSleepingPairs), one per face of farFaces_: the equations and support
-  // slots the translations of its pairs' nodes are formed from (ranges of watchEqs_ and
-  // watchSlots_, their values at the face's last exact test in watchEqAtRest_ and
-  // watchSlotAtRest_), the largest sum of |coefficients| of one translation over them (1 for a
-  // dof that is an equation), the bound on how far its nodes have moved since that test, and the
-  // bound up to which its pairs are far for sure (-infinity when it does not rest).
-  struct FaceWatch {
-    std::uint32_t eqBegin = 0, eqEnd = 0, slotBegin = 0, slotEnd = 0;
-    double gainEq = 0.0, gainSlot = 0.0;
-    double motion = 0.0;
-    double horizon = -std::numeric_limits<double>::infinity();
-    bool resting() const noexcept { return horizon > -std::numeric_limits<double>::infinity(); }
-  };
-  std::vector<FaceWatch> faceWatch_;
-  std::vector<int> watchEqs_, watchSlots_;
-  std::vector<double> watchEqAtRest_, watchSlotAtRest_;
+  // Resting faces (see checkSleepingPairs): per face of farFaces_ the bound on how far its
+  // nodes may move from their positions at its last exact test before a pair of it could be
+  // within its search distance (-infinity when it does not rest), and the motion of its nodes
+  // (a MotionWatch group per face: its four nodes and its contactors).
+  std::vector<double> faceHorizon_;
+  MotionWatch faceMotion_;
   bool mayRest_ = false;  // some pair is not observed
   bool observeAll_ = true;
   std::vector<int> observedTags_;               // elements read by recorders (sorted)
