@@ -132,8 +132,9 @@ class AnalysisModel {
   /// pair of it wakes).
   long farTests() const noexcept { return farTests_; }
   /// Start of a run of steps (analyze): which pairs are observed at every step (read by a
-  /// recorder, or all of them with `observeAll`: contact stepping, a script after each step).
-  /// The others may rest: see checkSleepingPairs.
+  /// recorder, or all of them with `observeAll`: contact stepping, a script after each step, and
+  /// wherever no face may rest: a single step, an integrator that checks the pairs at weighted
+  /// displacements). The others may rest: see checkSleepingPairs.
   void beginSteps(bool observeAll);
   /// End of a run of steps: every resting pair's gap formed at its nodes' committed positions,
   /// as the step-by-step check would have left it, and no pair rests any longer.
