@@ -52,25 +52,37 @@ class CoulombFriction {
   template <class T>
   struct Result {
     std::array<T, 2> force;  ///< tangential force on the contactor (in-plane frame)
-    bool sliding;            ///< true when the cone was exceeded
+    bool sliding;            ///< true when the return map slid (the cone, or a held slide)
     Eigen::Vector2d
-        elasticAfter;    ///< elastic displacement d after the return (places the stick point)
-    double plasticSlip;  ///< |d_trial - d_after| (length)
+        elasticAfter;       ///< elastic displacement d after the return (places the stick point)
+    double plasticSlip;     ///< |d_trial - d_after| (length)
+    bool coneExceeded;      ///< the trial force exceeded the cone (the state's own branch)
+    bool aboveKinetic;      ///< the trial force is at least mu_k N (a slide may be held)
+    Eigen::Vector2d trial;  ///< value of the trial (elastic predictor) force
   };
 
+  /// Which branch the return map takes: the state's own (the cone decides), or a held one.
+  enum class Branch { Natural, Stick, Slide };
+
   /// Return map for trial elastic displacement d, normal force N >= 0 and relative tangential
-  /// velocity vt (for the dashpot). `wasSliding` is the committed status.
+  /// velocity vt (for the dashpot). `wasSliding` is the committed status. With a held `branch`
+  /// the force is the trial force (Stick) or mu_k N along it (Slide) whatever the cone says.
   template <class T>
   Result<T> returnMap(const std::array<T, 2>& d, const T& N, const std::array<T, 2>& vt,
-                      bool wasSliding) const {
+                      bool wasSliding, Branch branch = Branch::Natural) const {
     using std::sqrt;
-    Result<T> r{{T(0.0), T(0.0)}, true, Eigen::Vector2d::Zero(), 0.0};
+    Result<T> r{{T(0.0), T(0.0)},       true, Eigen::Vector2d::Zero(), 0.0, true, true,
+                Eigen::Vector2d::Zero()};
     if (!active()) return r;
     const std::array<T, 2> trial{-Kt_ * d[0] - Ct_ * vt[0], -Kt_ * d[1] - Ct_ * vt[1]};
     const Eigen::Vector2d trialValue(value(trial[0]), value(trial[1]));
     const Eigen::Vector2d dValue(value(d[0]), value(d[1]));
+    r.trial = trialValue;
     const double limit = (wasSliding ? muK_ : muS_) * value(N);
-    if (trialValue.norm() <= limit) {
+    r.coneExceeded = trialValue.norm() > limit;
+    r.aboveKinetic = trialValue.norm() >= muK_ * value(N);
+    const bool slide = branch == Branch::Natural ? r.coneExceeded : branch == Branch::Slide;
+    if (!slide || trialValue.norm() == 0.0) {
       r.force = trial;
       r.sliding = false;
       r.elasticAfter = dValue;

@@ -90,6 +90,8 @@ void NodeToSurfaceContact3d<Ndf>::clearForces() {
 
 template <int Ndf>
 void NodeToSurfaceContact3d<Ndf>::commitState() {
+  holding_ = false;
+  switches_ = 0;
   if (settledFar_) {  // the states differ in the gap alone
     committed_.gap = trial_.gap;
     return;
@@ -100,6 +102,8 @@ void NodeToSurfaceContact3d<Ndf>::commitState() {
 
 template <int Ndf>
 void NodeToSurfaceContact3d<Ndf>::revertToLastCommit() {
+  holding_ = false;
+  switches_ = 0;
   if (settledFar_) {
     trial_.gap = committed_.gap;
     return;
@@ -112,8 +116,44 @@ template <int Ndf>
 void NodeToSurfaceContact3d<Ndf>::revertToStart() {
   trial_ = committed_ = initial_;
   settledFar_ = false;
+  holding_ = false;
+  switches_ = 0;
   forcesZero_ = false;
   clearForces();
+}
+
+template <int Ndf>
+void NodeToSurfaceContact3d<Ndf>::holdStatus() {
+  if (holding_) return;
+  holding_ = true;
+  held_ = natural_;
+  slideDirection_ = trialFriction_;
+}
+
+template <int Ndf>
+elements::Element::HeldStatus NodeToSurfaceContact3d<Ndf>::checkHeldStatus() {
+  if (!holding_) return HeldStatus::Agrees;
+  const bool contact = held_.normal == NormalBranch::Kelvin || held_.normal == NormalBranch::Spring;
+  const bool normalAgrees =
+      held_.normal == NormalBranch::Spring ? springAgrees_ : held_.normal == natural_.normal;
+  const bool cycling = switches_ >= 1;  // a second switch would return to a branch held before
+  const bool frictionAgrees = !contact || !friction_.active() ||
+                              held_.sliding == natural_.sliding ||
+                              (cycling && held_.sliding && slideAgrees_);
+  if (normalAgrees && frictionAgrees) return HeldStatus::Agrees;
+  if (++switches_ > kMaxSwitches) return HeldStatus::Conflict;
+  Branches next = natural_;
+  if (normalAgrees) {
+    next.normal = held_.normal;
+  } else if (cycling && !closedAtCommit() && normal_.damping() > 0.0) {
+    const bool openKelvin =
+        (held_.normal == NormalBranch::Open && natural_.normal == NormalBranch::Kelvin) ||
+        (held_.normal == NormalBranch::Kelvin && natural_.normal == NormalBranch::Open);
+    if (openKelvin) next.normal = NormalBranch::Spring;
+  }
+  if (next.sliding) slideDirection_ = trialFriction_;
+  held_ = next;
+  return HeldStatus::Switched;
 }
 
 template <int Ndf>
@@ -124,6 +164,8 @@ bool NodeToSurfaceContact3d<Ndf>::hasNonSymmetricTangent() const {
 template <int Ndf>
 Status NodeToSurfaceContact3d<Ndf>::update(const elements::Kinematics& kin) {
   settledFar_ = false;
+  natural_ = Branches{};
+  springAgrees_ = slideAgrees_ = false;
   NodeToSurfaceState t = committed_;
   t.force.setZero();
   t.dashpotPower = 0.0;
@@ -187,7 +229,11 @@ Status NodeToSurfaceContact3d<Ndf>::update(const elements::Kinematics& kin) {
   // state, so a release never adds energy; it is continuous (zero) at g = 0 and briefly tensile.
   const bool releasing = gap >= 0.0 && committed_.status != ContactStatus::Open &&
                          committed_.gap < 0.0 && committed_.force(0) > 0.0;
-  if (gap >= 0.0 && !releasing) {
+  // The branch of the normal law: the state's own, or the held one (holdStatus). A held
+  // contact branch is evaluated on the face whatever the sign of the gap.
+  const NormalBranch heldNormal = holding_ ? held_.normal : NormalBranch::Open;
+  if (releasing) natural_.normal = NormalBranch::Release;
+  if (gap >= 0.0 && !releasing && (!holding_ || heldNormal == NormalBranch::Open)) {
     finishOpen(gap, true);
     finishAccumulators();
     return Status::Ok;
@@ -254,27 +300,44 @@ Status NodeToSurfaceContact3d<Ndf>::update(const elements::Kinematics& kin) {
   }
   const AD gdot = m[0] * vrel[0] + m[1] * vrel[1] + m[2] * vrel[2];  // = dg/dt exactly
   AD Nn = normal_.force(g, gdot);
-  if (releasing) {
-    const double Nr = std::min(committed_.force(0), -normal_.stiffness() * committed_.gap);
-    Nn = -Nr * g / (g - committed_.gap);
+  if (!releasing && g.value() < 0.0 && Nn.value() > 0.0) natural_.normal = NormalBranch::Kelvin;
+  springAgrees_ = g.value() <= 0.0 && gdot.value() <= 0.0;
+  NormalBranch branch = holding_ ? heldNormal : natural_.normal;
+  // A held release branch is the release force only where it is defined (between the committed
+  // penetration and beyond); below it the pair is closed again.
+  if (branch == NormalBranch::Release && !(g.value() > committed_.gap))
+    branch = NormalBranch::Kelvin;
+  switch (branch) {
+    case NormalBranch::Open: Nn = AD(0.0); break;
+    case NormalBranch::Kelvin:
+      if (holding_) Nn = -normal_.stiffness() * g - normal_.damping() * gdot;
+      break;
+    case NormalBranch::Spring: Nn = -normal_.stiffness() * g; break;
+    case NormalBranch::Release: {
+      const double Nr = std::min(committed_.force(0), -normal_.stiffness() * committed_.gap);
+      Nn = -Nr * g / (g - committed_.gap);
+      break;
+    }
   }
+  const bool releaseForce = branch == NormalBranch::Release;
   t.gap = g.value();
   // Dashpot power: (N - spring force) times the approach rate -gdot; when N is clipped this is
   // the released spring energy, so the energy balance stays closed.
   t.dashpotPower = (Nn.value() - normal_.stiffness() * std::max(-g.value(), 0.0)) * (-gdot.value());
-  if (releasing) {
+  if (releaseForce) {
     t.status = ContactStatus::Open;
     t.stickValid = false;
-  } else if (!(Nn.value() > 0.0)) {  // the contact would pull: no force (see NormalLaw)
+  } else if (branch == NormalBranch::Open ||
+             (!holding_ && !(Nn.value() > 0.0))) {  // the contact would pull: no force
     finishOpen(g.value(), true);
     finishAccumulators();
     return Status::Ok;
   }
 
   std::array<AD, 2> Ft{AD(0.0), AD(0.0)};
-  if (!releasing) t.status = ContactStatus::Slide;  // frictionless contact slides freely
+  if (!releaseForce) t.status = ContactStatus::Slide;  // frictionless contact slides freely
   t.stickValid = false;
-  if (friction_.active() && !releasing) {
+  if (friction_.active() && !releaseForce) {
     const bool wasInContact = committed_.status != ContactStatus::Open && committed_.stickValid;
     const Eigen::Vector2d xiS =
         wasInContact ? committed_.stickXi : (committed_.projValid ? committed_.projXi : *xi);
@@ -286,7 +349,24 @@ Status NodeToSurfaceContact3d<Ndf>::update(const elements::Kinematics& kin) {
     }
     vt[0] = dot(frame_.t1, vrel);
     vt[1] = dot(frame_.t2, vrel);
-    const auto r = friction_.returnMap(d, Nn, vt, committed_.status == ContactStatus::Slide);
+    using Branch = CoulombFriction::Branch;
+    const bool wasSliding = committed_.status == ContactStatus::Slide;
+    Branch held = !holding_ || held_.normal != branch ? Branch::Natural
+                  : held_.sliding                     ? Branch::Slide
+                                                      : Branch::Stick;
+    auto r = friction_.returnMap(d, Nn, vt, wasSliding, held);
+    if (held == Branch::Slide && r.trial.dot(slideDirection_) < 0.0) {
+      // The held slide reversed: the sliding force jumps from one side of the cone to the other
+      // there, and an end state lies in the jump (the relative motion stops: stick). One way,
+      // so the hold cannot cycle within the iterations.
+      held_.sliding = false;
+      ++switches_;
+      held = Branch::Stick;
+      r = friction_.returnMap(d, Nn, vt, wasSliding, held);
+    }
+    trialFriction_ = r.trial;
+    natural_.sliding = r.coneExceeded;
+    slideAgrees_ = r.aboveKinetic;
     Ft = r.force;
     t.status = r.sliding ? ContactStatus::Slide : ContactStatus::Stick;
     const Eigen::Vector2d dTrial(d[0].value(), d[1].value());

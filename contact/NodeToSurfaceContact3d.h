@@ -3,6 +3,7 @@
 
 #include <Eigen/Core>
 #include <array>
+#include <cstdint>
 #include <limits>
 #include <memory>
 
@@ -110,6 +111,7 @@ class NodeToSurfaceContact3d : public elements::FixedSizeElement<5, Ndf, 0u> {
   // tangent are the pair's own, allocated at its first contact (see tangents_).
   using Base = elements::FixedSizeElement<5, Ndf, 0u>;
   using Matrix = typename Base::Matrix;
+  using HeldStatus = elements::Element::HeldStatus;
 
  public:
   /// `params` must be validated. Node order: contactor, then a, b, c, d.
@@ -124,6 +126,26 @@ class NodeToSurfaceContact3d : public elements::FixedSizeElement<5, Ndf, 0u> {
 
   bool hasNonSymmetricTangent() const override;
   bool rayleighByDefault() const override { return false; }
+
+  /// Held statuses (Element::HeldStatus): the normal law's branch (open, Kelvin, spring alone,
+  /// release) and, in contact, sticking or sliding. See holdStatus().
+  bool switchesStatus() const override { return true; }
+  /// Holds the branches of the last update until the next commit or revert. While held, update()
+  /// evaluates the held branch's force whatever the trial: the Kelvin force without the
+  /// no-tension clip, the open state's zero force inside the face, the stick force outside the
+  /// cone, the sliding force inside it; the equations of the step are then smooth.
+  void holdStatus() override;
+  /// Compares the held branches with those the last update's state gives and holds those when
+  /// they differ. After two switches in a step (the branches cycle) two set-valued selections
+  /// apply, the limits of the law where it jumps (Filippov 1988): (1) in a step that starts
+  /// open, a pair that cycles between open and Kelvin holds the spring force alone; the dashpot
+  /// force jumps from 0 to C |gdot| at first touch, and an end state of the step exists only
+  /// within that jump, with N between 0 and the Kelvin force (the spring alone agrees while the
+  /// pair penetrates and approaches, gdot <= 0, where the spring force is at most the Kelvin
+  /// force); (2) a pair that cycles between stick and slide may slide while its trial force is
+  /// at least the kinetic limit mu_k N (the cone jumps from mu_s N to mu_k N at the onset of
+  /// sliding). Conflict after kMaxSwitches switches in a step.
+  elements::Element::HeldStatus checkHeldStatus() override;
   /// Open contacts carry nothing, so the assembly skips them.
   bool isActive() const override { return !forcesZero_; }
   Eigen::Ref<const Eigen::MatrixXd> tangentStiff() const override {
@@ -211,6 +233,8 @@ class NodeToSurfaceContact3d : public elements::FixedSizeElement<5, Ndf, 0u> {
   // the object (the base holds 160 bytes: the vtable pointer, tag, node list and force vector),
   // so that a sleeping pair costs a few cache lines of one page per step.
   bool forcesZero_ = true;
+  bool holding_ = false;       ///< update() evaluates held_ (see holdStatus)
+  std::uint8_t switches_ = 0;  ///< switches of the held branches in this step
   /// trial_ equals committed_ but for the gap, both quietFar, and the matrices are zero: set by a
   /// full commit or revert of such a state, cleared by every other write of trial_.
   bool settledFar_ = false;
@@ -235,6 +259,22 @@ class NodeToSurfaceContact3d : public elements::FixedSizeElement<5, Ndf, 0u> {
     Matrix c = Matrix::Zero();
   };
   std::unique_ptr<Tangents> tangents_;
+
+  /// Branch of the normal law: no force; the Kelvin force -K g - C gdot; the spring alone -K g
+  /// (the set-valued selection at first touch, see checkHeldStatus); the release force.
+  enum class NormalBranch : std::uint8_t { Open, Kelvin, Spring, Release };
+  struct Branches {
+    NormalBranch normal = NormalBranch::Open;
+    bool sliding = false;  ///< in contact (Kelvin or Spring) with friction: sliding
+    bool operator==(const Branches&) const = default;
+  };
+  static constexpr int kMaxSwitches = 8;
+  Branches held_{};            ///< the held branches (while holding_)
+  Branches natural_{};         ///< the branches the last update's state gives
+  bool springAgrees_ = false;  ///< last update: g <= 0 and gdot <= 0 (the spring branch agrees)
+  bool slideAgrees_ = false;   ///< last update: trial friction force >= mu_k N (sliding agrees)
+  Eigen::Vector2d trialFriction_ = Eigen::Vector2d::Zero();   ///< last update's trial force
+  Eigen::Vector2d slideDirection_ = Eigen::Vector2d::Zero();  ///< trial force when slide was held
 };
 
 extern template class NodeToSurfaceContact3d<3>;

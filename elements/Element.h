@@ -88,6 +88,25 @@ class Element {
   /// for benchmarks, not part of the state.
   virtual long materialUpdates() const { return 0; }
 
+  /// Held statuses (an active-set method for the iterations of a step). An element whose force
+  /// switches between laws with its state (a contact: open or closed, sticking or sliding) makes
+  /// the step's equations nonsmooth, and Newton may cycle between the laws without converging.
+  /// Once the analysis holds the statuses, update() evaluates the law of the held status whatever
+  /// the trial, so the equations are smooth; when the iterations converge, checkHeldStatus()
+  /// compares the held status with the one the converged state gives, and a disagreement makes
+  /// the element hold that one and the analysis iterate on. Commit and revert release the hold.
+  enum class HeldStatus {
+    Agrees,    ///< nothing held, or the held status is the state's own
+    Switched,  ///< the element now holds another status: update again and iterate on
+    Conflict   ///< no status the element may hold agrees with the state (the step fails)
+  };
+  /// True when the element has statuses to hold.
+  virtual bool switchesStatus() const { return false; }
+  /// Holds the status of the last update.
+  virtual void holdStatus() {}
+  /// See HeldStatus; call after an update.
+  virtual HeldStatus checkHeldStatus() { return HeldStatus::Agrees; }
+
   /// True when the element takes member loads (addLoad).
   virtual bool acceptsBeamLoads() const { return false; }
   /// Removes every member load; the domain calls it before it applies the load patterns' member

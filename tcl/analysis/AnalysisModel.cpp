@@ -155,6 +155,7 @@ void AnalysisModel::buildScatter() {
             link.rowCol.emplace_back(ea, eb);
           }
     link.rates = !e->isLinear() || imposedMotion_ || !e->dampingTangent().isZero(0.0);
+    link.switching = e->switchesStatus();
     elements_.push_back(std::move(link));
   }
   for (NodeLink& nl : nodes_) {
@@ -694,6 +695,25 @@ Status AnalysisModel::updateElements() {
   for (std::size_t k = 0; k < awake_; ++k)
     if (const Status s = elementStatus_[k]; !ok(s)) return s;
   return Status::Ok;
+}
+
+void AnalysisModel::holdStatuses() {
+  for (std::size_t k = 0; k < awake_; ++k)
+    if (ElementLink& l = elements_[k]; l.switching && !l.asleep) l.element->holdStatus();
+}
+
+elements::Element::HeldStatus AnalysisModel::checkHeldStatuses() {
+  using Held = elements::Element::HeldStatus;
+  Held result = Held::Agrees;
+  // Every element is checked (each one that disagrees switches now, not one per round).
+  for (std::size_t k = 0; k < awake_; ++k) {
+    ElementLink& l = elements_[k];
+    if (!l.switching || l.asleep) continue;
+    const Held h = l.element->checkHeldStatus();
+    if (h == Held::Conflict) result = Held::Conflict;
+    if (h == Held::Switched && result == Held::Agrees) result = Held::Switched;
+  }
+  return result;
 }
 
 void AnalysisModel::addElementMatrix(double* values, const ElementLink& l,

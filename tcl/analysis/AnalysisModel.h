@@ -86,6 +86,11 @@ class AnalysisModel {
                    bool committed) const;
   /// Updates every element from its nodes' trial response.
   [[nodiscard]] Status updateElements();
+  /// Holds the statuses of the awake elements that switch them (Element::holdStatus).
+  void holdStatuses();
+  /// Checks the held statuses after an update (Element::checkHeldStatus): Switched when some
+  /// element switched (none conflicting), Conflict when one found no status that agrees.
+  elements::Element::HeldStatus checkHeldStatuses();
   /// Element updates since construction (a work count for benchmarks).
   long elementUpdates() const noexcept { return elementUpdates_; }
   /// Threads that update elements (1: the calling thread alone). Results do not depend on it.
@@ -182,7 +187,8 @@ class AnalysisModel {
     bool constantActive = false;
     contact::NodeToSurfaceContact3d<3>* pair3 = nullptr;  // a contact pair that may sleep
     contact::NodeToSurfaceContact3d<6>* pair6 = nullptr;
-    bool asleep = false;  // left out of the pattern and the iterations
+    bool asleep = false;     // left out of the pattern and the iterations
+    bool switching = false;  // the element's force switches between laws (Element::HeldStatus)
   };
   // The pairs that may sleep, in the domain's order, with what a sleeper's once-a-step test reads
   // (kept here, compact, so that the test does not touch the element or its link): its contactor

@@ -46,10 +46,14 @@ Status KrylovNewton::solveCurrentStep(LinearSystem& system, Integrator& integrat
     system.formResidual(c);
     ++dim;
     countIteration();
-    switch (test->test(system.X, system.B)) {
-      case ConvergenceTest::Result::Converged: return Status::Ok;
-      case ConvergenceTest::Result::Failed: return Status::NotConverged;
-      case ConvergenceTest::Result::Continue: break;
+    const ConvergenceTest::Result result = test->test(system.X, system.B);
+    holdStatusesIfDue(system);
+    if (result == ConvergenceTest::Result::Failed) return Status::NotConverged;
+    if (result == ConvergenceTest::Result::Converged) {
+      const Settled settled = settleStatuses(system, c);
+      if (settled == Settled::Converged) return Status::Ok;
+      if (settled == Settled::Failed) return Status::NotConverged;
+      dim = maxDim_ + 1;  // the corrections so far belong to the former statuses: start anew
     }
   }
 }

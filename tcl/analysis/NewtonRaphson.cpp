@@ -10,13 +10,15 @@ Status NewtonRaphson::solveCurrentStep(LinearSystem& system, Integrator& integra
   const bool linear = system.model().allLinear();
   system.formResidual(integrator.coefficients(StiffnessKind::Current));
   test->start();
+  bool formTangent = true;  // modified Newton forms it at the first iteration (and after a switch)
   for (;;) {
     StiffnessKind kind = StiffnessKind::Current;
     if (tangent_ == Tangent::Initial ||
         (tangent_ == Tangent::InitialThenCurrent && iterations_ == 0))
       kind = StiffnessKind::Initial;
     const AssemblyCoefficients c = integrator.coefficients(kind);
-    if (!modified_ || iterations_ == 0) {
+    if (!modified_ || formTangent) {
+      formTangent = false;
       // A constant matrix (initial stiffness, or a linear model) is factorised only when the
       // step coefficients change; a current tangent at every iteration otherwise.
       const Status s = system.formTangent(c, kind == StiffnessKind::Initial || linear);
@@ -28,10 +30,14 @@ Status NewtonRaphson::solveCurrentStep(LinearSystem& system, Integrator& integra
     if (!ok(s)) return s;
     system.formResidual(c);
     countIteration();
-    switch (test->test(system.X, system.B)) {
-      case ConvergenceTest::Result::Converged: return Status::Ok;
-      case ConvergenceTest::Result::Failed: return Status::NotConverged;
-      case ConvergenceTest::Result::Continue: break;
+    const ConvergenceTest::Result result = test->test(system.X, system.B);
+    holdStatusesIfDue(system);
+    if (result == ConvergenceTest::Result::Failed) return Status::NotConverged;
+    if (result == ConvergenceTest::Result::Converged) {
+      const Settled settled = settleStatuses(system, c);
+      if (settled == Settled::Converged) return Status::Ok;
+      if (settled == Settled::Failed) return Status::NotConverged;
+      formTangent = true;  // a switched status changes the tangent
     }
   }
 }

@@ -23,7 +23,27 @@ class SolutionAlgorithm {
   /// Total iterations since creation (for benchmarks).
   long totalIterations() const noexcept { return totalIterations_; }
 
+  /// Iterations after which the statuses of switching elements are held (Element::HeldStatus,
+  /// an active-set method): the first iterations follow the elements' own statuses as plain
+  /// Newton does, so a step that converges within them is unchanged bit for bit; from then on the
+  /// step's equations are smooth, Newton converges on them, and a status that the converged state
+  /// contradicts is switched and the iterations go on. Three lets a contact's status settle by
+  /// itself in the usual step (closing, opening, sticking to sliding), which takes one or two.
+  static constexpr int kHoldAfter = 3;
+
  protected:
+  /// What a converged test means once the switching elements' statuses are settled.
+  enum class Settled {
+    Converged,  ///< every held status agrees with the converged state (or none is held)
+    IterateOn,  ///< a status switched: the elements were updated and the residual formed anew
+    Failed      ///< an element found no status that agrees (Element::HeldStatus::Conflict)
+  };
+  /// Holds the switching elements' statuses once the iterations of the step reach kHoldAfter
+  /// (call after each iteration's test). Returns false when holding is not due.
+  bool holdStatusesIfDue(LinearSystem& system);
+  /// To call when the test says converged: checks the held statuses and, when one switched,
+  /// updates the elements at the same displacements and forms the residual with `c`.
+  Settled settleStatuses(LinearSystem& system, const AssemblyCoefficients& c);
   /// Counts an iteration.
   void countIteration() noexcept {
     ++iterations_;
