@@ -20,11 +20,11 @@ void CoulombFriction::Params::validate() const {
   }
 }
 
-CoulombFriction::CoulombFriction(const Params& p) : Kt_(p.Kt), muS_(p.muS), muK_(p.muK) {
+CoulombFriction::CoulombFriction(const Params& p) : cone_{p.Kt, 0.0, p.muS, p.muK} {
   // Same restitution-to-damping relation as the normal dashpot (Zhu, Abe and Fujino 2002).
   if (p.et < 1.0) {
     const double mass = p.M1 * p.M2 / (p.M1 + p.M2);
-    Ct_ = 2.0 * NormalLaw::dampingRatio(p.et) * std::sqrt(p.Kt * mass);
+    cone_.Ct = 2.0 * NormalLaw::dampingRatio(p.et) * std::sqrt(p.Kt * mass);
   }
 }
 

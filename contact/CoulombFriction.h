@@ -5,10 +5,14 @@
 #include <array>
 #include <cmath>
 
+#include "materials/friction/CoulombCone.h"
+
 namespace dabs::contact {
 
 /// Coulomb friction as a return map with stick memory (style.md section 3; Zhu, Abe and Fujino
-/// 2002 for the stick/slide split and the static/kinetic coefficients).
+/// 2002 for the stick/slide split and the static/kinetic coefficients). The return map itself is
+/// materials::CoulombCone, shared with the seat of a dropped yoshidaBearing; this class adds the
+/// contact's parameters (restitution and masses for the dashpot).
 ///
 /// A tangential spring Kt joins the contactor to its stick point, a material point of the target
 /// kept in the element's committed state, and a dashpot Ct acts on the relative tangential
@@ -43,69 +47,27 @@ class CoulombFriction {
   explicit CoulombFriction(const Params& p);
 
   /// False when both coefficients are zero (frictionless contact: no tangential force at all).
-  bool active() const noexcept { return muS_ > 0.0 || muK_ > 0.0; }
-  double stiffness() const noexcept { return Kt_; }
-  double damping() const noexcept { return Ct_; }
-  double staticCoefficient() const noexcept { return muS_; }
-  double kineticCoefficient() const noexcept { return muK_; }
+  bool active() const noexcept { return cone_.active(); }
+  double stiffness() const noexcept { return cone_.Kt; }
+  double damping() const noexcept { return cone_.Ct; }
+  double staticCoefficient() const noexcept { return cone_.muS; }
+  double kineticCoefficient() const noexcept { return cone_.muK; }
 
   template <class T>
-  struct Result {
-    std::array<T, 2> force;  ///< tangential force on the contactor (in-plane frame)
-    bool sliding;            ///< true when the return map slid (the cone, or a held slide)
-    Eigen::Vector2d
-        elasticAfter;       ///< elastic displacement d after the return (places the stick point)
-    double plasticSlip;     ///< |d_trial - d_after| (length)
-    bool coneExceeded;      ///< the trial force exceeded the cone (the state's own branch)
-    bool aboveKinetic;      ///< the trial force is at least mu_k N (a slide may be held)
-    Eigen::Vector2d trial;  ///< value of the trial (elastic predictor) force
-  };
+  using Result = materials::CoulombCone::Result<T>;
 
-  /// Which branch the return map takes: the state's own (the cone decides), or a held one.
-  enum class Branch { Natural, Stick, Slide };
+  using Branch = materials::CoulombCone::Branch;
 
   /// Return map for trial elastic displacement d, normal force N >= 0 and relative tangential
-  /// velocity vt (for the dashpot). `wasSliding` is the committed status. With a held `branch`
-  /// the force is the trial force (Stick) or mu_k N along it (Slide) whatever the cone says.
+  /// velocity vt (for the dashpot). `wasSliding` is the committed status; `branch` a held one.
   template <class T>
   Result<T> returnMap(const std::array<T, 2>& d, const T& N, const std::array<T, 2>& vt,
                       bool wasSliding, Branch branch = Branch::Natural) const {
-    using std::sqrt;
-    Result<T> r{{T(0.0), T(0.0)},       true, Eigen::Vector2d::Zero(), 0.0, true, true,
-                Eigen::Vector2d::Zero()};
-    if (!active()) return r;
-    const std::array<T, 2> trial{-Kt_ * d[0] - Ct_ * vt[0], -Kt_ * d[1] - Ct_ * vt[1]};
-    const Eigen::Vector2d trialValue(value(trial[0]), value(trial[1]));
-    const Eigen::Vector2d dValue(value(d[0]), value(d[1]));
-    r.trial = trialValue;
-    const double limit = (wasSliding ? muK_ : muS_) * value(N);
-    r.coneExceeded = trialValue.norm() > limit;
-    r.aboveKinetic = trialValue.norm() >= muK_ * value(N);
-    const bool slide = branch == Branch::Natural ? r.coneExceeded : branch == Branch::Slide;
-    if (!slide || trialValue.norm() == 0.0) {
-      r.force = trial;
-      r.sliding = false;
-      r.elasticAfter = dValue;
-      return r;
-    }
-    const T norm = sqrt(trial[0] * trial[0] + trial[1] * trial[1]);
-    r.force = {muK_ * N * trial[0] / norm, muK_ * N * trial[1] / norm};
-    r.elasticAfter = -Eigen::Vector2d(value(r.force[0]), value(r.force[1])) / Kt_;
-    r.plasticSlip = (dValue - r.elasticAfter).norm();
-    return r;
+    return cone_.returnMap(d, N, vt, wasSliding, branch);
   }
 
  private:
-  static double value(double x) noexcept { return x; }
-  template <class T>
-  static double value(const T& x) noexcept {
-    return x.value();
-  }
-
-  double Kt_;
-  double Ct_ = 0.0;
-  double muS_;
-  double muK_;
+  materials::CoulombCone cone_;  ///< the pure law (materials/friction/CoulombCone.h)
 };
 
 }  // namespace dabs::contact

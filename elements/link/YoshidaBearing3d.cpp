@@ -39,6 +39,19 @@ void YoshidaBearing3d::Params::validate() const {
   if (mass < 0.0) throw InputError("mass", "must not be negative");
   if (designLimit <= 0.0) throw InputError("design", "must be positive");
   if (failureLimit < designLimit) throw InputError("failure", "must not be below the design limit");
+  if (afterFailure == AfterFailure::Drop) {
+    requireFinite(seat.h, "h");
+    requireFinite(seat.Ks, "Ks");
+    requireFinite(seat.muS, "mu_s");
+    requireFinite(seat.muK, "mu_k");
+    requireFinite(seat.Kst, "Kst");
+    if (seat.h < 0.0) throw InputError("h", "(drop height) must not be negative");
+    if (seat.Ks <= 0.0) throw InputError("Ks", "(seat stiffness) must be positive");
+    if (seat.muS < 0.0) throw InputError("mu_s", "must not be negative");
+    if (seat.muK < 0.0) throw InputError("mu_k", "must not be negative");
+    if (seat.muK > seat.muS) throw InputError("mu_k", "must not exceed mu_s");
+    if (seat.Kst <= 0.0) throw InputError("Kst", "(seat tangential stiffness) must be positive");
+  }
   if (orientX.has_value() != orientY.has_value())
     throw InputError("orient", "needs both the x and the y vector");
   if (orientX) {
@@ -54,7 +67,10 @@ void YoshidaBearing3d::Params::validate() const {
 
 YoshidaBearing3d::YoshidaBearing3d(int tag, int iNode, int jNode,
                                    const materials::BiaxialMaterial& material, const Params& p)
-    : FixedSizeElement(tag, {iNode, jNode}), material_(material.clone()), p_(p) {
+    : FixedSizeElement(tag, {iNode, jNode}),
+      material_(material.clone()),
+      p_(p),
+      seatCone_{p.seat.Kst, 0.0, p.seat.muS, p.seat.muK} {
   assert(p.Tr > 0.0 && p.Kv > 0.0);
   for (int node = 0; node < 2; ++node)
     for (int d = 0; d < 3; ++d) m_(6 * node + d, 6 * node + d) = 0.5 * p.mass;
@@ -116,7 +132,11 @@ Status YoshidaBearing3d::update(const Kinematics& trial) {
   kb(4, 4) = p_.Kry;
   kb(5, 5) = p_.Krz;
   Basic q = kb * t.deformation;
-  if (!released()) {
+  if (dropping()) {
+    q.setZero();
+    kb.setZero();
+    seatContact(t, q, kb);
+  } else if (!released()) {
     const Status s = material_->setTrialStrain(u, rate, trial.dt);
     if (!ok(s)) return s;
     q.segment<2>(1) = material_->getStress();
@@ -133,6 +153,48 @@ Status YoshidaBearing3d::update(const Kinematics& trial) {
   }
   assemble(q, kb);
   return Status::Ok;
+}
+
+void YoshidaBearing3d::seatContact(State& t, Basic& q, BasicMatrix& kb) const {
+  t.dropped = true;
+  t.seatGap = p_.seat.h + t.deformation(0);
+  t.seatForce.setZero();
+  t.sliding = false;
+  const Eigen::Vector2d s = t.deformation.segment<2>(1);
+  if (t.seatGap >= 0.0) {  // open: no force, the stick point follows node j
+    t.stickPoint = s;
+    return;
+  }
+  const double ks = p_.seat.Ks;
+  const double normal = -ks * t.seatGap;
+  q(0) = -normal;
+  kb(0, 0) = ks;
+  // In the first step after the rupture the stick point is where j stood when it was committed.
+  const Eigen::Vector2d stick = committed_.dropped
+                                    ? committed_.stickPoint
+                                    : Eigen::Vector2d(committed_.deformation.segment<2>(1));
+  const Eigen::Vector2d d = s - stick;
+  const auto r = seatCone_.returnMap<double>({d(0), d(1)}, normal, {0.0, 0.0},
+                                             committed_.dropped && committed_.sliding);
+  // r.force is the seat's force on node j; the element's resisting force at j is its opposite.
+  q(1) = -r.force[0];
+  q(2) = -r.force[1];
+  t.seatForce << normal, r.force[0], r.force[1];
+  t.stickPoint = s - r.elasticAfter;
+  t.sliding = r.sliding && seatCone_.active();
+  t.seatDissipated = committed_.seatDissipated + r.plasticSlip * std::hypot(q(1), q(2));
+  if (!seatCone_.active()) return;
+  if (!r.sliding) {
+    kb(1, 1) = kb(2, 2) = seatCone_.Kt;
+    return;
+  }
+  // q_s = mu_k N n with n = d / |d| (no dashpot, so the trial force is -Kt d):
+  // dq_s/ds = mu_k N (I - n n^T) / |d|, dq_s/dd0 = mu_k n dN/dd0 = -mu_k Ks n.
+  const double dn = d.norm();
+  const Eigen::Vector2d n = d / dn;
+  kb.block<2, 2>(1, 1) =
+      seatCone_.muK * normal / dn * (Eigen::Matrix2d::Identity() - n * n.transpose());
+  kb.block<2, 1>(1, 0) = -seatCone_.muK * ks * n;
 }
 
 void YoshidaBearing3d::assemble(const Basic& q, const BasicMatrix& kb) {
@@ -187,6 +249,12 @@ std::optional<Eigen::VectorXd> YoshidaBearing3d::response(std::span<const std::s
   if (name == "maxShearStrain") return scalar(trial_.maxShearStrain);
   if (name == "damage") return scalar(damage());
   if (name == "failureTime") return scalar(trial_.failureTime);
+  if (name == "dropped") return scalar(trial_.dropped ? 1.0 : 0.0);
+  if (name == "seatGap") return scalar(trial_.seatGap);
+  if (name == "seatForce") return Eigen::VectorXd(trial_.seatForce);
+  if (name == "seatStatus")
+    return scalar(trial_.dropped && trial_.seatGap < 0.0 ? (trial_.sliding ? 2.0 : 1.0) : 0.0);
+  if (name == "seatDissipatedEnergy") return scalar(trial_.seatDissipated);
   if (name == "hystereticForce" || name == "viscousForce" || name == "backForce" ||
       name == "dissipatedEnergy")
     return material_->response(name);
@@ -198,11 +266,22 @@ std::string YoshidaBearing3d::describe() const {
   out << Element::describe() << " material " << material_->tag() << " Tr " << p_.Tr << " Kv "
       << p_.Kv << " Kt " << p_.Kt << " Kr " << p_.Kry << " " << p_.Krz << " mass " << p_.mass
       << " limits " << p_.designLimit << " " << p_.failureLimit << " afterFailure "
-      << (p_.afterFailure == AfterFailure::Keep      ? "keep"
-          : p_.afterFailure == AfterFailure::Release ? "release"
-                                                     : "stop")
-      << " damage " << damage();
+      << afterFailureName(p_.afterFailure);
+  if (p_.afterFailure == AfterFailure::Drop)
+    out << " " << p_.seat.h << " seat " << p_.seat.Ks << " " << p_.seat.muS << " " << p_.seat.muK
+        << " " << p_.seat.Kst;
+  out << " damage " << damage();
   return out.str();
+}
+
+const char* YoshidaBearing3d::afterFailureName(AfterFailure mode) noexcept {
+  switch (mode) {
+    case AfterFailure::Keep: return "keep";
+    case AfterFailure::Release: return "release";
+    case AfterFailure::Stop: return "stop";
+    case AfterFailure::Drop: return "drop";
+  }
+  return "keep";
 }
 
 }  // namespace dabs::elements

@@ -7,6 +7,7 @@
 
 #include "elements/FixedSizeElement.h"
 #include "materials/BiaxialMaterial.h"
+#include "materials/friction/CoulombCone.h"
 
 namespace dabs::elements {
 
@@ -32,6 +33,25 @@ namespace dabs::elements {
 /// after the step in which failure was committed; the failing step itself keeps the material's
 /// force, so a Newton iteration never sees the switch.
 ///
+/// With AfterFailure::Drop the rubber ruptures: from the step after the one in which failure was
+/// committed (the same switch as Release) it carries no shear, no tension, no torsion and no
+/// rocking, and node j comes down by the bearing's height h (rubber, steel plates and sole plate)
+/// onto the seat below it (pier cap or steel seat). The seat is a compression-only point contact
+/// with Coulomb friction, in the basic (local) frame:
+///   gap       g  = h + d0                     (> 0 open; d0 = u_jx - u_ix, so g = h at rupture
+///                                               for a bearing without axial deformation)
+///   normal    N  = Ks max(0, -g)             (compressive, >= 0), basic axial force q0 = -N
+///   friction  s  = (d1, d2), the in-plane displacement of j relative to i; a spring Kst to the
+///             stick point s_c (committed), return map of materials::CoulombCone (the contact
+///             pair's law): q_(1,2) = Kst (s - s_c) while |Kst (s - s_c)| <= mu N (mu = mu_s after
+///             a committed stick, mu_k after a committed slide), else mu_k N (s - s_c)/|s - s_c|,
+///             and the stick point moves to s - q_(1,2)/Kst.
+/// While open the stick point follows j (no friction force). Torsion and rocking are zero after
+/// the drop: the girder rests on a seat point, which transmits no moment (other elements - the
+/// girder, the pier - must hold the nodes' rotations, as for a released bearing's shear). The
+/// sliding tangent is non-symmetric (dq/dd0 = -mu_k Ks n for a slide direction n, and
+/// dq/ds = mu_k N (I - n n^T)/|s - s_c|), declared by hasNonSymmetricTangent().
+///
 /// The element's own viscous force (the material's Maxwell part) is a function of the
 /// displacement increment over the step, so dampingTangent() is zero and the Maxwell stiffness is
 /// in tangentStiff(). Rayleigh damping does not apply by default (as for OpenSees zero-length
@@ -39,9 +59,19 @@ namespace dabs::elements {
 class YoshidaBearing3d final : public FixedSizeElement<2, 6> {
  public:
   /// What a bearing does once it reaches its failure shear strain: keep carrying load as if intact
-  /// (the default, Yoshida et al.'s model has no rupture), release its shear force, or keep
-  /// carrying it while the analysis stops (AnalysisBuilder returns kBearingFailureStop).
-  enum class AfterFailure { Keep, Release, Stop };
+  /// (the default, Yoshida et al.'s model has no rupture), release its shear force, keep
+  /// carrying it while the analysis stops (AnalysisBuilder returns kBearingFailureStop), or
+  /// rupture so that node j drops by h onto a seat with friction (see the class comment).
+  enum class AfterFailure { Keep, Release, Stop, Drop };
+
+  /// The seat a dropped bearing's node j lands on (AfterFailure::Drop).
+  struct Seat {
+    double h = 0.0;    ///< drop height: the bearing's height (length), >= 0
+    double Ks = 0.0;   ///< normal (vertical) stiffness of the seat (force/length), > 0
+    double muS = 0.0;  ///< static friction coefficient, >= 0
+    double muK = 0.0;  ///< kinetic friction coefficient, 0 <= muK <= muS
+    double Kst = 0.0;  ///< tangential stick stiffness (force/length), > 0
+  };
 
   /// Element parameters (the material is passed separately).
   struct Params {
@@ -56,6 +86,7 @@ class YoshidaBearing3d final : public FixedSizeElement<2, 6> {
     double designLimit = 2.5;   ///< design shear strain (250 %)
     double failureLimit = 3.0;  ///< failure shear strain (300 %)
     AfterFailure afterFailure = AfterFailure::Keep;
+    Seat seat;  ///< used with AfterFailure::Drop only (the Tcl defaults: Ks = Kv, Kst = Ks)
 
     /// Throws InputError{field, reason} for parameters that cannot make a valid element.
     void validate() const;
@@ -70,6 +101,13 @@ class YoshidaBearing3d final : public FixedSizeElement<2, 6> {
     double maxShearStrain = 0.0;              ///< largest |U| / Tr so far
     bool failed = false;                      ///< failure limit reached
     double failureTime = -1.0;  ///< time of the step in which it was reached (-1: never)
+    // Seat of a dropped bearing (AfterFailure::Drop, from the step after failure on).
+    bool dropped = false;  ///< the rubber has ruptured and node j is on (or above) the seat
+    double seatGap = 0.0;  ///< g = h + d0 (length, > 0 open); 0 before the drop
+    Eigen::Vector3d seatForce = Eigen::Vector3d::Zero();   ///< N (>= 0), Ft1, Ft2 on j (local)
+    Eigen::Vector2d stickPoint = Eigen::Vector2d::Zero();  ///< s_c (local y, z), relative to i
+    bool sliding = false;                                  ///< the friction cone was exceeded
+    double seatDissipated = 0.0;  ///< work of the seat friction so far (force x length)
   };
 
   /// `p` must be valid; the material is cloned.
@@ -80,6 +118,9 @@ class YoshidaBearing3d final : public FixedSizeElement<2, 6> {
   void initialize(const NodalCoordinates& x) override;
   [[nodiscard]] Status update(const Kinematics& trial) override;
   bool rayleighByDefault() const override { return false; }
+  /// True once the bearing has dropped onto its seat (trial state), where sliding friction makes
+  /// the tangent non-symmetric; an intact bearing keeps the symmetric solver.
+  bool hasNonSymmetricTangent() const override { return trial_.dropped; }
   Eigen::Ref<const Eigen::MatrixXd> committedStiff() const override { return kc_; }
 
   void commitState() override;
@@ -88,7 +129,10 @@ class YoshidaBearing3d final : public FixedSizeElement<2, 6> {
 
   /// force/globalForce (12), localForce (12), basicForce (6), deformation/basicDeformation (6),
   /// shearStrain, maxShearStrain, damage, failureTime (1 each), and the material's
-  /// hystereticForce, viscousForce, backForce (2, local y-z), dissipatedEnergy (1).
+  /// hystereticForce, viscousForce, backForce (2, local y-z), dissipatedEnergy (1); the seat's
+  /// dropped (1: 0 or 1), seatGap (1, g = h + d0, 0 before the drop), seatForce (3: N, Ft1, Ft2,
+  /// force of the seat on node j in local y-z), seatStatus (1: 0 intact or open, 1 stick,
+  /// 2 slide) and seatDissipatedEnergy (1).
   std::optional<Eigen::VectorXd> response(std::span<const std::string> args) const override;
   std::string describe() const override;
 
@@ -99,6 +143,8 @@ class YoshidaBearing3d final : public FixedSizeElement<2, 6> {
   const State& trialState() const noexcept { return trial_; }
   const State& committedState() const noexcept { return committed_; }
   const Params& params() const noexcept { return p_; }
+  /// The Tcl word of an AfterFailure mode (keep, release, stop, drop).
+  static const char* afterFailureName(AfterFailure mode) noexcept;
 
  private:
   using Basic = Eigen::Matrix<double, 6, 1>;
@@ -106,10 +152,17 @@ class YoshidaBearing3d final : public FixedSizeElement<2, 6> {
   bool released() const noexcept {
     return committed_.failed && p_.afterFailure == AfterFailure::Release;
   }
+  bool dropping() const noexcept {
+    return committed_.failed && p_.afterFailure == AfterFailure::Drop;
+  }
+  /// Seat contact of a dropped bearing: sets the trial seat state and the basic force and
+  /// tangent (axial and shear rows; torsion and rocking zero).
+  void seatContact(State& t, Basic& q, BasicMatrix& kb) const;
   void assemble(const Basic& q, const BasicMatrix& kb);
 
   std::unique_ptr<materials::BiaxialMaterial> material_;
   Params p_;
+  materials::CoulombCone seatCone_;  ///< friction law of the seat (AfterFailure::Drop)
   double length_ = 0.0;
   Eigen::Matrix3d axes_ = Eigen::Matrix3d::Identity();
   Eigen::Matrix<double, 6, kNumDof> b_ = Eigen::Matrix<double, 6, kNumDof>::Zero();  ///< global B

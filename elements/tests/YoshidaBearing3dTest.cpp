@@ -7,6 +7,7 @@
 
 #include <Eigen/Dense>
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -369,6 +370,383 @@ TEST(YoshidaBearing3dTest, ValidateAndInitializeRejectBadInput) {
   p.orientX = Eigen::Vector3d(0, 0, 1);
   p.orientY = Eigen::Vector3d(1, 0, 0);
   EXPECT_NO_THROW(make({Eigen::Vector3d(0, 0, 0), Eigen::Vector3d(0, 0, 1)}, false, p));
+}
+
+// --- -afterFailure drop: rupture, drop by h onto a seat with Coulomb friction -------------
+// Coincident nodes, node i fixed: local x (axis) = global Z (dof 8 of node j), local y = global
+// X (dof 6), local z = global Y (dof 7). The girder's weight W acts at j as a force -W on dof 8.
+
+constexpr double kDropH = 0.15;     // m, bearing height (rubber, plates, sole plate)
+constexpr double kSeatKs = 4.0e5;   // kN/m, seat normal stiffness
+constexpr double kSeatKst = 1.0e5;  // kN/m, seat stick stiffness
+constexpr double kMuS = 0.6;
+constexpr double kMuK = 0.4;
+constexpr double kWeight = 2000.0;           // kN, girder reaction W
+constexpr double kRuptureShear = 3.1 * kTr;  // m, past the failure strain 3.0
+
+YoshidaBearing3d::Params dropParams() {
+  YoshidaBearing3d::Params p = element();
+  p.afterFailure = YoshidaBearing3d::AfterFailure::Drop;
+  p.seat = {kDropH, kSeatKs, kMuS, kMuK, kSeatKst};
+  return p;
+}
+
+/// A drop-mode bearing with failure committed: sheared to 3.1 Tr along global X with the rubber
+/// compressed by W / Kv (the weight on the intact bearing). Returns the state at rupture.
+TrialState rupture(YoshidaBearing3d& e) {
+  TrialState s = zeroState();
+  s.u(6) = kRuptureShear;
+  s.u(8) = -kWeight / kKv;
+  EXPECT_TRUE(ok(e.update(s.kinematics())));
+  EXPECT_EQ(e.damage(), 2);
+  // The failing step keeps the rubber's forces (the switch comes in the next step).
+  EXPECT_GT(e.resistingForce()(6), 0.5 * kY0);
+  EXPECT_NEAR(e.resistingForce()(8), -kWeight, 1e-9 * kWeight);
+  EXPECT_FALSE(e.trialState().dropped);
+  e.commitState();
+  return s;
+}
+
+/// Newton solution of node j's translations (global X, Y, Z) for external force `load` with the
+/// dofs in `held` fixed at their values in `s`; the element's tangent is used as is.
+bool solveStatic(YoshidaBearing3d& e, TrialState& s, const Eigen::Vector3d& load,
+                 const std::array<bool, 3>& held) {
+  constexpr double kTol = 1e-9;  // kN
+  for (int it = 0; it < 30; ++it) {
+    if (!ok(e.update(s.kinematics()))) return false;
+    Eigen::Vector3d r = load - Eigen::Vector3d(e.resistingForce().segment<3>(6));
+    Eigen::Matrix3d k = e.tangentStiff().block<3, 3>(6, 6);
+    for (int d = 0; d < 3; ++d)
+      if (held[static_cast<std::size_t>(d)]) {
+        r(d) = 0.0;
+        k.row(d).setZero();
+        k.col(d).setZero();
+        k(d, d) = 1.0;
+      }
+    if (r.norm() < kTol) return true;
+    s.u.segment<3>(6) += k.partialPivLu().solve(r);
+  }
+  return false;
+}
+
+TEST(YoshidaBearing3dTest, DropLowersNodeJOntoTheSeatByHPlusWOverKs) {
+  auto e = make(kCoincidentNodes, false, dropParams());
+  TrialState s = rupture(*e);
+  // Next step: the rubber carries nothing; at the rupture position the seat is still h - W/Kv
+  // below node j (open), so no force at all, shear included.
+  ASSERT_TRUE(ok(e->update(s.kinematics())));
+  EXPECT_TRUE(e->trialState().dropped);
+  EXPECT_EQ(e->resistingForce().norm(), 0.0);
+  EXPECT_EQ(e->tangentStiff().norm(), 0.0);
+  EXPECT_DOUBLE_EQ(e->trialState().seatGap, kDropH - kWeight / kKv);
+  // Static equilibrium under W with node j's horizontal position free: start just below the
+  // seat (in contact, where the tangent is not zero) and let Newton find the solution.
+  s.u(8) = -kDropH - 1e-6;
+  ASSERT_TRUE(solveStatic(*e, s, Eigen::Vector3d(0, 0, -kWeight), {false, false, false}));
+  // Closed form: Ks (h + u_z) = -W, so u_z = -(h + W / Ks); no horizontal force, so j stays
+  // where it was at the rupture (the stick point).
+  EXPECT_NEAR(s.u(8), -(kDropH + kWeight / kSeatKs), 1e-12);
+  EXPECT_NEAR(s.u(6), kRuptureShear, 1e-12);
+  EXPECT_NEAR(s.u(7), 0.0, 1e-12);
+  const Vec seat = *e->response(std::vector<std::string>{"seatForce"});
+  EXPECT_NEAR(seat(0), kWeight, 1e-9 * kWeight);
+  EXPECT_NEAR((*e->response(std::vector<std::string>{"seatGap"}))(0), -kWeight / kSeatKs, 1e-12);
+  EXPECT_EQ((*e->response(std::vector<std::string>{"seatStatus"}))(0), 1.0);  // stick
+  // No torsion or rocking after the drop (the girder rests on a seat point).
+  s.u(9) = s.u(10) = s.u(11) = 1e-3;
+  ASSERT_TRUE(ok(e->update(s.kinematics())));
+  EXPECT_EQ(e->resistingForce().segment<3>(9).norm(), 0.0);
+  // Tension: lifting j above the seat gives no force (compression only).
+  s.u(8) = -kDropH + 0.01;
+  ASSERT_TRUE(ok(e->update(s.kinematics())));
+  EXPECT_EQ(e->resistingForce().norm(), 0.0);
+  EXPECT_EQ((*e->response(std::vector<std::string>{"seatStatus"}))(0), 0.0);
+}
+
+TEST(YoshidaBearing3dTest, DroppedGirderSticksBelowMuSWThenSlidesAtMuKW) {
+  auto e = make(kCoincidentNodes, false, dropParams());
+  TrialState s = rupture(*e);
+  s.u(8) = -kDropH - 1e-6;
+  ASSERT_TRUE(solveStatic(*e, s, Eigen::Vector3d(0, 0, -kWeight), {false, false, false}));
+  e->commitState();
+  const double x0 = s.u(6);  // stick point
+  const Eigen::Vector3d load(0, 0, -kWeight);
+  const std::array<bool, 3> xHeld{true, false, false};  // imposed X, solve Y and Z
+  auto tangential = [&] { return e->trialState().seatForce(1); };
+  // Stick: just below the static limit the seat holds with Kst times the slip, above mu_k W.
+  const double xStick = 0.99 * kMuS * kWeight / kSeatKst;
+  s.u(6) = x0 + xStick;
+  ASSERT_TRUE(solveStatic(*e, s, load, xHeld));
+  EXPECT_FALSE(e->trialState().sliding);
+  EXPECT_NEAR(tangential(), -kSeatKst * xStick, 1e-9 * kWeight);
+  EXPECT_GT(-tangential(), kMuK * kWeight);
+  EXPECT_NEAR(e->trialState().seatForce(0), kWeight, 1e-9 * kWeight);
+  // Beyond mu_s W / Kst it slides; the force is mu_k N = mu_k W from then on, step after step.
+  const double step = 0.01;
+  for (int n = 1; n <= 10; ++n) {
+    s.u(6) = x0 + xStick + n * step;
+    ASSERT_TRUE(solveStatic(*e, s, load, xHeld)) << "step " << n;
+    EXPECT_TRUE(e->trialState().sliding) << "step " << n;
+    EXPECT_NEAR(tangential(), -kMuK * kWeight, 1e-9 * kWeight) << "step " << n;
+    EXPECT_NEAR(s.u(8), -(kDropH + kWeight / kSeatKs), 1e-12);  // N = W: no vertical coupling
+    EXPECT_EQ((*e->response(std::vector<std::string>{"seatStatus"}))(0), 2.0);
+    e->commitState();
+  }
+  // Dissipated work: mu_k W times the plastic slip, the travel beyond the elastic mu_k W / Kst.
+  const double travel = xStick + 10 * step;
+  EXPECT_NEAR((*e->response(std::vector<std::string>{"seatDissipatedEnergy"}))(0),
+              kMuK * kWeight * (travel - kMuK * kWeight / kSeatKst), 1e-9 * kWeight);
+  // Reversal: sticks again (elastic unloading with Kst) from the slid-to stick point.
+  const double back = 0.5 * kMuK * kWeight / kSeatKst;
+  s.u(6) -= back;
+  ASSERT_TRUE(solveStatic(*e, s, load, xHeld));
+  EXPECT_FALSE(e->trialState().sliding);
+  EXPECT_NEAR(tangential(), -kMuK * kWeight + kSeatKst * back, 1e-9 * kWeight);
+}
+
+/// Drop of a mass m under gravity from the rupture position onto the seat, Newmark average
+/// acceleration on node j's vertical dof, with an external dashpot c (0: undamped). Energy
+/// ledger per step (exact for this scheme apart from the steps that open or close the seat):
+/// W (u0 - u) = m v^2 / 2 + Ks max(0, -g)^2 / 2 + sum c v_mid^2 dt.
+struct DropRun {
+  double maxPenetration = 0.0;  // largest -g
+  double worstLedger = 0.0;     // largest |energy balance| / (W h)
+  double finalU = 0.0, finalV = 0.0;
+  double seatEnergy = 0.0, damperWork = 0.0, potentialLost = 0.0;
+};
+
+DropRun dropMass(double mass, double c, double dt, double duration, bool stopAtRebound) {
+  constexpr double kG = 9.81;
+  auto e = make(kCoincidentNodes, false, dropParams());
+  const double w = mass * kG;
+  TrialState s = zeroState(dt);
+  s.u(6) = kRuptureShear;
+  s.u(8) = -w / kKv;
+  EXPECT_TRUE(ok(e->update(s.kinematics())));
+  e->commitState();  // failure committed at rest under W on the intact bearing
+  const double u0 = s.u(8);
+  double u = u0, v = 0.0;
+  EXPECT_TRUE(ok(e->update(s.kinematics())));  // the rubber is gone: f = 0, a = -g
+  double a = (-w - e->resistingForce()(8)) / mass;
+  DropRun run;
+  const int steps = static_cast<int>(std::lround(duration / dt));
+  bool landed = false;
+  for (int n = 1; n <= steps; ++n) {
+    double un = u;
+    bool converged = false;
+    for (int it = 0; it < 30 && !converged; ++it) {
+      const double an = 4.0 / (dt * dt) * (un - u) - 4.0 / dt * v - a;
+      const double vn = v + 0.5 * dt * (a + an);
+      s.u(8) = un;
+      s.v(8) = vn;
+      EXPECT_TRUE(ok(e->update(s.kinematics())));
+      const double r = -w - mass * an - c * vn - e->resistingForce()(8);
+      // Tolerance above the round-off of the inertia term (4 m / dt^2 times u ~ 0.2 m times 1e-16).
+      if (std::abs(r) < 1e-7 * w) {
+        converged = true;
+        break;
+      }
+      un += r / (e->tangentStiff()(8, 8) + 4.0 * mass / (dt * dt) + 2.0 * c / dt);
+    }
+    EXPECT_TRUE(converged) << "step " << n;
+    const double an = 4.0 / (dt * dt) * (un - u) - 4.0 / dt * v - a;
+    const double vn = v + 0.5 * dt * (a + an);
+    run.damperWork += c * 0.25 * (v + vn) * (v + vn) * dt;
+    u = un, v = vn, a = an;
+    e->commitState();
+    const double gap = e->committedState().seatGap;
+    run.maxPenetration = std::max(run.maxPenetration, -gap);
+    run.seatEnergy = 0.5 * kSeatKs * std::pow(std::max(0.0, -gap), 2);
+    run.potentialLost = w * (u0 - u);
+    const double ledger = run.potentialLost - 0.5 * mass * v * v - run.seatEnergy - run.damperWork;
+    run.worstLedger = std::max(run.worstLedger, std::abs(ledger) / (w * kDropH));
+    landed = landed || gap < 0.0;
+    if (stopAtRebound && landed && v > 0.0 && gap > 0.0) break;
+  }
+  run.finalU = u;
+  run.finalV = v;
+  return run;
+}
+
+TEST(YoshidaBearing3dTest, DropEnergyBalancesAndTheMassComesToRestOnTheSeat) {
+  constexpr double kMass = 200.0;  // t, W = 1962 kN
+  constexpr double kG = 9.81;
+  constexpr double kLedgerTol = 1e-5;  // of W h; only steps that open or close the seat err
+  const double w = kMass * kG;
+  const double fall = kDropH - w / kKv;  // free fall from the rupture position to the seat
+  // Undamped, until the rebound leaves the seat: no dissipation, so the largest penetration
+  // satisfies W (fall + p) = Ks p^2 / 2 (closed form), and the ledger balances at every step.
+  const DropRun free = dropMass(kMass, 0.0, 2e-5, 1.0, true);
+  const double pMax = w / kSeatKs + std::sqrt(std::pow(w / kSeatKs, 2) + 2.0 * w * fall / kSeatKs);
+  EXPECT_NEAR(free.maxPenetration, pMax, 1e-5 * pMax);
+  EXPECT_LT(free.worstLedger, kLedgerTol);
+  EXPECT_LT(free.damperWork, 1e-300);
+  // With a dashpot (20 % of critical on the seat) the mass comes to rest at -(h + W/Ks), and
+  // W (fall + W/Ks) = W^2 / (2 Ks) + the dashpot's work.
+  const double c = 2.0 * 0.2 * std::sqrt(kSeatKs * kMass);
+  const DropRun damped = dropMass(kMass, c, 1e-4, 3.0, false);
+  EXPECT_NEAR(damped.finalU, -(kDropH + w / kSeatKs), 1e-9);
+  EXPECT_NEAR(damped.finalV, 0.0, 1e-7);
+  EXPECT_NEAR(damped.seatEnergy, w * w / (2.0 * kSeatKs), 1e-6 * w * kDropH);
+  EXPECT_NEAR(damped.potentialLost, w * (fall + w / kSeatKs), 1e-9 * w * kDropH);
+  EXPECT_NEAR(damped.potentialLost, damped.seatEnergy + damped.damperWork, kLedgerTol * w * kDropH);
+  EXPECT_LT(damped.worstLedger, kLedgerTol);
+  if (std::getenv("DABS_PRINT_DROP"))
+    std::printf("free: p %.9g (closed %.9g) ledger %.3g; damped: u %.12g ledger %.3g\n",
+                free.maxPenetration, pMax, free.worstLedger, damped.finalU, damped.worstLedger);
+}
+
+TEST(YoshidaBearing3dTest, DroppedTangentMatchesFiniteDifference) {
+  constexpr double kFdStep = 1e-8;
+  for (const auto& x : {kCoincidentNodes, kInclined}) {
+    auto e = make(x, false, dropParams());
+    // Rupture: shear along local y, then commit; the next step is on the seat.
+    const Eigen::Matrix3d R = e->axes();
+    TrialState s = zeroState();
+    s.u.segment<3>(6) = R.transpose() * Eigen::Vector3d(0.0, kRuptureShear, 0.0);
+    ASSERT_TRUE(ok(e->update(s.kinematics())));
+    e->commitState();
+    const Eigen::Vector3d base(0.0, kRuptureShear, 0.0);  // local position of j at the rupture
+    struct Case {
+      const char* name;
+      Eigen::Vector3d local;  // local (axial, y, z) displacement of j
+      Eigen::Vector3d rot;    // rotations of j (global)
+      int status;             // expected seatStatus
+    };
+    const double pen = 0.004;  // penetration into the seat: N = Ks pen = 1600 kN
+    const double stick = 0.3 * kMuS * kSeatKs * pen / kSeatKst;
+    const double slide = 5.0 * kMuS * kSeatKs * pen / kSeatKst;
+    const std::vector<Case> cases = {
+        {"open", Eigen::Vector3d(-0.5 * kDropH, 0.01, -0.02), Eigen::Vector3d(0.01, 0, 0), 0},
+        {"stick", Eigen::Vector3d(-kDropH - pen, 0.6 * stick, -0.8 * stick),
+         Eigen::Vector3d(0.002, -0.001, 0.003), 1},
+        {"slide", Eigen::Vector3d(-kDropH - pen, 0.6 * slide, -0.8 * slide),
+         Eigen::Vector3d(0.002, -0.001, 0.003), 2},
+    };
+    for (const Case& c : cases) {
+      TrialState t = zeroState();
+      t.u.segment<3>(6) = R.transpose() * (base + c.local);
+      t.u.segment<3>(9) = c.rot;
+      ASSERT_TRUE(ok(e->update(t.kinematics())));
+      EXPECT_EQ((*e->response(std::vector<std::string>{"seatStatus"}))(0), c.status) << c.name;
+      EXPECT_TRUE(e->hasNonSymmetricTangent());
+      const Eigen::MatrixXd k = e->tangentStiff();
+      const Eigen::MatrixXd fd = testing::numericalStiffness(*e, t, kFdStep);
+      if (c.status == 0) {
+        EXPECT_EQ(fd.norm(), 0.0) << c.name;
+      } else {
+        EXPECT_LT(testing::relativeDifference(k, fd), kFdRelTol) << c.name;
+      }
+      EXPECT_EQ(k.norm() == 0.0, c.status == 0) << c.name;
+      if (c.status == 2) {
+        EXPECT_GT((k - k.transpose()).norm(), 1e-3 * k.norm()) << c.name;
+      }
+      // Rigid-body motions give no force change.
+      for (const Vec& mode : rigidModes(x))
+        EXPECT_LT((k * mode).norm(), 1e-8 * std::max(1.0, k.norm())) << c.name;
+    }
+  }
+}
+
+TEST(YoshidaBearing3dTest, DroppedStateRoundTripsAndRevertToStartIsIntact) {
+  auto e = make(kCoincidentNodes, false, dropParams());
+  TrialState s = rupture(*e);
+  s.u(8) = -kDropH - 0.004;
+  ASSERT_TRUE(ok(e->update(s.kinematics())));
+  e->commitState();
+  s.u(6) += 0.2;  // slide
+  ASSERT_TRUE(ok(e->update(s.kinematics())));
+  ASSERT_TRUE(e->trialState().sliding);
+  e->commitState();
+  const YoshidaBearing3d::State committed = e->committedState();
+  const Vec fCommitted = e->resistingForce();
+  // A trial that slides further, then reverted: the trial state is the committed one again,
+  // stick point included, and updating at the committed displacement gives the committed force.
+  TrialState t = s;
+  t.u(6) += 0.3;
+  t.u(7) -= 0.1;
+  ASSERT_TRUE(ok(e->update(t.kinematics())));
+  EXPECT_NE(e->trialState().stickPoint, committed.stickPoint);
+  e->revertToLastCommit();
+  const YoshidaBearing3d::State& r = e->trialState();
+  EXPECT_EQ(r.stickPoint, committed.stickPoint);
+  EXPECT_EQ(r.sliding, committed.sliding);
+  EXPECT_EQ(r.seatForce, committed.seatForce);
+  EXPECT_EQ(r.seatDissipated, committed.seatDissipated);
+  EXPECT_EQ(r.dropped, committed.dropped);
+  ASSERT_TRUE(ok(e->update(s.kinematics())));
+  // Same displacement from the same committed state; the committed state was sliding, so the
+  // kinetic limit applies and the force is mu_k N in the same direction.
+  EXPECT_TRUE(e->resistingForce().isApprox(fCommitted, 1e-12));
+  // revertToStart: the intact bearing, as a new one.
+  e->revertToStart();
+  EXPECT_EQ(e->damage(), 0);
+  EXPECT_FALSE(e->trialState().dropped);
+  EXPECT_FALSE(e->committedState().dropped);
+  EXPECT_EQ(e->committedState().stickPoint, Eigen::Vector2d::Zero());
+  EXPECT_EQ(e->committedState().seatDissipated, 0.0);
+  EXPECT_EQ(e->resistingForce().norm(), 0.0);
+  EXPECT_EQ(Eigen::MatrixXd(e->tangentStiff()), Eigen::MatrixXd(e->initialStiff()));
+  auto fresh = make(kCoincidentNodes, false, dropParams());
+  TrialState intact = zeroState();
+  intact.u(6) = 0.03;
+  intact.u(8) = -1e-3;
+  ASSERT_TRUE(ok(e->update(intact.kinematics())));
+  ASSERT_TRUE(ok(fresh->update(intact.kinematics())));
+  EXPECT_EQ(e->resistingForce(), fresh->resistingForce());
+  EXPECT_EQ(e->tangentStiff(), fresh->tangentStiff());
+  EXPECT_FALSE(e->hasNonSymmetricTangent());
+}
+
+TEST(YoshidaBearing3dTest, ValidateRejectsBadSeat) {
+  auto expectField = [](const YoshidaBearing3d::Params& p, const std::string& field) {
+    try {
+      p.validate();
+      ADD_FAILURE() << "accepted bad " << field;
+    } catch (const InputError& e) {
+      EXPECT_EQ(e.field(), field);
+    }
+  };
+  YoshidaBearing3d::Params p = dropParams();
+  EXPECT_NO_THROW(p.validate());
+  p.seat.h = -0.1;
+  expectField(p, "h");
+  p = dropParams();
+  p.seat.h = NAN;
+  expectField(p, "h");
+  p = dropParams();
+  p.seat.muK = 0.7;  // above mu_s
+  expectField(p, "mu_k");
+  p = dropParams();
+  p.seat.muS = -0.1;
+  expectField(p, "mu_s");
+  p = dropParams();
+  p.seat.Ks = 0.0;
+  expectField(p, "Ks");
+  p = dropParams();
+  p.seat.Kst = -1.0;
+  expectField(p, "Kst");
+  // The seat is not looked at in the other modes (their behaviour is unchanged).
+  p = element();
+  p.seat.h = -1.0;
+  EXPECT_NO_THROW(p.validate());
+}
+
+TEST(YoshidaBearing3dTest, DropResponsesHaveTheirSizes) {
+  auto e = make(kCoincidentNodes, false, dropParams());
+  TrialState s = zeroState();
+  ASSERT_TRUE(ok(e->update(s.kinematics())));
+  const std::vector<std::pair<std::string, int>> sizes = {{"dropped", 1},
+                                                          {"seatGap", 1},
+                                                          {"seatForce", 3},
+                                                          {"seatStatus", 1},
+                                                          {"seatDissipatedEnergy", 1}};
+  for (const auto& [name, size] : sizes) {
+    const auto r = e->response(std::vector<std::string>{name});
+    ASSERT_TRUE(r.has_value()) << name;
+    EXPECT_EQ(r->size(), size) << name;
+    EXPECT_EQ(r->norm(), 0.0) << name;  // intact: nothing dropped, no seat force
+  }
 }
 
 // --- Newton convergence on a bearing-mass oscillator under the Takatori record ------------

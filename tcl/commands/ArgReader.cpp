@@ -4,6 +4,7 @@
 #include "materials/InputError.h"
 
 #include <algorithm>
+#include <cassert>
 #include <cctype>
 #include <cmath>
 #include <limits>
@@ -310,6 +311,19 @@ std::optional<std::string> ArgReader::optionalWordOption(std::string_view key) {
 
 std::string ArgReader::option(std::string_view key, const std::string& fallback) {
   return optionalWordOption(key).value_or(fallback);
+}
+
+double ArgReader::realAfterOption(std::string_view key, std::string_view name) {
+  const std::size_t read = positionOf(key);
+  assert(read != 0 && "realAfterOption needs the option's value read first");
+  const std::size_t j = read + 1;
+  double value = 0.0;
+  if (j >= tokens_.size() || used_[j] || !parseReal(tokens_[j], value))
+    expected(j, name,
+             "expected a number after " + std::string(key) + " " + std::string(text(read)));
+  used_[j] = true;
+  record(name, j);
+  return value;
 }
 
 std::optional<std::vector<double>> ArgReader::optionReals(std::string_view key, std::size_t n) {

@@ -80,6 +80,10 @@ class ArgReader {
   /// Consumes "-key value" when present.
   std::optional<double> optionalOption(std::string_view key);
   std::optional<std::string> optionalWordOption(std::string_view key);
+  /// Consumes the number right after the value of option `key`, which must have been read (as in
+  /// "-afterFailure drop h", read by optionalWordOption("-afterFailure") and then
+  /// realAfterOption("-afterFailure", "h")); the number is recorded under `name`.
+  double realAfterOption(std::string_view key, std::string_view name);
   /// Consumes "-key v1 v2 ... vn" (exactly n reals) when present.
   std::optional<std::vector<double>> optionReals(std::string_view key, std::size_t n);
   /// Consumes "-key v1 v2 ..." with every following number when present (at least one).

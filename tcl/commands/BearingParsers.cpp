@@ -20,7 +20,10 @@ constexpr const char* kYoshidaUsage =
 constexpr const char* kBearingUsage =
     "element yoshidaBearing tag iNode jNode matTag -Tr Tr -Kv Kv ?-Kt Kt? ?-Kr Kr ?Krz?? "
     "?-orient x1 x2 x3 y1 y2 y3? ?-mass m? ?-limits design failure? ?-afterFailure "
-    "keep|release|stop?";
+    "keep|release|stop|{drop h}? ?-seat Ks mu_s mu_k ?Kst??";
+
+// Seat friction when -seat is not given (steel girder end on a concrete pier cap, a round value).
+constexpr double kDefaultSeatFriction = 0.5;
 
 // biaxialMaterial Yoshida tag Y0 U0 n alpha0 beta q gamma ?-maxwell k eta? ?-subIncrement s?
 // (s: largest backward-Euler sub-step of the hysteretic part, as a fraction of U0; default 0.02)
@@ -60,7 +63,9 @@ void biaxialMaterialCommand(Runtime& rt, ArgReader& args) {
 
 // element yoshidaBearing tag iNode jNode matTag -Tr Tr -Kv Kv ?-Kt Kt? ?-Kr Kr ?Krz??
 //   ?-orient x1 x2 x3 y1 y2 y3? ?-mass m? ?-limits design failure? ?-afterFailure
-//   keep|release|stop?
+//   keep|release|stop|drop?
+// with drop: -afterFailure drop h ?-seat Ks mu_s mu_k ?Kst?? (h the bearing's height; seat
+// defaults Ks = Kv, mu_s = mu_k = 0.5, Kst = Ks)
 std::unique_ptr<elements::Element> parseYoshidaBearing(Runtime& rt, ArgReader& args, int tag) {
   using elements::YoshidaBearing3d;
   if (rt.builder.ndm != 3)
@@ -98,15 +103,43 @@ std::unique_ptr<elements::Element> parseYoshidaBearing(Runtime& rt, ArgReader& a
       p.afterFailure = YoshidaBearing3d::AfterFailure::Release;
     else if (*after == "stop")
       p.afterFailure = YoshidaBearing3d::AfterFailure::Stop;
-    else
-      args.failArgument("-afterFailure", "expected keep, release or stop");
+    else if (*after == "drop") {
+      p.afterFailure = YoshidaBearing3d::AfterFailure::Drop;
+      p.seat.h = args.realAfterOption("-afterFailure", "h");
+    } else
+      args.failArgument("-afterFailure", "expected keep, release, stop or drop");
+  }
+  const auto seat = args.optionRealList("-seat");
+  if (seat) {
+    if (p.afterFailure != YoshidaBearing3d::AfterFailure::Drop)
+      args.failArgument("-seat", "needs -afterFailure drop h");
+    if (seat->size() < 3)
+      args.failArgument("-seat", "expected 3 or 4 numbers after -seat (Ks mu_s mu_k ?Kst?)");
+    if (seat->size() > 4)
+      args.failArgument("-seat", 4,
+                        "is a fifth value: -seat takes Ks mu_s mu_k and optionally Kst");
   }
   args.finish();
   if (!tr) args.fail("-Tr (total rubber thickness) is required");
   if (!kv) args.fail("-Kv (axial stiffness) is required");
   p.Tr = *tr;
   p.Kv = *kv;
-  p.validate();
+  if (p.afterFailure == YoshidaBearing3d::AfterFailure::Drop) {
+    p.seat.Ks = seat ? (*seat)[0] : p.Kv;
+    p.seat.muS = seat ? (*seat)[1] : kDefaultSeatFriction;
+    p.seat.muK = seat ? (*seat)[2] : kDefaultSeatFriction;
+    p.seat.Kst = seat && seat->size() == 4 ? (*seat)[3] : p.seat.Ks;
+  }
+  try {
+    p.validate();
+  } catch (const InputError& e) {
+    // The seat's fields share -seat: point at the value the error is about.
+    static constexpr std::array<const char*, 4> kSeatFields{"Ks", "mu_s", "mu_k", "Kst"};
+    for (std::size_t k = 0; k < kSeatFields.size(); ++k)
+      if (seat && k < seat->size() && e.field() == kSeatFields[k])
+        args.failArgument("-seat", k, e.what());
+    throw;
+  }
   const materials::BiaxialMaterial& material = rt.builder.biaxialMaterial(matTag);
   return std::make_unique<YoshidaBearing3d>(tag, iNode, jNode, material, p);
 }

@@ -1,0 +1,96 @@
+// SPDX-License-Identifier: MIT
+// Bad input to `element yoshidaBearing ... -afterFailure drop h ?-seat Ks mu_s mu_k ?Kst??`: each
+// error names the command, the argument by its position on the command line (the command word
+// is argument 0) and what was expected, and leaves the model unchanged.
+
+#include <gtest/gtest.h>
+
+#include <string>
+
+#include "tcl/commands/tests/TclFixture.h"
+
+namespace dabs::tcl {
+namespace {
+
+class BearingParsersTest : public testing::TclFixture {
+ protected:
+  /// Two coincident 6-dof nodes and a Yoshida material 1.
+  void bearingModel() {
+    ok("model basic -ndm 3 -ndf 6");
+    ok("node 1 0 0 0; node 2 0 0 0");
+    ok("biaxialMaterial Yoshida 1 150.0 0.012 2.0 0.0 0.0 1.0 0.0");
+  }
+  int elementCount() { return std::stoi(ok("llength [getEleTags]")); }
+  /// What `print -ele tag` writes (through a file, as print writes to the console).
+  std::string printed(int tag) {
+    const std::string file = ::testing::TempDir() + "bearing-print.txt";
+    ok("print -file " + file + " -ele " + std::to_string(tag));
+    return ok("set f [open " + file + "]; set text [read $f]; close $f; file delete " + file +
+              "; set text");
+  }
+  // "element yoshidaBearing 5 1 2 1 -Tr 0.2 -Kv 1e6": -Tr is argument 6, -Kv 8, the next
+  // option word 10 (so in "-afterFailure drop h -seat Ks ..": drop 11, h 12, Ks 14).
+  static std::string bearing(const std::string& options) {
+    return "element yoshidaBearing 5 1 2 1 -Tr 0.2 -Kv 1e6 " + options;
+  }
+};
+
+::testing::AssertionResult has(const std::string& message, const std::string& part) {
+  if (message.find(part) != std::string::npos) return ::testing::AssertionSuccess();
+  return ::testing::AssertionFailure() << "\"" << part << "\" not in: " << message;
+}
+
+TEST_F(BearingParsersTest, DropModeIsAcceptedWithAndWithoutSeat) {
+  bearingModel();
+  ok(bearing("-afterFailure drop 0.25"));
+  // Defaults: Ks = Kv, mu_s = mu_k = 0.5, Kst = Ks.
+  EXPECT_TRUE(has(printed(5), "afterFailure drop 0.25 seat 1e+06 0.5 0.5 1e+06"));
+  ok("node 3 0 0 0; node 4 0 0 0");
+  ok("element yoshidaBearing 6 3 4 1 -Tr 0.2 -Kv 1e6 -afterFailure drop 0.25 -seat 2e6 0.6 0.4");
+  EXPECT_TRUE(has(printed(6), "afterFailure drop 0.25 seat 2e+06 0.6 0.4 2e+06"));
+  ok("node 7 0 0 0; node 8 0 0 0");
+  ok("element yoshidaBearing 7 7 8 1 -Tr 0.2 -Kv 1e6 -seat 2e6 0.6 0.4 5e5 -afterFailure drop 0");
+  EXPECT_TRUE(has(printed(7), "afterFailure drop 0 seat 2e+06 0.6 0.4 500000"));
+  EXPECT_EQ(ok("eleResponse 7 seatForce"), "0.0 0.0 0.0");
+  EXPECT_EQ(ok("eleResponse 7 dropped"), "0.0");
+}
+
+TEST_F(BearingParsersTest, DropErrorsNameTheArgumentAndWhatWasExpected) {
+  bearingModel();
+  std::string m = error(bearing("-afterFailure drop"));
+  EXPECT_TRUE(has(m,
+                  "element yoshidaBearing 5: argument 12 (h) expected a number after "
+                  "-afterFailure drop, got nothing"));
+  m = error(bearing("-afterFailure drop -seat 1e6 0.5 0.4"));
+  EXPECT_TRUE(has(m, "argument 12 (h) expected a number after -afterFailure drop, got \"-seat\""));
+  m = error(bearing("-afterFailure drop -0.1"));
+  EXPECT_TRUE(has(m,
+                  "element yoshidaBearing 5: argument 12: h (drop height) must not be "
+                  "negative, got \"-0.1\""));
+  m = error(bearing("-afterFailure drop 0.2 -seat 1e6 0.3 0.4"));
+  EXPECT_TRUE(has(m, "argument 16 (-seat) mu_k must not exceed mu_s, got \"0.4\""));
+  m = error(bearing("-afterFailure drop 0.2 -seat 0 0.5 0.4"));
+  EXPECT_TRUE(has(m, "argument 14 (-seat) Ks (seat stiffness) must be positive, got \"0\""));
+  m = error(bearing("-afterFailure drop 0.2 -seat 1e6 0.5 0.4 -2"));
+  EXPECT_TRUE(has(m, "argument 17 (-seat) Kst (seat tangential stiffness) must be positive"));
+  m = error(bearing("-afterFailure drop 0.2 -seat 1e6 0.5"));
+  EXPECT_TRUE(has(m, "(-seat) expected 3 or 4 numbers after -seat (Ks mu_s mu_k ?Kst?)"));
+  m = error(bearing("-afterFailure drop 0.2 -seat 1e6 0.5 0.4 1e6 7"));
+  EXPECT_TRUE(has(m, "argument 18 (-seat) is a fifth value"));
+  m = error(bearing("-afterFailure drop 0.2 -seat abc 0.5 0.4"));
+  EXPECT_TRUE(has(m, "argument 14 (-seat) expected numbers after -seat, got \"abc\""));
+  m = error(bearing("-seat 1e6 0.5 0.4"));
+  EXPECT_TRUE(has(m, "(-seat) needs -afterFailure drop h"));
+  m = error(bearing("-afterFailure release -seat 1e6 0.5 0.4"));
+  EXPECT_TRUE(has(m, "(-seat) needs -afterFailure drop h"));
+  m = error(bearing("-afterFailure fall"));
+  EXPECT_TRUE(has(m,
+                  "argument 11 (-afterFailure) expected keep, release, stop or drop, got "
+                  "\"fall\""));
+  EXPECT_TRUE(has(m, "usage: element yoshidaBearing"));
+  EXPECT_EQ(elementCount(), 0);           // nothing was added
+  ok(bearing("-afterFailure drop 0.2"));  // the tag is still free
+}
+
+}  // namespace
+}  // namespace dabs::tcl
