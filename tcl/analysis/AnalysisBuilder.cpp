@@ -318,13 +318,12 @@ bool AnalysisBuilder::noteBearingFailures() {
           text, sizeof text,
           "yoshidaBearing %d reached its failure shear strain %g at time %g; -afterFailure %s: %s",
           tag, b.params().failureLimit, b.committedState().failureTime,
-          mode == YoshidaBearing3d::AfterFailure::Keep      ? "keep"
-          : mode == YoshidaBearing3d::AfterFailure::Release ? "release"
-                                                            : "stop",
+          YoshidaBearing3d::afterFailureName(mode),
           mode == YoshidaBearing3d::AfterFailure::Keep
               ? "it goes on carrying load as if intact (the rubber has ruptured in reality)"
-          : mode == YoshidaBearing3d::AfterFailure::Release
-              ? "it carries no shear from now on"
+          : mode == YoshidaBearing3d::AfterFailure::Release ? "it carries no shear from now on"
+          : mode == YoshidaBearing3d::AfterFailure::Drop
+              ? "the rubber carries nothing from now on; the girder end comes down onto its seat"
               : "the analysis stops here with code -5");
       log(text);
     }

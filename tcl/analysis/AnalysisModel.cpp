@@ -697,9 +697,14 @@ Status AnalysisModel::updateElements() {
   return Status::Ok;
 }
 
-void AnalysisModel::holdStatuses() {
+bool AnalysisModel::holdStatuses() {
+  bool any = false;
   for (std::size_t k = 0; k < awake_; ++k)
-    if (ElementLink& l = elements_[k]; l.switching && !l.asleep) l.element->holdStatus();
+    if (ElementLink& l = elements_[k]; l.switching && !l.asleep) {
+      l.element->holdStatus();
+      any = true;
+    }
+  return any;
 }
 
 elements::Element::HeldStatus AnalysisModel::checkHeldStatuses() {

@@ -86,8 +86,9 @@ class AnalysisModel {
                    bool committed) const;
   /// Updates every element from its nodes' trial response.
   [[nodiscard]] Status updateElements();
-  /// Holds the statuses of the awake elements that switch them (Element::holdStatus).
-  void holdStatuses();
+  /// Holds the statuses of the awake elements that switch them (Element::holdStatus); false when
+  /// there is none.
+  bool holdStatuses();
   /// Checks the held statuses after an update (Element::checkHeldStatus): Switched when some
   /// element switched (none conflicting), Conflict when one found no status that agrees.
   elements::Element::HeldStatus checkHeldStatuses();

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 #include "tcl/analysis/NewtonRaphson.h"
 
+#include <limits>
+
 namespace dabs::analysis {
 
 Status NewtonRaphson::solveCurrentStep(LinearSystem& system, Integrator& integrator,
@@ -11,6 +13,8 @@ Status NewtonRaphson::solveCurrentStep(LinearSystem& system, Integrator& integra
   system.formResidual(integrator.coefficients(StiffnessKind::Current));
   test->start();
   bool formTangent = true;  // modified Newton forms it at the first iteration (and after a switch)
+  bool holding = false;     // some element's status is held
+  double lastNorm = std::numeric_limits<double>::infinity();
   for (;;) {
     StiffnessKind kind = StiffnessKind::Current;
     if (tangent_ == Tangent::Initial ||
@@ -31,7 +35,15 @@ Status NewtonRaphson::solveCurrentStep(LinearSystem& system, Integrator& integra
     system.formResidual(c);
     countIteration();
     const ConvergenceTest::Result result = test->test(system.X, system.B);
-    holdStatusesIfDue(system);
+    // Modified Newton forms its tangent anew when it holds the statuses (its tangent is that of
+    // the step's start, which may miss a contact that closed since), after a switch, and while
+    // statuses are held whenever the norm grows (a held release force is strongly curved).
+    if (holdStatusesIfDue(system)) {
+      holding = true;
+      formTangent = true;
+    }
+    if (holding && test->lastNorm() > lastNorm) formTangent = true;
+    lastNorm = test->lastNorm();
     if (result == ConvergenceTest::Result::Failed) return Status::NotConverged;
     if (result == ConvergenceTest::Result::Converged) {
       const Settled settled = settleStatuses(system, c);

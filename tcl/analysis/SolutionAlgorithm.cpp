@@ -5,8 +5,7 @@ namespace dabs::analysis {
 
 bool SolutionAlgorithm::holdStatusesIfDue(LinearSystem& system) {
   if (iterations_ != kHoldAfter) return false;
-  system.model().holdStatuses();
-  return true;
+  return system.model().holdStatuses();
 }
 
 SolutionAlgorithm::Settled SolutionAlgorithm::settleStatuses(LinearSystem& system,
