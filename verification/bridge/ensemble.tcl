@@ -72,7 +72,8 @@ set limits [dict create bearing-250 2.5 bearing-300 3.0 opening $serviceMaxOpeni
     unseating $seatLength residual $serviceMaxResidual]
 set damageStates {bearing-250 bearing-300 opening unseating residual service-lost}
 
-# Isolated period: the deck on the bearings' initial stiffness (bridge.tcl's estimate).
+# Isolated period: one span's deck on its bearings at their effective stiffness Keq at the design
+# strain, 250 % (bridge.tcl's estimate).
 buildModel pound
 set Tiso [dict get $::derived Tiso]
 wipe
@@ -222,7 +223,7 @@ proc prob {f x} {
 
 set md [open [file join $outDir fragility.md] w]
 puts $md "# Fragility of the three-span bridge ($study study)\n"
-puts $md [format "%d runs; this call ran %d of them on %d process(es) in %.1f s (%s). Isolated period T_iso = %.2f s (deck on the bearings' initial stiffness). Motions:" \
+puts $md [format "%d runs; this call ran %d of them on %d process(es) in %.1f s (%s). Isolated period T_iso = %.2f s (deck on the bearings' Keq at 250 %% shear strain). Motions:" \
     [llength $jobs] [dict get $summary ran] [getNP] $wall $summary $Tiso]
 dict for {name m} $motions {
   puts $md [format "- %s: PGV %.3f m/s, Sa(T_iso, 5 %%) %.3f g at scale 1" $name [dict get $m pgv] [dict get $m sa]]
