@@ -267,6 +267,131 @@ TEST(NodeToSurfaceContact3dTest, ReleaseStepForceGivesBackOnlyTheStoredEnergy) {
   EXPECT_EQ(e->resistingForce().norm(), 0.0);
 }
 
+// Held statuses (Element::HeldStatus): the branch of the normal law and of friction is that of
+// the update at which the analysis held it, whatever the trial, until the converged state
+// contradicts it or the step is committed or reverted.
+using Held = elements::Element::HeldStatus;
+
+TEST(NodeToSurfaceContact3dTest, HeldKelvinBranchPullsWhereTheStateWouldOpen) {
+  auto e = make(dampedFriction());  // committed open, 0.1 above the face
+  TrialState s = zeroState(15);
+  setU(s, 0, {0, 0, -0.11});  // g = -0.01
+  s.v(2) = -1.0;              // approaching
+  ASSERT_TRUE(ok(e->update(s.kinematics())));
+  ASSERT_GT(e->trialState().force(0), 0.0);
+  e->holdStatus();
+  EXPECT_EQ(e->checkHeldStatus(), Held::Agrees);
+  // Lifted 0.02 above the face and separating: the state is open, the held Kelvin force pulls.
+  setU(s, 0, {0, 0, -0.08});  // g = +0.02
+  s.v(2) = 0.5;
+  ASSERT_TRUE(ok(e->update(s.kinematics())));
+  const NormalLaw law({kK, 0.6, 3.0, 5.0});
+  const double N = -kK * 0.02 - law.damping() * 0.5;
+  EXPECT_NEAR(e->trialState().force(0), N, kTol * kK);
+  EXPECT_NEAR(nodeForce(*e, 0).z(), -N, kTol * kK);
+  EXPECT_LT(relativeDifference(e->tangentStiff(), numericalStiffness(*e, s, kFdStep)), kFdTol);
+  EXPECT_LT(relativeDifference(e->dampingTangent(), numericalDamping(*e, s, kFdStep)), kFdTol);
+  // The converged state contradicts it: the pair holds open, whose force is zero, and agrees.
+  EXPECT_EQ(e->checkHeldStatus(), Held::Switched);
+  ASSERT_TRUE(ok(e->update(s.kinematics())));
+  EXPECT_EQ(e->resistingForce().norm(), 0.0);
+  EXPECT_EQ(e->checkHeldStatus(), Held::Agrees);
+}
+
+TEST(NodeToSurfaceContact3dTest, HeldOpenBranchCarriesNothingWhilePenetrating) {
+  auto e = make(params(0.5, 0.4));
+  TrialState s = zeroState(15);
+  setU(s, 0, {0, 0, -0.05});  // still open
+  ASSERT_TRUE(ok(e->update(s.kinematics())));
+  e->holdStatus();
+  setU(s, 0, {0, 0, -0.12});  // g = -0.02
+  ASSERT_TRUE(ok(e->update(s.kinematics())));
+  EXPECT_EQ(e->resistingForce().norm(), 0.0);
+  EXPECT_EQ(e->trialState().status, ContactStatus::Open);
+  EXPECT_EQ(e->checkHeldStatus(), Held::Switched);  // the state is closed: hold Kelvin
+  ASSERT_TRUE(ok(e->update(s.kinematics())));
+  EXPECT_NEAR(e->trialState().force(0), kK * 0.02, kTol * kK);
+  EXPECT_EQ(e->checkHeldStatus(), Held::Agrees);
+}
+
+TEST(NodeToSurfaceContact3dTest, OpenAndKelvinCyclingAtFirstTouchHoldsTheSpringAlone) {
+  // At first touch the dashpot force jumps from 0 to C |gdot|: a state just inside the face
+  // is closed with N >= C |gdot|, one just outside is open. When the held branch flips from
+  // Kelvin to open and back the end state lies in the jump, and the spring alone (N = -K g,
+  // between 0 and the Kelvin force while the pair approaches) is held.
+  auto e = make(dampedFriction());
+  TrialState s = zeroState(15);
+  setU(s, 0, {0, 0, -0.1001});  // g = -1e-4
+  s.v(2) = -1.0;
+  ASSERT_TRUE(ok(e->update(s.kinematics())));
+  e->holdStatus();              // Kelvin
+  setU(s, 0, {0, 0, -0.0999});  // g = +1e-4, still approaching
+  ASSERT_TRUE(ok(e->update(s.kinematics())));
+  EXPECT_EQ(e->checkHeldStatus(), Held::Switched);  // open
+  setU(s, 0, {0, 0, -0.1001});
+  ASSERT_TRUE(ok(e->update(s.kinematics())));
+  EXPECT_EQ(e->resistingForce().norm(), 0.0);
+  EXPECT_EQ(e->checkHeldStatus(), Held::Switched);  // the cycle: the spring alone
+  ASSERT_TRUE(ok(e->update(s.kinematics())));
+  EXPECT_NEAR(e->trialState().force(0), kK * 1e-4, kTol * kK);
+  EXPECT_LT(relativeDifference(e->tangentStiff(), numericalStiffness(*e, s, kFdStep)), kFdTol);
+  EXPECT_LT(relativeDifference(e->dampingTangent(), numericalDamping(*e, s, kFdStep)), kFdTol);
+  EXPECT_EQ(e->dampingTangent()(2, 2), 0.0);  // no normal dashpot in the spring branch
+  EXPECT_EQ(e->checkHeldStatus(), Held::Agrees);
+  // Separating, the spring branch no longer agrees (the Kelvin force is below it).
+  s.v(2) = 1.0;
+  ASSERT_TRUE(ok(e->update(s.kinematics())));
+  EXPECT_EQ(e->checkHeldStatus(), Held::Switched);
+}
+
+TEST(NodeToSurfaceContact3dTest, HeldStickAndSlideIgnoreTheConeAndAReversedSlideSticks) {
+  auto e = make(params(0.5, 0.4));
+  TrialState s = penetrated(*e);  // committed stick, N = K 0.05
+  const double N = kK * 0.05;
+  s.u(0) = 1e-5;  // inside the cone
+  ASSERT_TRUE(ok(e->update(s.kinematics())));
+  ASSERT_EQ(e->trialState().status, ContactStatus::Stick);
+  e->holdStatus();
+  s.u(0) = 0.5;  // far outside the cone: the held stick force is the spring's
+  ASSERT_TRUE(ok(e->update(s.kinematics())));
+  EXPECT_EQ(e->trialState().status, ContactStatus::Stick);
+  EXPECT_NEAR(e->trialState().force(1), -kK * 0.5, kTol * kK);
+  EXPECT_EQ(e->checkHeldStatus(), Held::Switched);  // slide
+  ASSERT_TRUE(ok(e->update(s.kinematics())));
+  EXPECT_NEAR(e->trialState().force(1), -0.4 * N, kTol * N);
+  EXPECT_EQ(e->checkHeldStatus(), Held::Agrees);
+  // Held slide inside the cone (the direction kept): mu_k N, tangent exact.
+  s.u(0) = 0.01;
+  ASSERT_TRUE(ok(e->update(s.kinematics())));
+  EXPECT_EQ(e->trialState().status, ContactStatus::Slide);
+  EXPECT_NEAR(e->trialState().force(1), -0.4 * N, kTol * N);
+  EXPECT_LT(relativeDifference(e->tangentStiff(), numericalStiffness(*e, s, kFdStep)), kFdTol);
+  // The held slide reverses: it sticks (one way, within the iterations).
+  s.u(0) = -1e-5;
+  ASSERT_TRUE(ok(e->update(s.kinematics())));
+  EXPECT_EQ(e->trialState().status, ContactStatus::Stick);
+  EXPECT_NEAR(e->trialState().force(1), kK * 1e-5, kTol * kK);
+  EXPECT_EQ(e->checkHeldStatus(), Held::Agrees);
+}
+
+TEST(NodeToSurfaceContact3dTest, CommitAndRevertReleaseTheHold) {
+  for (const bool commit : {true, false}) {
+    auto e = make(params(0.5, 0.4));
+    TrialState s = zeroState(15);
+    setU(s, 0, {0, 0, -0.05});
+    ASSERT_TRUE(ok(e->update(s.kinematics())));
+    e->holdStatus();  // open
+    if (commit)
+      e->commitState();
+    else
+      e->revertToLastCommit();
+    setU(s, 0, {0, 0, -0.12});
+    ASSERT_TRUE(ok(e->update(s.kinematics())));
+    EXPECT_NEAR(e->trialState().force(0), kK * 0.02, kTol * kK) << commit;
+    EXPECT_EQ(e->checkHeldStatus(), Held::Agrees);
+  }
+}
+
 TEST(NodeToSurfaceContact3dTest, ContactAtCornerAndEdgeLoadsOnlyThoseNodes) {
   const double N = kK * 0.05;
   {
