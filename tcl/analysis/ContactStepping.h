@@ -16,7 +16,12 @@ struct ContactSteppingParams {
       2.0;  ///< a pair "about to close" closes within lookAhead x the rest of the step (>= 0)
   double overshoot =
       1.2;  ///< a step cut at a predicted first contact ends at overshoot x that time (>= 1)
-  /// Throws InputError{field, reason} (fields maxStep, lookAhead, overshoot).
+  /// Steps per contact duration while a pair is closed or about to close (0: no such limit): the
+  /// step is at most T_c / perContact, T_c = pi sqrt(m / K) the half period of the pair's
+  /// undamped contact, m = M1 M2 / (M1 + M2) from its -masses (pairs without masses: the
+  /// translational masses of its contactor node and of its four face nodes).
+  int perContact = 0;
+  /// Throws InputError{field, reason} (fields maxStep, lookAhead, overshoot, perContact).
   void validate() const;
 };
 
@@ -29,6 +34,10 @@ struct ContactSteppingParams {
 ///   order of the step whatever the step).
 /// The prediction is linear in time: t_close = g h_last / (g_last - g) for a gap g that shrank
 /// from g_last over the last step h_last. Every pair's cut counts (the shortest wins).
+/// - with perContact n, a pair closed or about to close makes the step at most T_c / n, so that
+///   the impact is resolved whatever its stiffness (a step longer than the impact integrates it
+///   in one or two steps of the trapezoid rule, whose release force then acts through the next
+///   step's average and can throw the bodies apart faster than they met).
 ///
 /// The pairs are read from their committed states (between steps), one pass over the pairs per
 /// step; the class owns the gaps of the last step.
@@ -54,6 +63,7 @@ class ContactStepping {
   ContactSteppingParams params_;
   std::vector<const contact::NodeToSurfaceState*> states_;  ///< committed states of the pairs
   std::vector<double> lastGap_;
+  std::vector<double> contactStep_;  ///< per pair: T_c / perContact (infinity: no limit)
   double lastStep_ = 0.0;
   long contactSteps_ = 0;
 };

@@ -244,7 +244,7 @@ void pounding(Runtime& rt, ArgReader& args) {
   Tcl_SetObjResult(rt.interp, result);
 }
 
-// --- contactStepping ?-maxStep h? ?-lookAhead n? ?-overshoot f? ?-eachStep script? | -off -----
+// --- contactStepping ?-maxStep h? ?-lookAhead n? ?-overshoot f? ?-perContact n? ?-eachStep script?
 
 /// Turns event-located contact stepping of transient analyses on (with the options given; the
 /// defaults are those of ContactSteppingParams) or off (-off). Without arguments it returns
@@ -264,9 +264,10 @@ void contactSteppingCmd(Runtime& rt, ArgReader& args) {
     std::string text = "on " + std::string(cs ? "1" : "0");
     if (cs) {
       char buf[160];
-      std::snprintf(buf, sizeof buf, " maxStep %.17g lookAhead %.17g overshoot %.17g pairs %zu",
+      std::snprintf(buf, sizeof buf,
+                    " maxStep %.17g lookAhead %.17g overshoot %.17g perContact %d pairs %zu",
                     cs->params().maxStep, cs->params().lookAhead, cs->params().overshoot,
-                    cs->pairs());
+                    cs->params().perContact, cs->pairs());
       text += buf;
     }
     text += " contactSteps " + std::to_string(analysis.statistics().contactSteps) +
@@ -286,6 +287,7 @@ void contactSteppingCmd(Runtime& rt, ArgReader& args) {
   p.maxStep = args.option("-maxStep", p.maxStep);
   p.lookAhead = args.option("-lookAhead", p.lookAhead);
   p.overshoot = args.option("-overshoot", p.overshoot);
+  p.perContact = args.option("-perContact", p.perContact);
   const auto each = args.optionalWordOption("-eachStep");
   args.finish();
   p.validate();  // an InputError names maxStep, lookAhead or overshoot: located by the table
@@ -323,7 +325,8 @@ std::span<const CommandEntry> contactCommands() {
   static const CommandEntry kRows[] = {
       {"pounding", kPoundingUsage, pounding},
       {"contactStepping",
-       "contactStepping ?-maxStep h? ?-lookAhead n? ?-overshoot f? ?-eachStep script? | -off",
+       "contactStepping ?-maxStep h? ?-lookAhead n? ?-overshoot f? ?-perContact n? ?-eachStep "
+       "script? | -off",
        contactSteppingCmd},
   };
   return kRows;

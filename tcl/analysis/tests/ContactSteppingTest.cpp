@@ -7,7 +7,9 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <memory>
+#include <numbers>
 
 #include "contact/NodeToSurfaceContact3d.h"
 #include "materials/InputError.h"
@@ -22,14 +24,20 @@ constexpr double kZ0 = 0.1;  // height of the contactor above the target face at
 /// committed gap is set by moving the contactor down and committing.
 class OnePair {
  public:
-  OnePair() {
+  /// `masses`: the pair's -masses M1 M2 (none when empty); `nodeMass`: each node's mass.
+  explicit OnePair(std::array<double, 2> masses = {0.0, 0.0}, double nodeMass = 0.0) {
     domain_.addNode(1, 3, 3, Eigen::Vector3d(0, 0, 0));
     domain_.addNode(2, 3, 3, Eigen::Vector3d(2, 0, 0));
     domain_.addNode(3, 3, 3, Eigen::Vector3d(2, 2, 0));
     domain_.addNode(4, 3, 3, Eigen::Vector3d(0, 2, 0));
     domain_.addNode(10, 3, 3, Eigen::Vector3d(0.5, 0.8, kZ0));
+    if (nodeMass > 0.0)
+      for (int tag : {1, 2, 3, 4, 10})
+        domain_.node(tag).setMass(Eigen::MatrixXd::Identity(3, 3) * nodeMass);
     contact::NodeToSurfaceParams p;
     p.K = 1e5;
+    p.M1 = masses[0];
+    p.M2 = masses[1];
     p.validate();
     auto pair = std::make_unique<contact::NodeToSurfaceContact3d<3>>(
         1, 10, std::array<int, 4>{1, 2, 3, 4}, p);
@@ -105,6 +113,40 @@ TEST(ContactSteppingTest, ClosedPairTakesTheContactStepAndResetForgetsTheHistory
   EXPECT_DOUBLE_EQ(stepping.nextStep(0.01, 0.01), 0.01);
 }
 
+TEST(ContactSteppingTest, PerContactLimitsTheStepToAFractionOfTheContactDuration) {
+  // -masses 2 3, K 1e5: m = 1.2, T_c = pi sqrt(1.2 / 1e5); 20 steps per contact.
+  {
+    OnePair model({2.0, 3.0});
+    ContactSteppingParams p = params(0.01);  // long: the contact decides
+    p.perContact = 20;
+    ContactStepping stepping(p);
+    stepping.attach(model.domain());
+    EXPECT_DOUBLE_EQ(stepping.nextStep(0.01, 0.01), 0.01);  // open: no limit
+    model.commitGap(-0.001);
+    EXPECT_NEAR(stepping.nextStep(0.01, 0.01), std::numbers::pi * std::sqrt(1.2 / 1e5) / 20, 1e-18);
+  }
+  // No -masses: the nodes' masses, 0.5 each: contactor 0.5, face 2.0, m = 0.4.
+  {
+    OnePair model({0.0, 0.0}, 0.5);
+    ContactSteppingParams p = params(0.01);  // long: the contact decides
+    p.perContact = 10;
+    ContactStepping stepping(p);
+    stepping.attach(model.domain());
+    model.commitGap(-0.001);
+    EXPECT_NEAR(stepping.nextStep(0.01, 0.01), std::numbers::pi * std::sqrt(0.4 / 1e5) / 10, 1e-18);
+  }
+  // A longer contact than maxStep allows: maxStep decides.
+  {
+    OnePair model({2000.0, 3000.0});
+    ContactSteppingParams p = params(0.0005);
+    p.perContact = 20;
+    ContactStepping stepping(p);
+    stepping.attach(model.domain());
+    model.commitGap(-0.001);
+    EXPECT_DOUBLE_EQ(stepping.nextStep(0.01, 0.01), 0.0005);
+  }
+}
+
 TEST(ContactSteppingTest, ParametersAreChecked) {
   ContactSteppingParams p;
   p.maxStep = 0.0;
@@ -114,6 +156,9 @@ TEST(ContactSteppingTest, ParametersAreChecked) {
   EXPECT_THROW(p.validate(), InputError);
   p = ContactSteppingParams();
   p.overshoot = 0.9;
+  EXPECT_THROW(p.validate(), InputError);
+  p = ContactSteppingParams();
+  p.perContact = -1;
   EXPECT_THROW(p.validate(), InputError);
   EXPECT_NO_THROW(ContactSteppingParams().validate());
 }
