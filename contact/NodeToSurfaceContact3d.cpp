@@ -91,7 +91,7 @@ void NodeToSurfaceContact3d<Ndf>::clearForces() {
 template <int Ndf>
 void NodeToSurfaceContact3d<Ndf>::commitState() {
   holding_ = false;
-  switches_ = 0;
+  switches_ = triedNormal_ = triedSliding_ = 0;
   if (settledFar_) {  // the states differ in the gap alone
     committed_.gap = trial_.gap;
     return;
@@ -103,7 +103,7 @@ void NodeToSurfaceContact3d<Ndf>::commitState() {
 template <int Ndf>
 void NodeToSurfaceContact3d<Ndf>::revertToLastCommit() {
   holding_ = false;
-  switches_ = 0;
+  switches_ = triedNormal_ = triedSliding_ = 0;
   if (settledFar_) {
     trial_.gap = committed_.gap;
     return;
@@ -117,7 +117,7 @@ void NodeToSurfaceContact3d<Ndf>::revertToStart() {
   trial_ = committed_ = initial_;
   settledFar_ = false;
   holding_ = false;
-  switches_ = 0;
+  switches_ = triedNormal_ = triedSliding_ = 0;
   forcesZero_ = false;
   clearForces();
 }
@@ -128,6 +128,7 @@ void NodeToSurfaceContact3d<Ndf>::holdStatus() {
   holding_ = true;
   held_ = natural_;
   slideDirection_ = trialFriction_;
+  noteTried(held_);
 }
 
 template <int Ndf>
@@ -136,21 +137,28 @@ elements::Element::HeldStatus NodeToSurfaceContact3d<Ndf>::checkHeldStatus() {
   const bool contact = held_.normal == NormalBranch::Kelvin || held_.normal == NormalBranch::Spring;
   const bool normalAgrees =
       held_.normal == NormalBranch::Spring ? springAgrees_ : held_.normal == natural_.normal;
-  const bool cycling = switches_ >= 1;  // a second switch would return to a branch held before
+  // A switch back to a branch held before in this step would cycle.
+  const bool normalCycles = (triedNormal_ & bit(natural_.normal)) != 0;
+  const bool frictionCycles = triedSliding_ == 3;
   const bool frictionAgrees = !contact || !friction_.active() ||
                               held_.sliding == natural_.sliding ||
-                              (cycling && held_.sliding && slideAgrees_);
+                              (frictionCycles && held_.sliding && slideAgrees_);
   if (normalAgrees && frictionAgrees) return HeldStatus::Agrees;
   if (++switches_ > kMaxSwitches) return HeldStatus::Conflict;
   Branches next = natural_;
   if (normalAgrees) {
     next.normal = held_.normal;
-  } else if (cycling && !closedAtCommit() && normal_.damping() > 0.0) {
-    const bool openKelvin =
-        (held_.normal == NormalBranch::Open && natural_.normal == NormalBranch::Kelvin) ||
-        (held_.normal == NormalBranch::Kelvin && natural_.normal == NormalBranch::Open);
-    if (openKelvin) next.normal = NormalBranch::Spring;
+  } else if (normalCycles && normal_.damping() > 0.0) {
+    // Kelvin inside the face against no force (open) or the release force (which is zero at the
+    // face) outside it: the jump of the dashpot force at g = 0.
+    const auto free = [](NormalBranch b) {
+      return b == NormalBranch::Open || b == NormalBranch::Release;
+    };
+    const bool acrossTheJump = (free(held_.normal) && natural_.normal == NormalBranch::Kelvin) ||
+                               (held_.normal == NormalBranch::Kelvin && free(natural_.normal));
+    if (acrossTheJump && approaching_) next.normal = NormalBranch::Spring;
   }
+  noteTried(next);
   if (next.sliding) slideDirection_ = trialFriction_;
   held_ = next;
   return HeldStatus::Switched;
@@ -165,7 +173,7 @@ template <int Ndf>
 Status NodeToSurfaceContact3d<Ndf>::update(const elements::Kinematics& kin) {
   settledFar_ = false;
   natural_ = Branches{};
-  springAgrees_ = slideAgrees_ = false;
+  springAgrees_ = slideAgrees_ = approaching_ = false;
   NodeToSurfaceState t = committed_;
   t.force.setZero();
   t.dashpotPower = 0.0;
@@ -301,12 +309,9 @@ Status NodeToSurfaceContact3d<Ndf>::update(const elements::Kinematics& kin) {
   const AD gdot = m[0] * vrel[0] + m[1] * vrel[1] + m[2] * vrel[2];  // = dg/dt exactly
   AD Nn = normal_.force(g, gdot);
   if (!releasing && g.value() < 0.0 && Nn.value() > 0.0) natural_.normal = NormalBranch::Kelvin;
-  springAgrees_ = g.value() <= 0.0 && gdot.value() <= 0.0;
+  approaching_ = gdot.value() <= 0.0;
+  springAgrees_ = g.value() <= 0.0 && approaching_;
   NormalBranch branch = holding_ ? heldNormal : natural_.normal;
-  // A held release branch is the release force only where it is defined (between the committed
-  // penetration and beyond); below it the pair is closed again.
-  if (branch == NormalBranch::Release && !(g.value() > committed_.gap))
-    branch = NormalBranch::Kelvin;
   switch (branch) {
     case NormalBranch::Open: Nn = AD(0.0); break;
     case NormalBranch::Kelvin:
@@ -315,7 +320,13 @@ Status NodeToSurfaceContact3d<Ndf>::update(const elements::Kinematics& kin) {
     case NormalBranch::Spring: Nn = -normal_.stiffness() * g; break;
     case NormalBranch::Release: {
       const double Nr = std::min(committed_.force(0), -normal_.stiffness() * committed_.gap);
-      Nn = -Nr * g / (g - committed_.gap);
+      // A held release branch inside the face goes on along its tangent at g = 0, N = N_r g /
+      // g_n (the release force has a pole at g = g_n): smooth and monotone, so Newton on the
+      // held equations cannot cycle between the release force and a closed state.
+      if (holding_ && g.value() < 0.0)
+        Nn = Nr * g / committed_.gap;
+      else
+        Nn = -Nr * g / (g - committed_.gap);
       break;
     }
   }
@@ -361,6 +372,7 @@ Status NodeToSurfaceContact3d<Ndf>::update(const elements::Kinematics& kin) {
       // so the hold cannot cycle within the iterations.
       held_.sliding = false;
       ++switches_;
+      triedSliding_ = static_cast<std::uint8_t>(triedSliding_ | 1u);
       held = Branch::Stick;
       r = friction_.returnMap(d, Nn, vt, wasSliding, held);
     }

@@ -136,15 +136,16 @@ class NodeToSurfaceContact3d : public elements::FixedSizeElement<5, Ndf, 0u> {
   /// cone, the sliding force inside it; the equations of the step are then smooth.
   void holdStatus() override;
   /// Compares the held branches with those the last update's state gives and holds those when
-  /// they differ. After two switches in a step (the branches cycle) two set-valued selections
-  /// apply, the limits of the law where it jumps (Filippov 1988): (1) in a step that starts
-  /// open, a pair that cycles between open and Kelvin holds the spring force alone; the dashpot
-  /// force jumps from 0 to C |gdot| at first touch, and an end state of the step exists only
-  /// within that jump, with N between 0 and the Kelvin force (the spring alone agrees while the
-  /// pair penetrates and approaches, gdot <= 0, where the spring force is at most the Kelvin
-  /// force); (2) a pair that cycles between stick and slide may slide while its trial force is
-  /// at least the kinetic limit mu_k N (the cone jumps from mu_s N to mu_k N at the onset of
-  /// sliding). Conflict after kMaxSwitches switches in a step.
+  /// they differ. Once a pair has switched (a second switch would cycle) two set-valued
+  /// selections apply, the limits of the law where it jumps (Filippov 1988): (1) a pair that
+  /// switches between Kelvin inside the face and open or the release force outside it holds
+  /// the spring force alone; the dashpot force jumps from 0 to C |gdot| at the face while the
+  /// pair approaches, and an end state of the step exists only within that jump, with N
+  /// between 0 and the Kelvin force (the spring alone agrees while the pair penetrates and
+  /// approaches, g <= 0 and gdot <= 0, where it is at most the Kelvin force); (2) a pair that
+  /// switches between stick and slide may slide while its trial force is at least the kinetic
+  /// limit mu_k N (the cone drops from mu_s N to mu_k N at the onset of sliding). Conflict after
+  /// kMaxSwitches switches in a step.
   elements::Element::HeldStatus checkHeldStatus() override;
   /// Open contacts carry nothing, so the assembly skips them.
   bool isActive() const override { return !forcesZero_; }
@@ -233,8 +234,10 @@ class NodeToSurfaceContact3d : public elements::FixedSizeElement<5, Ndf, 0u> {
   // the object (the base holds 160 bytes: the vtable pointer, tag, node list and force vector),
   // so that a sleeping pair costs a few cache lines of one page per step.
   bool forcesZero_ = true;
-  bool holding_ = false;       ///< update() evaluates held_ (see holdStatus)
-  std::uint8_t switches_ = 0;  ///< switches of the held branches in this step
+  bool holding_ = false;           ///< update() evaluates held_ (see holdStatus)
+  std::uint8_t switches_ = 0;      ///< switches of the held branches in this step
+  std::uint8_t triedNormal_ = 0;   ///< normal branches held in this step (bit per branch)
+  std::uint8_t triedSliding_ = 0;  ///< friction branches held in this step (1 stick, 2 slide)
   /// trial_ equals committed_ but for the gap, both quietFar, and the matrices are zero: set by a
   /// full commit or revert of such a state, cleared by every other write of trial_.
   bool settledFar_ = false;
@@ -269,9 +272,19 @@ class NodeToSurfaceContact3d : public elements::FixedSizeElement<5, Ndf, 0u> {
     bool operator==(const Branches&) const = default;
   };
   static constexpr int kMaxSwitches = 8;
+  static std::uint8_t bit(NormalBranch b) noexcept {
+    return static_cast<std::uint8_t>(1u << static_cast<unsigned>(b));
+  }
+  /// Notes the branches `b` as held in this step (a switch back to one of them would cycle).
+  void noteTried(const Branches& b) noexcept {
+    triedNormal_ = static_cast<std::uint8_t>(triedNormal_ | bit(b.normal));
+    if (b.normal == NormalBranch::Kelvin || b.normal == NormalBranch::Spring)
+      triedSliding_ = static_cast<std::uint8_t>(triedSliding_ | (b.sliding ? 2u : 1u));
+  }
   Branches held_{};            ///< the held branches (while holding_)
   Branches natural_{};         ///< the branches the last update's state gives
   bool springAgrees_ = false;  ///< last update: g <= 0 and gdot <= 0 (the spring branch agrees)
+  bool approaching_ = false;   ///< last update: gdot <= 0 (on the face)
   bool slideAgrees_ = false;   ///< last update: trial friction force >= mu_k N (sliding agrees)
   Eigen::Vector2d trialFriction_ = Eigen::Vector2d::Zero();   ///< last update's trial force
   Eigen::Vector2d slideDirection_ = Eigen::Vector2d::Zero();  ///< trial force when slide was held
