@@ -127,6 +127,8 @@ void NodeToSurfaceContact3d<Ndf>::holdStatus() {
   if (holding_) return;
   holding_ = true;
   held_ = natural_;
+  // An open pair has no friction branch yet: its first update in contact takes the cone's.
+  frictionHeld_ = inContact(held_.normal);
   slideDirection_ = trialFriction_;
   noteTried(held_);
 }
@@ -158,6 +160,8 @@ elements::Element::HeldStatus NodeToSurfaceContact3d<Ndf>::checkHeldStatus() {
                                (held_.normal == NormalBranch::Kelvin && free(natural_.normal));
     if (acrossTheJump && approaching_) next.normal = NormalBranch::Spring;
   }
+  // Into contact from open or release: the friction branch is the cone's at the next update.
+  frictionHeld_ = inContact(next.normal) && inContact(held_.normal);
   noteTried(next);
   if (next.sliding) slideDirection_ = trialFriction_;
   held_ = next;
@@ -362,10 +366,18 @@ Status NodeToSurfaceContact3d<Ndf>::update(const elements::Kinematics& kin) {
     vt[1] = dot(frame_.t2, vrel);
     using Branch = CoulombFriction::Branch;
     const bool wasSliding = committed_.status == ContactStatus::Slide;
-    Branch held = !holding_ || held_.normal != branch ? Branch::Natural
-                  : held_.sliding                     ? Branch::Slide
-                                                      : Branch::Stick;
+    Branch held = !holding_ || held_.normal != branch || !frictionHeld_ ? Branch::Natural
+                  : held_.sliding                                       ? Branch::Slide
+                                                                        : Branch::Stick;
     auto r = friction_.returnMap(d, Nn, vt, wasSliding, held);
+    if (holding_ && held_.normal == branch && !frictionHeld_) {
+      // The first update of a held contact branch whose friction branch is not known (it was
+      // open when held or switched): hold the cone's branch from here on.
+      frictionHeld_ = true;
+      held_.sliding = r.coneExceeded;
+      slideDirection_ = r.trial;
+      triedSliding_ = static_cast<std::uint8_t>(triedSliding_ | (r.coneExceeded ? 2u : 1u));
+    }
     if (held == Branch::Slide && r.trial.dot(slideDirection_) < 0.0) {
       // The held slide reversed: the sliding force jumps from one side of the cone to the other
       // there, and an end state lies in the jump (the relative motion stops: stick). One way,

@@ -238,6 +238,7 @@ class NodeToSurfaceContact3d : public elements::FixedSizeElement<5, Ndf, 0u> {
   std::uint8_t switches_ = 0;      ///< switches of the held branches in this step
   std::uint8_t triedNormal_ = 0;   ///< normal branches held in this step (bit per branch)
   std::uint8_t triedSliding_ = 0;  ///< friction branches held in this step (1 stick, 2 slide)
+  bool frictionHeld_ = false;      ///< held_.sliding is held (else the next contact update's)
   /// trial_ equals committed_ but for the gap, both quietFar, and the matrices are zero: set by a
   /// full commit or revert of such a state, cleared by every other write of trial_.
   bool settledFar_ = false;
@@ -275,10 +276,13 @@ class NodeToSurfaceContact3d : public elements::FixedSizeElement<5, Ndf, 0u> {
   static std::uint8_t bit(NormalBranch b) noexcept {
     return static_cast<std::uint8_t>(1u << static_cast<unsigned>(b));
   }
+  static bool inContact(NormalBranch b) noexcept {
+    return b == NormalBranch::Kelvin || b == NormalBranch::Spring;
+  }
   /// Notes the branches `b` as held in this step (a switch back to one of them would cycle).
   void noteTried(const Branches& b) noexcept {
     triedNormal_ = static_cast<std::uint8_t>(triedNormal_ | bit(b.normal));
-    if (b.normal == NormalBranch::Kelvin || b.normal == NormalBranch::Spring)
+    if (inContact(b.normal) && frictionHeld_)
       triedSliding_ = static_cast<std::uint8_t>(triedSliding_ | (b.sliding ? 2u : 1u));
   }
   Branches held_{};            ///< the held branches (while holding_)
