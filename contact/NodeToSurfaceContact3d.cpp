@@ -357,10 +357,16 @@ Status NodeToSurfaceContact3d<Ndf>::update(const elements::Kinematics& kin) {
     const Eigen::Vector2d xiS =
         wasInContact ? committed_.stickXi : (committed_.projValid ? committed_.projXi : *xi);
     const auto Ns = shapeFunctions(xiS.x(), xiS.y());
+    // A pair that comes onto the face from beyond its edge has no committed projection: its
+    // stick point is the trial's own projection, so d is zero whatever the trial (zero
+    // derivatives too; with the point's coordinates frozen the tangent would say Kt while the
+    // force stays zero, and Newton converged linearly on a contactor sliding onto the next face).
+    const bool stickAtTrial = !wasInContact && !committed_.projValid;
     std::array<AD, 2> d, vt;
     for (int a = 0; a < 2; ++a) {
-      d[a] = sa[0][a];
-      for (int i = 0; i < 4; ++i) d[a] -= Ns[i] * sa[i + 1][a];
+      d[a] = stickAtTrial ? AD(0.0) : sa[0][a];
+      if (!stickAtTrial)
+        for (int i = 0; i < 4; ++i) d[a] -= Ns[i] * sa[i + 1][a];
     }
     vt[0] = dot(frame_.t1, vrel);
     vt[1] = dot(frame_.t2, vrel);
