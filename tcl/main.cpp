@@ -8,9 +8,11 @@
 #include <unistd.h>
 
 #include <cstdio>
+#include <cstring>
 
 #include "tcl/commands/CommandTable.h"
 #include "tcl/commands/SignalExit.h"
+#include "tcl/viewer/ViewerPageTemplate.h"
 #ifdef DABS_MPI
 #include "tcl/parallel/mpi/MpiSession.h"
 #endif
@@ -98,9 +100,94 @@ int runPipedInput(const char* argv0) {
   return 0;
 }
 
+#ifdef DABS_MPI
+constexpr const char* kProgram = "dabs-mp";
+#else
+constexpr const char* kProgram = "dabs";
+#endif
+
+int printHelp() {
+  // Each way of running the program, then what it does (continuation lines indented under it).
+  struct Usage {
+    const char* form;  ///< printed after the program's name (%s: the name, for a pipe)
+    const char* what;
+  };
+  const Usage usages[] = {
+      {" script.tcl ?args...?",
+       "run a Tcl script (argv and argc as tclsh sets them);\nthe exit status is the script's"},
+      {"",
+       "in a terminal: an interactive Tcl shell with the dabs commands\n(prompt dabs>, line "
+       "editing with Debian's tcl-tclreadline;\nexit or Ctrl-D quits)"},
+      {" < commands.tcl",
+       "commands from a pipe or a file: each failed command is\nreported on stderr and the exit "
+       "status is 1"},
+      {" --help | -h", "this text"},
+      {" --version", "version, commit, compiler and optional parts of this build"},
+  };
+  std::printf("Usage:\n");
+  for (const Usage& u : usages) {
+    char form[64];
+    std::snprintf(form, sizeof form, "%s%s", kProgram, u.form);
+    std::printf("  %-30s ", form);
+    for (const char* c = u.what; *c != '\0'; ++c) {
+      std::putchar(*c);
+      if (*c == '\n') std::printf("  %-30s ", "");
+    }
+    std::putchar('\n');
+  }
+  std::printf(
+      "\nScripts use the OpenSees command vocabulary (model, node, element, analyze, ...).\n"
+#ifdef DABS_MPI
+      "Under MPI: mpirun -n N dabs-mp script.tcl (getPID, getNP, send, recv, Bcast, barrier\n"
+      "and ensemble act for the processes mpirun started).\n"
+#endif
+      "\nEnvironment:\n"
+      "  DABS_THREADS=n                 threads that update elements (as the `threads n`\n"
+      "                                 command; default 1)\n"
+      "\nDocumentation: README.md at the top of the source tree (%s):\n"
+      "the command table, the case study, contact stepping, where dabs differs from OpenSees.\n",
+      DABS_SOURCE_DIR);
+  return 0;
+}
+
+int printVersion() {
+  std::printf(
+      "%s %s\n"
+      "commit:    %s\n"
+      "compiler:  %s\n"
+      "Tcl:       %s\n"
+      "MPI:       %s\n"
+      "NLopt:     %s\n"
+      "viewer:    %s\n"
+      "Python:    not in this version\n",
+      kProgram, DABS_VERSION, DABS_COMMIT, DABS_COMPILER, TCL_PATCH_LEVEL,
+#ifdef DABS_MPI
+      "yes (this program runs under mpirun)",
+#else
+      DABS_HAS_MPI ? "dabs-mp built beside this program" : "no (Open MPI not found at build time)",
+#endif
+      DABS_HAS_NLOPT ? "yes (bearing calibration, yoshida_calibration)"
+                     : "no (no bearing calibration program)",
+      dabs::viewer::viewerBundleBuilt() ? "page bundled (recorder Viewer writes the 3D viewer)"
+                                        : "not bundled (node/npm missing at build time)");
+  return 0;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
+  // The options a user tries first. Anything else starting with "--" is an error (exit status 2)
+  // rather than a script name or an interactive shell that opens without a word.
+  if (argc >= 2) {
+    const char* first = argv[1];
+    if (std::strcmp(first, "--help") == 0 || std::strcmp(first, "-h") == 0) return printHelp();
+    if (std::strcmp(first, "--version") == 0) return printVersion();
+    if (std::strncmp(first, "--", 2) == 0) {
+      std::fprintf(stderr, "%s: unknown option %s (%s --help lists the options)\n", kProgram, first,
+                   kProgram);
+      return 2;
+    }
+  }
 #ifdef DABS_MPI
   dabs::parallel::startMpi(&argc, &argv);
 #endif
