@@ -4,11 +4,14 @@
 #include <algorithm>
 #include <cctype>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <optional>
 #include <set>
 #include <string>
 #include <vector>
+
+#include <unistd.h>
 
 #include "tcl/parallel/JobFarm.h"
 #include "tcl/parallel/ParallelState.h"
@@ -183,6 +186,51 @@ std::string runJob(Runtime& rt, ParallelState& state, Tcl_Obj* command, const Jo
 
 }  // namespace
 
+// h:mm:ss, or m:ss under an hour.
+std::string clockText(double seconds) {
+  const long s = std::lround(std::max(seconds, 0.0));
+  char buf[32];
+  if (s >= 3600)
+    std::snprintf(buf, sizeof buf, "%ld:%02ld:%02ld", s / 3600, s / 60 % 60, s % 60);
+  else
+    std::snprintf(buf, sizeof buf, "%ld:%02ld", s / 60, s % 60);
+  return buf;
+}
+
+/// The progress lines of an ensemble (process 0, standard error): after each finished job, the
+/// count done of those to run, the failures and errors so far, the time elapsed and an estimate
+/// of the time left (elapsed per job done times the jobs left), and the job's id, status and
+/// time. Called one job at a time (JobFarm::StoreFn), from either of process 0's threads, so it
+/// writes with stdio alone (not through the interpreter).
+class Progress {
+ public:
+  Progress(int total, bool on) : total_(total), on_(on) {}
+  void finished(const std::string& id, const Record& record) {
+    ++done_;
+    const std::optional<std::string> status = valueOf(record, "status");
+    failed_ += status == "failed";
+    errors_ += status == "error";
+    if (!on_) return;
+    const double elapsed =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
+    const double left = elapsed / done_ * (total_ - done_);
+    const std::string seconds = valueOf(record, "seconds").value_or("?");
+    std::fprintf(stderr,
+                 "ensemble: %d/%d done, %d failed, %d errors, %s elapsed, about %s left "
+                 "(%s %s in %s s)\n",
+                 done_, total_, failed_, errors_, clockText(elapsed).c_str(),
+                 clockText(left).c_str(), id.c_str(), status.value_or("?").c_str(),
+                 seconds.c_str());
+    std::fflush(stderr);
+  }
+
+ private:
+  int total_;
+  bool on_;
+  int done_ = 0, failed_ = 0, errors_ = 0;
+  std::chrono::steady_clock::time_point start_ = std::chrono::steady_clock::now();
+};
+
 void ensembleCmd(Runtime& rt, ArgReader& a) {
   const std::string sub = a.word("subcommand");
   if (sub != "run") a.fail(a.lastPosition(), "subcommand", "expected run, got \"" + sub + "\"");
@@ -190,6 +238,7 @@ void ensembleCmd(Runtime& rt, ArgReader& a) {
   Tcl_Obj* jobsGiven = a.object("jobList");
   Tcl_Obj* command = a.object("command");
   const std::string outDir = a.option("-out", std::string("ensemble-out"));
+  const bool progressAsked = a.flag("-progress");
   a.finish();
   ParallelState& state = ParallelState::of(rt.interp);
   if (state.inJob) a.fail("an ensemble job cannot run an ensemble");
@@ -233,6 +282,10 @@ void ensembleCmd(Runtime& rt, ArgReader& a) {
 
   // A result that cannot be written (a full disk) is reported at the end; the other jobs go on.
   std::string storeError;
+  // Progress on process 0's standard error, a line per finished job, when it is a terminal or
+  // when asked (-progress): never in the results.
+  Progress progress(static_cast<int>(pending.size()),
+                    rank == 0 && (progressAsked || isatty(STDERR_FILENO) != 0));
   JobFarm farm(comm);
   farm.run(
       pending,
@@ -247,6 +300,7 @@ void ensembleCmd(Runtime& rt, ArgReader& a) {
         } catch (const std::exception& e) {
           if (storeError.empty()) storeError = e.what();
         }
+        progress.finished(jobs[i].id, *records[i]);
       });
 
   // Process 0 merges and tells every process the outcome: "ok <summary>" or "error <message>".

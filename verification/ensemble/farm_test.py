@@ -37,16 +37,16 @@ KILL_LENGTH = 400
 PLACE_COLUMNS = ("rank", "seconds")
 
 
-def command(program, out, log="", length=1):
+def command(program, out, log="", length=1, progress=0):
+    args = [JOBS, out, str(COUNT), log, str(length), "1", str(progress)]
     if program["mpirun"]:
-        return [program["mpirun"], "-n", "2", *program["options"], program["dabs"], JOBS, out,
-                str(COUNT), log, str(length)]
-    return [program["dabs"], JOBS, out, str(COUNT), log, str(length)]
+        return [program["mpirun"], "-n", "2", *program["options"], program["dabs"], *args]
+    return [program["dabs"], *args]
 
 
-def run(program, out, log="", length=1):
-    result = subprocess.run(command(program, out, log, length), capture_output=True, text=True,
-                            timeout=600)
+def run(program, out, log="", length=1, progress=0):
+    result = subprocess.run(command(program, out, log, length, progress), capture_output=True,
+                            text=True, timeout=600)
     if result.returncode != 0:
         print(result.stdout, result.stderr)
     return result
@@ -159,6 +159,8 @@ def main():
         log = os.path.join(tmp, "serial.log")
         result = run(serial, out, log)
         check(result.returncode == 0, f"serial: ensemble completes (status {result.returncode})")
+        check("ensemble:" not in result.stderr,
+              "serial: no progress lines when stderr is not a terminal and -progress is not given")
         reference = read_csv(os.path.join(out, "results.csv"))
         check_results("serial", reference)
         check(sorted(log_ids(log)) == [f"osc{i:02d}" for i in range(1, COUNT + 1)],
@@ -173,6 +175,21 @@ def main():
         long_out = os.path.join(tmp, "serial-long")
         run(serial, long_out, "", KILL_LENGTH)
         long_reference = read_csv(os.path.join(long_out, "results.csv"))
+
+        # -progress: a line per finished job on stderr, the count, failures and errors so far.
+        progress_out = os.path.join(tmp, "serial-progress")
+        result = run(serial, progress_out, "", 1, 1)
+        lines = [l for l in result.stderr.splitlines() if l.startswith("ensemble: ")]
+        check(len(lines) == COUNT, f"-progress: one line per job ({len(lines)} of {COUNT})")
+        check(bool(lines) and lines[-1].startswith(
+            f"ensemble: {COUNT}/{COUNT} done, 1 failed, 1 errors, "),
+              f"-progress: the last line counts every job, the failure and the error "
+              f"({lines[-1] if lines else ''!r})")
+        check(all(" elapsed, about " in l and " left (osc" in l for l in lines),
+              "-progress: each line has the time elapsed, the time left and the job")
+        check([analysis_columns(r) for r in read_csv(os.path.join(progress_out, "results.csv"))]
+              == [analysis_columns(r) for r in reference],
+              "-progress: the results are those of the run without it")
 
         if parallel is None:
             kill_and_rerun("serial", serial, long_reference, tmp)

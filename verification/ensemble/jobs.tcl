@@ -19,6 +19,7 @@ set count [expr {$argc > 1 ? [lindex $argv 1] : 16}]
 set logFile [expr {$argc > 2 ? [lindex $argv 2] : ""}]
 set lengthFactor [expr {$argc > 3 ? [lindex $argv 3] : 1.0}]
 set faults [expr {$argc > 4 ? [lindex $argv 4] : 1}]
+set progress [expr {$argc > 5 ? [lindex $argv 5] : 0}]
 
 # One job: the oscillator with yield force fy under amplitude ag (m/s^2) for `steps` steps of
 # 0.005 s. kind: ok | diverge (a convergence test no step can pass: the analysis fails and its code
@@ -68,7 +69,7 @@ for {set i 1} {$i <= $count} {incr i} {
   lappend jobs [list id [format "osc%02d" $i] kind $kind fy [expr {10.0 + $i}] ag [expr {3.0 + 0.5 * $i}] steps $steps]
 }
 set t0 [clock milliseconds]
-set summary [ensemble run $jobs oscillator -out $outDir]
+set summary [ensemble run $jobs oscillator -out $outDir {*}[expr {$progress ? "-progress" : ""}]]
 if {[getPID] == 0} {
   puts "summary $summary"
   puts [format "wall %.3f s on %d process(es)" [expr {([clock milliseconds] - $t0) / 1000.0}] [getNP]]
