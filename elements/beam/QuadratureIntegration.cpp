@@ -135,8 +135,12 @@ std::string_view QuadratureIntegration::typeName() const {
 HingeRadauIntegration::HingeRadauIntegration(int tag, int secI, double lpI, int secJ, double lpJ,
                                              int secE)
     : BeamIntegration(tag), secI_(secI), secJ_(secJ), secE_(secE), lpI_(lpI), lpJ_(lpJ) {
-  if (!(lpI >= 0.0)) throw InputError("lpI", "must be zero or positive");
-  if (!(lpJ >= 0.0)) throw InputError("lpJ", "must be zero or positive");
+  // A zero plastic-hinge length gives its end section no weight (the hinge's two points
+  // collapse onto the end): the element would carry no plastic rotation there.
+  if (!(lpI > 0.0) || !std::isfinite(lpI))
+    throw InputError("lpI", "must be a positive plastic-hinge length");
+  if (!(lpJ > 0.0) || !std::isfinite(lpJ))
+    throw InputError("lpJ", "must be a positive plastic-hinge length");
 }
 
 std::vector<double> HingeRadauIntegration::locations(double length) const {

@@ -77,9 +77,8 @@ ArgReader::ArgReader(int objc, Tcl_Obj* const objv[], std::string usage, int fir
 std::string_view ArgReader::text(std::size_t i) const { return Tcl_GetString(tokens_[i]); }
 
 std::size_t ArgReader::nextUnread() const {
-  for (std::size_t i = 0; i < tokens_.size(); ++i)
-    if (!used_[i]) return i;
-  return tokens_.size();
+  while (firstUnread_ < tokens_.size() && used_[firstUnread_]) ++firstUnread_;
+  return firstUnread_;
 }
 
 bool ArgReader::hasMore() const { return nextUnread() < tokens_.size(); }

@@ -132,6 +132,9 @@ class ArgReader {
 
   std::vector<Tcl_Obj*> tokens_;  // tokens_[0] is the command word
   std::vector<bool> used_;
+  // No token before it is unread (tokens are only ever marked used): nextUnread starts there, so
+  // reading a list of n arguments is linear in n, not quadratic.
+  mutable std::size_t firstUnread_ = 0;
   std::string usage_;
   std::string context_;
   std::size_t last_ = 0;

@@ -213,6 +213,11 @@ std::unique_ptr<elements::BeamIntegration> inlineIntegration(Runtime& rt, ArgRea
       args.fail(args.lastPosition(), "integration", "is not a list: \"" + first + "\"");
     for (int k = 0; k < n; ++k) words.emplace_back(list[k]);
     Tcl_Free(reinterpret_cast<char*>(list));
+    // A blank word is a list of no words: no rule to index.
+    if (words.empty())
+      args.fail(args.lastPosition(), "integration",
+                "expected a rule (Lobatto secTag N, ..., HingeRadau secI lpI secJ lpJ secE), got "
+                "a blank word");
   } else {
     words.push_back(first);
     const std::size_t more = first == "HingeRadau" ? 5 : 2;

@@ -2,6 +2,8 @@
 // Model-building commands: model, node, mass, fix, fixX/Y/Z, equalDOF, rigidLink, region, and the
 // type dispatchers uniaxialMaterial and element.
 #include <algorithm>
+#include <set>
+#include <unordered_set>
 #include <cmath>
 #include <string>
 
@@ -109,6 +111,8 @@ void fixCoordinate(Runtime& rt, ArgReader& a, int axis) {
       a.failArgument("constraint flag", "expected 0 or 1");
   }
   const double tol = a.option("-tol", 1e-10);
+  if (!(tol >= 0.0) || !std::isfinite(tol))
+    a.failArgument("-tol", "must be a distance, zero or positive");
   a.finish();
   if (flags.empty()) a.fail("needs constraint flags");
   std::vector<int> fixed;
@@ -141,9 +145,15 @@ void equalDofCmd(Runtime& rt, ArgReader& a) {
   mp.constrainedNode = a.integer("cNode");
   std::vector<int> dofs = a.integers("dof");
   a.finish();
-  for (std::size_t i = 0; i < dofs.size(); ++i)
-    for (std::size_t j = 0; j < i; ++j)
-      if (dofs[i] == dofs[j]) a.failArgument("dof", i, "is given twice");
+  // Checked here, before the constraint's matrix is formed (its size is the list's squared).
+  const int ndf =
+      std::min(rt.domain.node(mp.retainedNode).ndf(), rt.domain.node(mp.constrainedNode).ndf());
+  std::unordered_set<int> seen;
+  for (std::size_t i = 0; i < dofs.size(); ++i) {
+    if (dofs[i] < 1 || dofs[i] > ndf)
+      a.failArgument("dof", i, "must be a dof of both nodes, 1 to " + std::to_string(ndf));
+    if (!seen.insert(dofs[i]).second) a.failArgument("dof", i, "is given twice");
+  }
   for (int& d : dofs) --d;
   mp.constrainedDofs = mp.retainedDofs = dofs;
   mp.Ccr = Eigen::MatrixXd::Identity(static_cast<Eigen::Index>(dofs.size()),
@@ -299,6 +309,11 @@ void rigidDiaphragmCmd(Runtime& rt, ArgReader& a) {
   if (!space && !plane)
     a.failArgument("rNode", "must be a 3D node with 6 dofs or a 2D node with 3 dofs");
   std::vector<domain::MPConstraint> constraints;
+  std::set<std::pair<int, int>> fixed, constrained;  // (node, dof)
+  for (const auto& sp : rt.domain.fixes()) fixed.emplace(sp.node, sp.dof);
+  for (const auto& other : rt.domain.mps())
+    for (int dof : other.constrainedDofs) constrained.emplace(other.constrainedNode, dof);
+  std::unordered_set<int> listed;
   for (std::size_t i = 0; i < cNodes.size(); ++i) {
     const int tag = cNodes[i];
     if (tag == rNode) a.failArgument("cNode", i, "the retained node cannot also be constrained");
@@ -330,20 +345,16 @@ void rigidDiaphragmCmd(Runtime& rt, ArgReader& a) {
       }
     }
     mp.retainedDofs = mp.constrainedDofs;
-    // The checks Domain::addMP makes, made for all nodes first so that a bad one adds none.
+    // The checks Domain::addMP makes, made for all nodes first so that a bad one adds none
+    // (against sets formed once, so that a long list of nodes costs linear time).
+    if (!listed.insert(tag).second)
+      a.failArgument("cNode", i, "node " + std::to_string(tag) + " is listed twice");
     for (int dof : mp.constrainedDofs) {
       const std::string which =
           "dof " + std::to_string(dof + 1) + " of node " + std::to_string(tag);
-      for (const auto& sp : rt.domain.fixes())
-        if (sp.node == tag && sp.dof == dof) a.failArgument("cNode", i, which + " is fixed");
-      for (const auto& other : rt.domain.mps())
-        if (other.constrainedNode == tag &&
-            std::find(other.constrainedDofs.begin(), other.constrainedDofs.end(), dof) !=
-                other.constrainedDofs.end())
-          a.failArgument("cNode", i, which + " is already constrained");
-      for (const auto& other : constraints)
-        if (other.constrainedNode == tag)
-          a.failArgument("cNode", i, "node " + std::to_string(tag) + " is listed twice");
+      if (fixed.count({tag, dof}) != 0) a.failArgument("cNode", i, which + " is fixed");
+      if (constrained.count({tag, dof}) != 0)
+        a.failArgument("cNode", i, which + " is already constrained");
     }
     constraints.push_back(std::move(mp));
   }

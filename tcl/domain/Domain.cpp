@@ -2,6 +2,7 @@
 #include "tcl/domain/Domain.h"
 
 #include <algorithm>
+#include <limits>
 #include <string>
 
 #include "materials/InputError.h"
@@ -105,6 +106,8 @@ void Domain::removeNode(int tag) {
   fixes_.erase(std::remove_if(fixes_.begin(), fixes_.end(),
                               [tag](const SPConstraint& sp) { return sp.node == tag; }),
                fixes_.end());
+  fixedDofs_.erase(fixedDofs_.lower_bound({tag, std::numeric_limits<int>::min()}),
+                   fixedDofs_.upper_bound({tag, std::numeric_limits<int>::max()}));
   nodes_.erase(tag);
   nodeAlphaM_.erase(tag);
   touch();
@@ -115,19 +118,14 @@ void Domain::addFix(int nodeTag, int dof) {
   if (dof < 0 || dof >= n.ndf())
     throw InputError("dof", std::to_string(dof + 1) + " is outside 1.." + std::to_string(n.ndf()) +
                                 " of node " + std::to_string(nodeTag));
-  for (const auto& sp : fixes_) {
-    if (sp.node == nodeTag && sp.dof == dof)
-      throw InputError("dof", std::to_string(dof + 1) + " of node " + std::to_string(nodeTag) +
-                                  " is already fixed");
-  }
-  for (const auto& mp : mps_) {
-    if (mp.constrainedNode == nodeTag &&
-        std::find(mp.constrainedDofs.begin(), mp.constrainedDofs.end(), dof) !=
-            mp.constrainedDofs.end())
-      throw InputError("dof", std::to_string(dof + 1) + " of node " + std::to_string(nodeTag) +
-                                  " is already constrained by a multi-point constraint");
-  }
+  if (fixedDofs_.count({nodeTag, dof}) != 0)
+    throw InputError("dof", std::to_string(dof + 1) + " of node " + std::to_string(nodeTag) +
+                                " is already fixed");
+  if (constrainedDofs_.count({nodeTag, dof}) != 0)
+    throw InputError("dof", std::to_string(dof + 1) + " of node " + std::to_string(nodeTag) +
+                                " is already constrained by a multi-point constraint");
   fixes_.push_back({nodeTag, dof});
+  fixedDofs_.emplace(nodeTag, dof);
   touch();
 }
 
@@ -135,7 +133,9 @@ int Domain::removeFix(int nodeTag, int dof) {
   const auto before = fixes_.size();
   fixes_.erase(std::remove_if(fixes_.begin(), fixes_.end(),
                               [&](const SPConstraint& sp) {
-                                return sp.node == nodeTag && (dof < 0 || sp.dof == dof);
+                                const bool match = sp.node == nodeTag && (dof < 0 || sp.dof == dof);
+                                if (match) fixedDofs_.erase({sp.node, sp.dof});
+                                return match;
                               }),
                fixes_.end());
   const int removed = static_cast<int>(before - fixes_.size());
@@ -155,24 +155,19 @@ void Domain::addMP(MPConstraint mp) {
     if (d < 0 || d >= c.ndf())
       throw InputError("dof", std::to_string(d + 1) + " is outside 1.." + std::to_string(c.ndf()) +
                                   " of node " + std::to_string(c.tag()));
-    for (const auto& sp : fixes_) {
-      if (sp.node == c.tag() && sp.dof == d)
-        throw InputError("dof", std::to_string(d + 1) + " of node " + std::to_string(c.tag()) +
-                                    " is fixed and cannot also be constrained");
-    }
-    for (const auto& other : mps_) {
-      if (other.constrainedNode == c.tag() &&
-          std::find(other.constrainedDofs.begin(), other.constrainedDofs.end(), d) !=
-              other.constrainedDofs.end())
-        throw InputError("dof", std::to_string(d + 1) + " of node " + std::to_string(c.tag()) +
-                                    " is already constrained");
-    }
+    if (fixedDofs_.count({c.tag(), d}) != 0)
+      throw InputError("dof", std::to_string(d + 1) + " of node " + std::to_string(c.tag()) +
+                                  " is fixed and cannot also be constrained");
+    if (constrainedDofs_.count({c.tag(), d}) != 0)
+      throw InputError("dof", std::to_string(d + 1) + " of node " + std::to_string(c.tag()) +
+                                  " is already constrained");
   }
   for (int d : mp.retainedDofs) {
     if (d < 0 || d >= r.ndf())
       throw InputError("dof", std::to_string(d + 1) + " is outside 1.." + std::to_string(r.ndf()) +
                                   " of node " + std::to_string(r.tag()));
   }
+  for (int d : mp.constrainedDofs) constrainedDofs_.emplace(mp.constrainedNode, d);
   mps_.push_back(std::move(mp));
   touch();
 }
@@ -195,10 +190,11 @@ void Domain::removePattern(int tag) {
   auto it = patterns_.find(tag);
   if (it == patterns_.end()) throw InputError("pattern", std::to_string(tag) + " does not exist");
   for (const SPConstraint& m : it->second->replacedFixes()) {  // supports give a fix back
-    const bool fixed = std::any_of(fixes_.begin(), fixes_.end(), [&m](const SPConstraint& sp) {
-      return sp.node == m.node && sp.dof == m.dof;
-    });
-    if (!fixed && nodes_.count(m.node) != 0) fixes_.push_back(m);
+    const bool fixed = fixedDofs_.count({m.node, m.dof}) != 0;
+    if (!fixed && nodes_.count(m.node) != 0) {
+      fixes_.push_back(m);
+      fixedDofs_.emplace(m.node, m.dof);
+    }
   }
   patterns_.erase(it);
   touch();
@@ -396,6 +392,8 @@ void Domain::clear() {
   nodes_.clear();
   fixes_.clear();
   mps_.clear();
+  fixedDofs_.clear();
+  constrainedDofs_.clear();
   patterns_.clear();
   elementRayleigh_.clear();
   nodeAlphaM_.clear();

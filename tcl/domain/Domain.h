@@ -3,6 +3,7 @@
 
 #include <Eigen/Core>
 #include <map>
+#include <set>
 #include <memory>
 #include <optional>
 #include <span>
@@ -169,6 +170,10 @@ class Domain {
   std::map<int, std::unique_ptr<elements::Element>> elements_;
   std::vector<SPConstraint> fixes_;
   std::vector<MPConstraint> mps_;
+  // (node, dof) of fixes_ and of the dofs mps_ constrain, kept with them so that adding a fix or
+  // a constraint checks them in log time: a model of n constraints is built in n log n.
+  std::set<std::pair<int, int>> fixedDofs_;
+  std::set<std::pair<int, int>> constrainedDofs_;
   std::map<int, std::unique_ptr<LoadPattern>> patterns_;
   std::map<int, RayleighFactors> elementRayleigh_;
   std::map<int, double> nodeAlphaM_;

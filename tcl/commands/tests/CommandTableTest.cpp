@@ -95,6 +95,37 @@ TEST_F(CommandTableTest, FixIsAllOrNothing) {
   EXPECT_NE(error("fix 1 1 0 2").find("expected 0 or 1"), std::string::npos);
 }
 
+TEST_F(CommandTableTest, ConstraintListsAreCheckedBeforeAnythingIsFormed) {
+  ok("model basic -ndm 2 -ndf 3; node 1 0 0; node 2 1 0; node 3 2 0; fix 3 0 1 0");
+  // A dof outside the nodes' dofs is refused before the constraint's matrix (list size squared)
+  // is formed; a repeated dof at its second place.
+  EXPECT_NE(error("equalDOF 1 2 1 4").find("argument 4 (dof) must be a dof of both nodes, 1 to 3"),
+            std::string::npos);
+  EXPECT_NE(error("equalDOF 1 2 1 2 1").find("argument 5 (dof) is given twice"), std::string::npos);
+  EXPECT_NE(error("rigidDiaphragm 3 1 2 2").find("node 2 is listed twice"), std::string::npos);
+  EXPECT_NE(error("rigidDiaphragm 3 1 3").find("dof 2 of node 3 is fixed"), std::string::npos);
+  ok("equalDOF 1 2 1 2");
+  EXPECT_NE(error("equalDOF 1 2 1").find("already constrained"), std::string::npos);
+  EXPECT_NE(error("fix 2 1 0 0").find("already constrained by a multi-point constraint"),
+            std::string::npos);
+  // remove sp gives the dof back: it can be constrained again.
+  ok("remove sp 3 2; equalDOF 1 3 2");
+  EXPECT_NE(error("fixX 0.0 1 1 1 -tol -1e-3").find("-tol"), std::string::npos);
+  EXPECT_NE(error("fixX 0.0 1 1 1 -tol -1e-3").find("must be a distance, zero or positive"),
+            std::string::npos);
+}
+
+TEST_F(CommandTableTest, HingeRadauNeedsPositiveHingeLengths) {
+  ok("model basic -ndm 2 -ndf 3; node 1 0 0; node 2 4 0; geomTransf Linear 1;"
+     "section Elastic 1 2.0e8 0.01 1.0e-4");
+  EXPECT_NE(error("beamIntegration HingeRadau 1 1 0.0 1 0.2 1").find("lpI"), std::string::npos);
+  EXPECT_NE(error("beamIntegration HingeRadau 1 1 0.2 1 0.0 1").find("positive plastic-hinge"),
+            std::string::npos);
+  EXPECT_NE(error("element forceBeamColumn 1 1 2 1 HingeRadau 1 0.0 1 0.2 1").find("lpI"),
+            std::string::npos);
+  ok("beamIntegration HingeRadau 1 1 0.2 1 0.2 1");
+}
+
 TEST_F(CommandTableTest, PatternBodyErrorRemovesThePattern) {
   ok("model basic -ndm 1 -ndf 1; node 1 0.0; timeSeries Linear 1");
   const std::string msg = error("pattern Plain 1 1 { load 1 1.0; load 7 1.0 }");

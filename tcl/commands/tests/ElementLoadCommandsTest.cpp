@@ -87,6 +87,12 @@ TEST_F(ElementLoadCommandsTest, IntegrationRuleInTheBeamCommand) {
             std::string::npos);
   EXPECT_NE(error("element forceBeamColumn 1 1 2 3 1 1 -cMass -lMass").find("not both"),
             std::string::npos);
+  // A blank integration word (a list of no words) crashed the parser once.
+  EXPECT_NE(error("element forceBeamColumn 50 1 2 1 {  } 1").find("got a blank word"),
+            std::string::npos);
+  EXPECT_NE(error("element dispBeamColumn 50 1 2 1 \"\t\"").find("got a blank word"),
+            std::string::npos);
+  EXPECT_NE(error("element forceBeamColumn 50 1 2 1 {}").find("integration"), std::string::npos);
   EXPECT_EQ(ok("getEleTags"), "");
   ok("element forceBeamColumn 1 1 2 1 {Lobatto 1 5} -lMass;"
      "element dispBeamColumn 2 1 2 1 Legendre 1 3 -mass 1.0 -cMass;"
