@@ -20,10 +20,23 @@ constexpr std::array kCodes3d{SectionCode::P, SectionCode::Mz, SectionCode::My, 
 }  // namespace
 
 template <int Ndm>
-FiberSection<Ndm>::FiberSection(int tag, const std::vector<Fiber>& fibers, double torsionStiffness)
+FiberSection<Ndm>::FiberSection(int tag, const std::vector<Fiber>& fibers, double torsionStiffness,
+                                bool aboutCentroid)
     : SectionForceDeformation(tag), gj_(torsionStiffness) {
   if (fibers.empty()) throw InputError("section Fiber " + std::to_string(tag), "has no fibers");
   if (Ndm == 3 && !(torsionStiffness >= 0.0)) throw InputError("-GJ", "must be zero or positive");
+  if (aboutCentroid) {
+    double area = 0.0, qz = 0.0, qy = 0.0;
+    for (const Fiber& f : fibers) {
+      area += f.area;
+      qz += f.y * f.area;
+      qy += f.z * f.area;
+    }
+    if (area > 0.0) {
+      yBar_ = qz / area;
+      if (Ndm == 3) zBar_ = qy / area;
+    }
+  }
   auto places = std::make_shared<std::vector<Place>>();
   // Fibers of one material at one strain point ((y, z); y alone in a plane section, whose
   // strain is eps - y kz) have the same strain history and so the same states: they are
@@ -45,7 +58,7 @@ FiberSection<Ndm>::FiberSection(int tag, const std::vector<Fiber>& fibers, doubl
     while (g < groups_.size() && !groups_[g]->accepts(*f.material)) ++g;
     if (g == groups_.size()) groups_.push_back(FiberGroup::forMaterial(*f.material));
     // 2D sections ignore z (the strain is eps - y kz); keep it for responses only.
-    groups_[g]->add(f.y, f.z, f.area, *f.material);
+    groups_[g]->add(f.y - yBar_, f.z - zBar_, f.area, *f.material);
     const int index = groups_[g]->size() - 1;
     evaluated.emplace(key, std::make_pair(g, index));
     places->push_back({f.y, f.z, f.area, g, index});
@@ -67,7 +80,9 @@ FiberSection<Ndm>::FiberSection(const FiberSection& o)
       s_(o.s_),
       k_(o.k_),
       k0_(o.k0_),
-      materialUpdates_(o.materialUpdates_) {
+      materialUpdates_(o.materialUpdates_),
+      yBar_(o.yBar_),
+      zBar_(o.zBar_) {
   for (const auto& g : o.groups_) groups_.push_back(g->clone());
 }
 

@@ -28,9 +28,18 @@ class FiberSection final : public SectionForceDeformation {
     const UniaxialMaterial* material = nullptr;  ///< prototype, cloned by the constructor
   };
 
-  /// `torsionStiffness` (GJ) is used in 3D only. Throws InputError when there are no fibers or a
-  /// fiber has a nonpositive area.
-  FiberSection(int tag, const std::vector<Fiber>& fibers, double torsionStiffness = 0.0);
+  /// `torsionStiffness` (GJ) is used in 3D only. With `aboutCentroid` the strains are taken
+  /// about the fibers' area centroid (y - yBar, z - zBar; yBar = sum A y / sum A, z in 3D only),
+  /// as OpenSees' FiberSection2d/3d do unless `-noCentroid` (OpenSees/OpenSees:SRC/material/
+  /// section/FiberSection2d.cpp, yBar = QzBar / ABar): the section's reference axis is then its
+  /// area centroid, whatever the coordinates the fibers were given in; without it the axis is
+  /// y = 0 (and z = 0) of those coordinates. Fibers keep their given coordinates for responses.
+  /// Throws InputError when there are no fibers or a fiber has a nonpositive area.
+  FiberSection(int tag, const std::vector<Fiber>& fibers, double torsionStiffness = 0.0,
+               bool aboutCentroid = false);
+  /// The reference axis' position in the fibers' coordinates (0, 0 without aboutCentroid).
+  double centroidY() const noexcept { return yBar_; }
+  double centroidZ() const noexcept { return zBar_; }
   FiberSection(const FiberSection& other);
   FiberSection(FiberSection&&) noexcept = default;
 
@@ -87,6 +96,8 @@ class FiberSection final : public SectionForceDeformation {
   Vector e_ = Vector::Zero(), eCommitted_ = Vector::Zero(), s_ = Vector::Zero();
   Matrix k_ = Matrix::Zero(), k0_ = Matrix::Zero();
   long materialUpdates_ = 0;
+  double yBar_ = 0.0;  ///< reference axis in the fibers' coordinates (area centroid or 0)
+  double zBar_ = 0.0;
 };
 
 using FiberSection2d = FiberSection<2>;

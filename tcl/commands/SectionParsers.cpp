@@ -171,11 +171,12 @@ void layerCommand(Runtime& rt, ArgReader& args) {
 
 template <class S>
 std::unique_ptr<S> buildFiberSection(const Runtime& rt, int tag,
-                                     const FiberSectionUnderConstruction& under, double gj) {
+                                     const FiberSectionUnderConstruction& under, double gj,
+                                     bool aboutCentroid) {
   std::vector<typename S::Fiber> fibers;
   for (const auto& f : under.fibers)
     fibers.push_back({f.y, f.z, f.area, &rt.builder.uniaxialMaterial(f.materialTag)});
-  return std::make_unique<S>(tag, fibers, gj);
+  return std::make_unique<S>(tag, fibers, gj, aboutCentroid);
 }
 
 constexpr const char* kElasticSectionUsage2d = "section Elastic tag E A Iz ?G alphaY?";
@@ -266,11 +267,13 @@ SectionPtr parseUniaxialSection(Runtime& rt, ArgReader& args, int tag) {
       nullptr);
 }
 
-// section Fiber tag ?-GJ GJ? { fiber ...; patch ...; layer ... }
+// section Fiber tag ?-GJ GJ? ?-noCentroid? { fiber ...; patch ...; layer ... }
 SectionPtr parseFiberSection(Runtime& rt, ArgReader& args, int tag) {
   const int ndm = rt.builder.ndm;
   if (rt.currentFiberSection != nullptr) args.fail("section Fiber bodies cannot be nested");
   const std::optional<double> gj = args.optionalOption("-GJ");
+  // OpenSees takes strains about the fibers' area centroid unless -noCentroid.
+  const bool aboutCentroid = !args.flag("-noCentroid");
   Tcl_Obj* body = args.object("body");
   args.finish();
   if (ndm == 3 && !gj) args.fail("a 3D fiber section needs -GJ GJ (torsional stiffness)");
@@ -285,8 +288,10 @@ SectionPtr parseFiberSection(Runtime& rt, ArgReader& args, int tag) {
   if (code != TCL_OK)
     throw ArgError(args.context() +
                    ": error in the section body: " + Tcl_GetStringResult(rt.interp));
-  if (ndm == 2) return buildFiberSection<materials::section::FiberSection2d>(rt, tag, under, 0.0);
-  return buildFiberSection<materials::section::FiberSection3d>(rt, tag, under, *gj);
+  if (ndm == 2)
+    return buildFiberSection<materials::section::FiberSection2d>(rt, tag, under, 0.0,
+                                                                 aboutCentroid);
+  return buildFiberSection<materials::section::FiberSection3d>(rt, tag, under, *gj, aboutCentroid);
 }
 
 /// A section type: its usage lines (2D, 3D) and its parser (arguments after the tag).
@@ -298,7 +303,7 @@ struct SectionType {
 };
 
 constexpr const char* kFiberSectionUsage =
-    "section Fiber tag ?-GJ GJ? { fiber ...; patch ...; layer ... }";
+    "section Fiber tag ?-GJ GJ? ?-noCentroid? { fiber ...; patch ...; layer ... }";
 constexpr const char* kUniaxialSectionUsage =
     "section Uniaxial tag matTag code (code P, Mz, Vy, My, Vz or T)";
 

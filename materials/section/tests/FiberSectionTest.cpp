@@ -131,6 +131,39 @@ TEST(FiberSectionTest, CommitRevertAndClone) {
   EXPECT_EQ(sec.getStressResultant().norm(), 0.0);
 }
 
+TEST(FiberSectionTest, UnsymmetricSectionAboutItsAreaCentroid) {
+  // Two fibers of one elastic material: A = 2 at y = 0.2 and A = 1 at y = -0.2 (z = 0.1 and
+  // -0.3 in 3D). About the area centroid yBar = (2 0.2 - 0.2) / 3 = 1/15 (zBar = (0.2 - 0.3) / 3)
+  // an axial strain gives no moment; about y = 0 it gives Mz = -E (2 0.2 - 0.2) eps.
+  Elastic::Params ep;
+  ep.E = kE;
+  const Elastic mat(1, ep);
+  using F2 = FiberSection<2>::Fiber;
+  const std::vector<F2> fibers{{0.2, 0.1, 2.0, &mat}, {-0.2, -0.3, 1.0, &mat}};
+  const FiberSection<2> about(1, fibers, 0.0, true), given(1, fibers, 0.0, false);
+  const double yBar = 1.0 / 15.0;
+  EXPECT_NEAR(about.centroidY(), yBar, 1e-15);
+  EXPECT_EQ(given.centroidY(), 0.0);
+  const Eigen::MatrixXd k = about.getInitialTangent(), k0 = given.getInitialTangent();
+  EXPECT_NEAR(k(0, 0), 3.0 * kE, 1e-6);
+  EXPECT_NEAR(k(0, 1), 0.0, 1e-6);
+  const double iz = 2.0 * (0.2 - yBar) * (0.2 - yBar) + (-0.2 - yBar) * (-0.2 - yBar);
+  EXPECT_NEAR(k(1, 1), kE * iz, 1e-6);
+  EXPECT_NEAR(k0(0, 1), -kE * (2.0 * 0.2 - 0.2), 1e-6);
+  EXPECT_NEAR(k0(1, 1), kE * (2.0 * 0.04 + 0.04), 1e-6);
+  // The fibers keep their given coordinates for responses.
+  EXPECT_EQ(about.fiberY(0), 0.2);
+  using F3 = FiberSection<3>::Fiber;
+  const std::vector<F3> fibers3{{0.2, 0.1, 2.0, &mat}, {-0.2, -0.3, 1.0, &mat}};
+  FiberSection<3> about3(1, fibers3, 1.0, true);
+  EXPECT_NEAR(about3.centroidZ(), (2.0 * 0.1 - 0.3) / 3.0, 1e-15);
+  ASSERT_TRUE(ok(about3.setTrialDeformation(Eigen::Vector4d(1e-4, 0.0, 0.0, 0.0))));
+  const Eigen::VectorXd s3 = about3.getStressResultant();
+  EXPECT_NEAR(s3(0), 3.0 * kE * 1e-4, 1e-6);
+  EXPECT_NEAR(s3(1), 0.0, 1e-6);  // Mz
+  EXPECT_NEAR(s3(2), 0.0, 1e-6);  // My
+}
+
 TEST(FiberSectionTest, FiberStressStrainResponse) {
   const ElasticPP mat = epp();
   auto sec = rectangle<2>(mat);
