@@ -138,7 +138,17 @@ int Domain::removeFix(int nodeTag, int dof) {
                                 return match;
                               }),
                fixes_.end());
-  const int removed = static_cast<int>(before - fixes_.size());
+  int removed = static_cast<int>(before - fixes_.size());
+  // A fix that a support motion (imposedMotion) took over while its pattern exists: removing it
+  // (OpenSees scripts do, `remove sp` after `imposedMotion`) means the pattern gives it back no
+  // more; the motion goes on driving the dof.
+  for (auto& [ptag, p] : patterns_)
+    if (MultipleSupportPattern* ms = p->asMultipleSupport())
+      for (auto& m : ms->imposed)
+        if (m.replacedFix && m.node == nodeTag && (dof < 0 || m.dof == dof)) {
+          m.replacedFix = false;
+          ++removed;
+        }
   if (removed > 0) touch();
   return removed;
 }

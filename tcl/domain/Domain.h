@@ -74,7 +74,9 @@ class Domain {
   void addMP(MPConstraint mp);
   const std::vector<SPConstraint>& fixes() const noexcept { return fixes_; }
   const std::vector<MPConstraint>& mps() const noexcept { return mps_; }
-  /// Removes every SP constraint (fix) on a node dof; returns how many were removed.
+  /// Removes every SP constraint (fix) on a node dof (every dof when dof < 0), including a fix a
+  /// pattern's imposed motion took over (the pattern then no longer gives it back when it is
+  /// removed); returns how many were removed.
   int removeFix(int nodeTag, int dof);
 
   // --- loads ----------------------------------------------------------------------------

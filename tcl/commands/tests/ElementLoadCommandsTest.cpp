@@ -109,4 +109,14 @@ TEST_F(ElementLoadCommandsTest, ImposedMotionOnAFixedDofReplacesTheFixUntilThePa
   EXPECT_NE(error("fix 1 1").find("already fixed"), std::string::npos);
 }
 
+TEST_F(ElementLoadCommandsTest, RemoveSpOfADofAnImposedMotionTookOverIsForGood) {
+  // OpenSees scripts remove the fix after imposing a motion on it (RCFrameMulti.tcl): accepted,
+  // the motion goes on, and the pattern's removal no longer fixes the dof again.
+  ok("model basic -ndm 1 -ndf 1; node 1 0; node 2 0; fix 1 1; timeSeries Linear 1;"
+     "pattern MultiSupport 1 { groundMotion 1 Plain -disp 1; imposedSupportMotion 1 1 1 }");
+  ok("remove sp 1 1");
+  EXPECT_NE(error("remove sp 1 1").find("is not fixed"), std::string::npos);
+  ok("remove loadPattern 1; fix 1 1");
+}
+
 }  // namespace dabs::tcl::testing
