@@ -77,12 +77,15 @@ set uExact [expr {$S / $A * $P * $L ** 2 / (2.0 * $EIc)}]
 puts [format "offset section: EIc = %.6g (centroidal, = E b h^3/12 (1 - 1/n^2) = %.6g)" $EIc \
     [expr {$E * $b * $h ** 3 / 12.0 * (1.0 - 1.0 / ($nY * $nY))}]]
 
-proc offsetCantilever {type nEle} {
+# The section's fibers lie from y = 0 to h. With -noCentroid its reference axis is y = 0, the
+# element's axis: bending couples with the axial strain there. Without it (OpenSees' default) the
+# axis is the fibers' area centroid, y = h/2: no coupling, the same deflection.
+proc offsetCantilever {type nEle {axis -noCentroid}} {
   global E b h L P nY
   wipe
   model basic -ndm 2 -ndf 3
   uniaxialMaterial Elastic 1 $E
-  section Fiber 1 { patch rect 1 $nY 1 0.0 [expr {-$b / 2}] $h [expr {$b / 2}] }
+  section Fiber 1 {*}$axis { patch rect 1 $nY 1 0.0 [expr {-$b / 2}] $h [expr {$b / 2}] }
   beamIntegration Legendre 1 1 3
   geomTransf Linear 1
   for {set i 0} {$i <= $nEle} {incr i} { node [expr {$i + 1}] [expr {$L * $i / double($nEle)}] 0.0 }
@@ -100,6 +103,11 @@ proc offsetCantilever {type nEle} {
 lassign [offsetCantilever forceBeamColumn 1] v u
 check "forceBeamColumn, 1 element, offset axis: tip deflection P L^3/(3 EIc)" $v $vExact $kExactTol
 check "forceBeamColumn, 1 element, offset axis: tip axial (S/A) P L^2/(2 EIc)" $u $uExact $kExactTol
+lassign [offsetCantilever forceBeamColumn 1 {}] v u
+check "forceBeamColumn, axis at the centroid (default): tip deflection P L^3/(3 EIc)" $v $vExact \
+    $kExactTol
+checkAbs "forceBeamColumn, axis at the centroid (default): no tip axial displacement" $u 0.0 \
+    [expr {1e-12 * abs($uExact)}]
 
 set prevV {}; set prevU {}
 set errs {}
