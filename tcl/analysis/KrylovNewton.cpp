@@ -46,14 +46,12 @@ Status KrylovNewton::solveCurrentStep(LinearSystem& system, Integrator& integrat
     system.formResidual(c);
     ++dim;
     countIteration();
-    const ConvergenceTest::Result result = test->test(system.X, system.B);
-    holdStatusesIfDue(system);
-    if (result == ConvergenceTest::Result::Failed) return Status::NotConverged;
-    if (result == ConvergenceTest::Result::Converged) {
-      const Settled settled = settleStatuses(system, c);
-      if (settled == Settled::Converged) return Status::Ok;
-      if (settled == Settled::Failed) return Status::NotConverged;
-      dim = maxDim_ + 1;  // the corrections so far belong to the former statuses: start anew
+    switch (afterTest(test->test(system.X, system.B), system, c)) {
+      case Next::Converged: return Status::Ok;
+      case Next::Failed: return Status::NotConverged;
+      // The corrections so far belong to the former statuses: start anew.
+      case Next::Switched: dim = maxDim_ + 1; break;
+      case Next::IterateOn: break;
     }
   }
 }

@@ -29,13 +29,11 @@ Status NewtonLineSearch::solveCurrentStep(LinearSystem& system, Integrator& inte
       if (!ok(s)) return s;
     }
     countIteration();
-    const ConvergenceTest::Result result = test->test(system.X, system.B);
-    holdStatusesIfDue(system);
-    if (result == ConvergenceTest::Result::Failed) return Status::NotConverged;
-    if (result == ConvergenceTest::Result::Converged) {
-      const Settled settled = settleStatuses(system, c);
-      if (settled == Settled::Converged) return Status::Ok;
-      if (settled == Settled::Failed) return Status::NotConverged;
+    switch (afterTest(test->test(system.X, system.B), system, c)) {
+      case Next::Converged: return Status::Ok;
+      case Next::Failed: return Status::NotConverged;
+      case Next::Switched:
+      case Next::IterateOn: break;
     }
   }
 }

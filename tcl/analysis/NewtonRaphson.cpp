@@ -34,22 +34,21 @@ Status NewtonRaphson::solveCurrentStep(LinearSystem& system, Integrator& integra
     if (!ok(s)) return s;
     system.formResidual(c);
     countIteration();
-    const ConvergenceTest::Result result = test->test(system.X, system.B);
+    const Next next = afterTest(test->test(system.X, system.B), system, c);
     // Modified Newton forms its tangent anew when it holds the statuses (its tangent is that of
     // the step's start, which may miss a contact that closed since), after a switch, and while
     // statuses are held whenever the norm grows (a held release force is strongly curved).
-    if (holdStatusesIfDue(system)) {
+    if (heldNow()) {
       holding = true;
       formTangent = true;
     }
     if (holding && test->lastNorm() > lastNorm) formTangent = true;
     lastNorm = test->lastNorm();
-    if (result == ConvergenceTest::Result::Failed) return Status::NotConverged;
-    if (result == ConvergenceTest::Result::Converged) {
-      const Settled settled = settleStatuses(system, c);
-      if (settled == Settled::Converged) return Status::Ok;
-      if (settled == Settled::Failed) return Status::NotConverged;
-      formTangent = true;  // a switched status changes the tangent
+    switch (next) {
+      case Next::Converged: return Status::Ok;
+      case Next::Failed: return Status::NotConverged;
+      case Next::Switched: formTangent = true; break;  // a switched status changes the tangent
+      case Next::IterateOn: break;
     }
   }
 }

@@ -3,21 +3,20 @@
 
 namespace dabs::analysis {
 
-bool SolutionAlgorithm::holdStatusesIfDue(LinearSystem& system) {
-  if (iterations_ != kHoldAfter) return false;
-  return system.model().holdStatuses();
-}
-
-SolutionAlgorithm::Settled SolutionAlgorithm::settleStatuses(LinearSystem& system,
-                                                             const AssemblyCoefficients& c) {
+SolutionAlgorithm::Next SolutionAlgorithm::afterTest(ConvergenceTest::Result result,
+                                                     LinearSystem& system,
+                                                     const AssemblyCoefficients& c) {
+  heldNow_ = iterations_ == kHoldAfter && system.model().holdStatuses();
+  if (result == ConvergenceTest::Result::Failed) return Next::Failed;
+  if (result == ConvergenceTest::Result::Continue) return Next::IterateOn;
   switch (system.model().checkHeldStatuses()) {
-    case elements::Element::HeldStatus::Agrees: return Settled::Converged;
-    case elements::Element::HeldStatus::Conflict: return Settled::Failed;
+    case elements::Element::HeldStatus::Agrees: return Next::Converged;
+    case elements::Element::HeldStatus::Conflict: return Next::Failed;
     case elements::Element::HeldStatus::Switched: break;
   }
-  if (!ok(system.model().updateElements())) return Settled::Failed;
+  if (!ok(system.model().updateElements())) return Next::Failed;
   system.formResidual(c);
-  return Settled::IterateOn;
+  return Next::Switched;
 }
 
 }  // namespace dabs::analysis

@@ -34,18 +34,21 @@ class SolutionAlgorithm {
   static constexpr int kHoldAfter = 2;
 
  protected:
-  /// What a converged test means once the switching elements' statuses are settled.
-  enum class Settled {
-    Converged,  ///< every held status agrees with the converged state (or none is held)
-    IterateOn,  ///< a status switched: the elements were updated and the residual formed anew
-    Failed      ///< an element found no status that agrees (Element::HeldStatus::Conflict)
+  /// What the iterations do after an iteration's test, once the switching elements' statuses
+  /// are held (when due) and, on a converged test, settled.
+  enum class Next {
+    Converged,  ///< converged, and every held status agrees with the state (or none is held)
+    Failed,     ///< the test failed, or an element found no status that agrees
+    IterateOn,  ///< not converged yet
+    Switched    ///< converged, but a held status switched: the elements were updated at the same
+                ///< displacements and the residual formed anew with `c`; iterate on
   };
-  /// Holds the switching elements' statuses once the iterations of the step reach kHoldAfter
-  /// (call after each iteration's test). Returns true when it held some element's status.
-  bool holdStatusesIfDue(LinearSystem& system);
-  /// To call when the test says converged: checks the held statuses and, when one switched,
-  /// updates the elements at the same displacements and forms the residual with `c`.
-  Settled settleStatuses(LinearSystem& system, const AssemblyCoefficients& c);
+  /// Holds the statuses when the iterations reach kHoldAfter (heldNow() then says so) and, on a
+  /// converged test, checks them (Element::HeldStatus).
+  Next afterTest(ConvergenceTest::Result result, LinearSystem& system,
+                 const AssemblyCoefficients& c);
+  /// True when the last afterTest held some element's status.
+  bool heldNow() const noexcept { return heldNow_; }
   /// Counts an iteration.
   void countIteration() noexcept {
     ++iterations_;
@@ -53,6 +56,9 @@ class SolutionAlgorithm {
   }
   int iterations_ = 0;
   long totalIterations_ = 0;
+
+ private:
+  bool heldNow_ = false;
 };
 
 }  // namespace dabs::analysis
