@@ -229,6 +229,7 @@ int AnalysisBuilder::analyze(int numSteps, double dt) {
   const double t0 = domain_.committedTime();
   const long contactStepsBefore = stepping ? contactStepping_->contactSteps() : 0;
   for (int step = 0; step < numSteps && StopRequest::signal == 0 && result == 0; ++step) {
+    if (progress && step > 0) progress(step, numSteps);
     if (!stepping) {
       result = advance(dt, factorizationsBefore);
       continue;
@@ -242,6 +243,7 @@ int AnalysisBuilder::analyze(int numSteps, double dt) {
       result = advance(contactStepping_->nextStep(remaining, dt), factorizationsBefore);
     }
   }
+  if (progress) progress(result == 0 ? numSteps : -1, numSteps);  // -1: stopped early
   if (stepping) stats_.contactSteps += contactStepping_->contactSteps() - contactStepsBefore;
   stats_.factorizations += factorizationsSoFar() - factorizationsBefore;
   stats_.elementUpdates += model_->elementUpdates() - elementUpdatesBefore;

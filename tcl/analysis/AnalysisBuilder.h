@@ -88,6 +88,9 @@ class AnalysisBuilder {
   /// recovered by sub-stepping once, after its sub-steps); a non-zero
   /// return stops the analysis with that code. Thrown exceptions leave analyze.
   std::function<int()> afterStep;
+  /// Called after each output step of `analyze` with the steps done and asked for (progress
+  /// reports; nothing it does changes the analysis).
+  std::function<void(int done, int total)> progress;
 
   const AnalysisStatistics& statistics() const noexcept { return stats_; }
   /// Threads for element state determination (`threads n`); results do not depend on it.

@@ -2,8 +2,13 @@
 // Analysis commands: analysis, analyze, eigen, wipe, wipeAnalysis, reset, initialize, testIter,
 // threads, analysisStatistics; the strategy commands (constraints, numberer, system, test,
 // algorithm, integrator) are in StrategyCommands.cpp and listed here.
+#include <chrono>
+#include <cstdio>
+#include <optional>
 #include <string>
 #include <vector>
+
+#include <unistd.h>
 
 #include "materials/InputError.h"
 #include "tcl/analysis/AnalysisBuilder.h"
@@ -40,13 +45,61 @@ void analysisCmd(Runtime& rt, ArgReader& a) {
   rt.analysis->setAnalysis(kind, levels, steps);
 }
 
+/// `analyze ... -progress`: one line on stderr that the steps rewrite (in a terminal; elsewhere a
+/// line at most every second), with the steps done, the analysis time, the time elapsed and an
+/// estimate of the time left; the last line stays. Nothing goes to recorders or results.
+class AnalyzeProgress {
+ public:
+  AnalyzeProgress(AnalysisBuilder& analysis, const domain::Domain& domain)
+      : analysis_(analysis), domain_(domain), terminal_(isatty(STDERR_FILENO) != 0) {
+    analysis_.progress = [this](int done, int total) { report(done, total); };
+  }
+  ~AnalyzeProgress() { analysis_.progress = nullptr; }
+  AnalyzeProgress(const AnalyzeProgress&) = delete;
+  AnalyzeProgress& operator=(const AnalyzeProgress&) = delete;
+
+ private:
+  void report(int done, int total) {
+    using Clock = std::chrono::steady_clock;
+    const Clock::time_point now = Clock::now();
+    const bool last = done == total || done < 0;
+    if (!last && now - lastShown_ <
+                     (terminal_ ? std::chrono::milliseconds(250) : std::chrono::milliseconds(1000)))
+      return;
+    lastShown_ = now;
+    const double elapsed = std::chrono::duration<double>(now - start_).count();
+    char line[200];
+    if (done < 0)
+      std::snprintf(line, sizeof line, "analyze: stopped at t = %.6g after %.1f s",
+                    domain_.committedTime(), elapsed);
+    else
+      std::snprintf(line, sizeof line,
+                    "analyze: %d/%d steps (%d %%), t = %.6g, %.1f s elapsed, about %.1f s left",
+                    done, total, total > 0 ? 100 * done / total : 100, domain_.committedTime(),
+                    elapsed, done > 0 ? elapsed / done * (total - done) : 0.0);
+    std::string text = terminal_ ? std::string("\r") + line + "\x1b[K" : std::string(line) + "\n";
+    if (terminal_ && last) text += "\n";
+    warn(text);
+    if (Tcl_Channel err = Tcl_GetStdChannel(TCL_STDERR); err != nullptr) Tcl_Flush(err);
+  }
+
+  AnalysisBuilder& analysis_;
+  const domain::Domain& domain_;
+  bool terminal_;
+  std::chrono::steady_clock::time_point start_ = std::chrono::steady_clock::now();
+  std::chrono::steady_clock::time_point lastShown_{};
+};
+
 void analyzeCmd(Runtime& rt, ArgReader& a) {
   const int n = a.integer("numIncr");
   const double dt = a.optionalReal("dt").value_or(0.0);
+  const bool showProgress = a.flag("-progress");
   a.finish();
   if (n < 0) a.failArgument("numIncr", "must not be negative");
   if (rt.analysis->kind() == AnalysisBuilder::Kind::Transient && !(dt > 0.0))
     a.failArgument("dt", "must be positive: a transient analysis needs a time step");
+  std::optional<AnalyzeProgress> progress;
+  if (showProgress) progress.emplace(*rt.analysis, rt.domain);
   const int result = rt.analysis->analyze(n, dt);
   if (const int signal = analysis::StopRequest::signal) exitOnSignal(rt, signal);
   setResult(rt, result);
@@ -179,7 +232,7 @@ constexpr CommandEntry kCommands[] = {
      "CentralDifference args...",
      strategy::integratorCommand},
     {"analysis", "analysis Static|Transient ?-numSubLevels n? ?-numSubSteps m?", analysisCmd},
-    {"analyze", "analyze numIncr ?dt?", analyzeCmd},
+    {"analyze", "analyze numIncr ?dt? ?-progress?", analyzeCmd},
     {"eigen", "eigen ?-fullGenLapack? ?-findLargest? numModes", eigenCmd},
     {"wipe", "wipe", wipeCmd},
     {"wipeAnalysis", "wipeAnalysis", wipeAnalysisCmd},

@@ -9,7 +9,8 @@ limit (an option that opened the shell would wait for input): --help and -h prin
 usage (the ways to run it, DABS_THREADS, where the documentation is) and exit 0; --version
 prints the program's name and the project version given on the command line (CMake's), a
 commit, the compiler and the optional parts, and exits 0; an unknown option starting with --
-exits 2 with a message naming it and pointing to --help.
+exits 2 with a message naming it and pointing to --help. `analyze n dt -progress` reports on
+stderr, and nothing without it.
 """
 import os
 import re
@@ -49,6 +50,19 @@ check(re.fullmatch(r"[0-9a-f]{12}", commit) is not None or commit.startswith("un
       f"--version gives the commit (12 hex digits or 'unknown ...'; got {commit!r})")
 for part in ("compiler", "Tcl", "MPI", "NLopt", "viewer", "Python"):
     check(fields.get(part, "").strip() != "", f"--version reports {part}")
+
+# analyze -progress: a line on stderr (here not a terminal: whole lines), the last one complete.
+script = os.path.join(os.path.dirname(os.path.abspath(__file__)), "progress-model.tcl")
+with_progress = subprocess.run([PROGRAM, script, "-progress"], stdin=subprocess.DEVNULL,
+                               capture_output=True, text=True, timeout=60)
+lines = [l for l in with_progress.stderr.splitlines() if l.startswith("analyze: ")]
+check(with_progress.returncode == 0 and with_progress.stdout.strip() == "0",
+      f"analyze -progress completes and returns 0 (got {with_progress.stdout.strip()!r})")
+check(bool(lines) and lines[-1].startswith("analyze: 2000/2000 steps (100 %), t = 2,"),
+      f"analyze -progress ends with the whole count and time ({lines[-1] if lines else ''!r})")
+without = subprocess.run([PROGRAM, script], stdin=subprocess.DEVNULL, capture_output=True,
+                         text=True, timeout=60)
+check("analyze:" not in without.stderr, "without -progress analyze prints nothing on stderr")
 
 unknown = run("--frobnicate")
 check(unknown.returncode == 2, f"an unknown option exits 2 (got {unknown.returncode})")
