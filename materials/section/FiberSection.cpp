@@ -1,6 +1,9 @@
 // SPDX-License-Identifier: MIT
 #include "materials/section/FiberSection.h"
 
+#include <algorithm>
+#include <cmath>
+
 #include <array>
 #include <cstdlib>
 #include <limits>
@@ -26,15 +29,22 @@ FiberSection<Ndm>::FiberSection(int tag, const std::vector<Fiber>& fibers, doubl
   if (fibers.empty()) throw InputError("section Fiber " + std::to_string(tag), "has no fibers");
   if (Ndm == 3 && !(torsionStiffness >= 0.0)) throw InputError("-GJ", "must be zero or positive");
   if (aboutCentroid) {
-    double area = 0.0, qz = 0.0, qy = 0.0;
+    double area = 0.0, qz = 0.0, qy = 0.0, extent = 0.0;
     for (const Fiber& f : fibers) {
       area += f.area;
       qz += f.y * f.area;
       qy += f.z * f.area;
+      extent = std::max({extent, std::abs(f.y), std::abs(f.z)});
     }
+    // A symmetric section's sums leave a centroid of round-off size (1e-17 m for a circular
+    // pier): that is the axis itself, so it stays exactly there and such a section gives the
+    // same numbers with and without -noCentroid.
+    const double roundOff = 1e-12 * extent;
     if (area > 0.0) {
       yBar_ = qz / area;
       if (Ndm == 3) zBar_ = qy / area;
+      if (std::abs(yBar_) <= roundOff) yBar_ = 0.0;
+      if (std::abs(zBar_) <= roundOff) zBar_ = 0.0;
     }
   }
   auto places = std::make_shared<std::vector<Place>>();
