@@ -472,10 +472,10 @@ function main() {
     fitPoints.push(groundOrigin.clone().sub(axis), groundOrigin.clone().add(axis));
   }
   /** Extent of the fit points on the screen (normalized device coordinates, -1..1), null if one is behind the camera. */
-  const screenExtent = () => {
+  const screenExtent = (points = fitPoints) => {
     camera.updateMatrixWorld();
     const e = { minX: Infinity, maxX: -Infinity, minY: Infinity, maxY: -Infinity };
-    for (const p of fitPoints) {
+    for (const p of points) {
       vec.copy(p).applyMatrix4(camera.matrixWorldInverse);
       if (vec.z >= -camera.near) return null;
       vec.applyMatrix4(camera.projectionMatrix);
@@ -485,9 +485,10 @@ function main() {
     return e;
   };
   /** Moves the camera along its line of sight and sideways until the fit points fill kFitMargin of
-   *  the canvas's width or height, centred; kept as placed when they already fit. */
+   *  the canvas's width or height, centred; kept as placed when the model's box already fits (so
+   *  short bridges keep their first views). */
   function fitCamera() {
-    const e0 = screenExtent();
+    const e0 = screenExtent(fitPoints.slice(0, 8));
     if (e0 && Math.max(-e0.minX, e0.maxX, -e0.minY, e0.maxY) <= kFitMargin) return;
     const dir = camera.position.clone().sub(controls.target).normalize();
     let d = camera.position.distanceTo(controls.target);
