@@ -26,6 +26,9 @@ const kNodePointSize = 7;     // px
 const kBearingSizeRatio = 0.01;  // bearing pad edge / model size when no -bearingPad was given
 const kTargetDeformationRatio = 0.1;  // auto magnification: peak drawn displacement / model size
 const kGroundArrowRatio = 0.12;  // ground arrow length at the peak acceleration / model size
+const kLabelMargin = 2;       // px kept free between two gap labels
+const kHoverRadius = 24;      // px: a joint within this distance of the pointer shows its label
+const kFitMargin = 0.9;       // first views: the model's projected extent / the canvas, at most
 
 const hex = (c) => '#' + c.toString(16).padStart(6, '0');
 
@@ -213,7 +216,7 @@ function main() {
   const makeLabel = (cls) => { const d = document.createElement('div'); d.className = 'label ' + cls; overlay.appendChild(d); return d; };
   const gaps = data.gaps.filter((g) => data.nodeIndex.has(g.a) && data.nodeIndex.has(g.b)).map((g) => ({
     ...g, ia: data.nodeIndex.get(g.a), ib: data.nodeIndex.get(g.b), el: makeLabel('gap') }));
-  gaps.forEach((g, k) => { g.el.classList.add(k % 2 ? 'below' : 'above'); g.contacts = []; });
+  gaps.forEach((g, k) => { g.preferBelow = k % 2 === 1; g.contacts = []; g.dx = g.dy = 0; });
   // each contact belongs to the nearest joint (its contactor to the joint's midpoint)
   for (const c of contacts) {
     let best = null;
@@ -358,6 +361,13 @@ function main() {
     const r = renderer.domElement.getBoundingClientRect();
     return { x: (vec.x + 1) / 2 * r.width, y: (1 - vec.y) / 2 * r.height, visible: vec.z < 1 };
   }
+  // Gap labels never overlap: at each drawing the joints are ranked (the one under the pointer,
+  // then the pinned ones, then closed joints, then by the size of the relative displacement), and
+  // each label is shown on its preferred side, else the other side (moved sideways into the canvas), only if its box intersects no
+  // box already shown; the others appear on hover or click.
+  let hovered = null;
+  const pinned = new Set();
+  const rank = (g) => (g === hovered ? 3e30 : 0) + (pinned.has(g) ? 2e30 : 0) + (g.closed ? 1e30 : 0) + Math.hypot(g.dx, g.dy);
   function placeLabels() {
     for (const g of gaps) {
       const d = (i, c) => data.disp[i][c][frame];
@@ -367,16 +377,47 @@ function main() {
       g.dy = dy;
       let text = `${g.label}: ${dx >= 0 ? '+' : ''}${dx.toFixed(3)} m long., ${dy >= 0 ? '+' : ''}${dy.toFixed(3)} m trans.`;
       const withGap = g.contacts.filter((c) => c.gap);
+      g.closed = false;
       if (withGap.length) {
         const clear = Math.min(...withGap.map((c) => c.gap[frame]));
         text += clear > 0 ? `; clear gap ${clear.toFixed(3)} m` : '; in contact';
+        g.closed = clear <= 0;
       }
       g.el.textContent = text;
       tmpA.fromArray(position, 3 * g.ia).add(tmpB.fromArray(position, 3 * g.ib)).multiplyScalar(0.5);
       const s = toScreen(tmpA);
+      g.x = s.x;
+      g.y = s.y;
+      g.onScreen = s.visible;
       g.el.style.left = `${s.x}px`;
       g.el.style.top = `${s.y}px`;
-      g.el.style.display = s.visible ? '' : 'none';
+      g.el.style.display = '';
+      g.el.style.visibility = 'hidden';
+    }
+    // one layout for all the sizes, then the boxes (the CSS transforms of .label and .below)
+    for (const g of gaps) { g.w = g.el.offsetWidth; g.h = g.el.offsetHeight; }
+    const shown = [];
+    const canvasW = renderer.domElement.getBoundingClientRect().width;
+    const overlaps = (r) => shown.some((q) => r.left < q.right + kLabelMargin && q.left < r.right + kLabelMargin &&
+      r.top < q.bottom + kLabelMargin && q.top < r.bottom + kLabelMargin);
+    for (const g of [...gaps].sort((a, b) => rank(b) - rank(a))) {
+      let box = null;
+      if (g.onScreen) {
+        for (const below of g.preferBelow ? [true, false] : [false, true]) {
+          const top = below ? g.y + 0.6 * g.h : g.y - 1.3 * g.h;
+          const dxIn = Math.max(0.5 * g.w - g.x, 0) + Math.min(canvasW - 0.5 * g.w - g.x, 0);
+          const r = { left: g.x + dxIn - 0.5 * g.w, right: g.x + dxIn + 0.5 * g.w, top, bottom: top + g.h, below, dxIn };
+          if (!overlaps(r)) { box = r; break; }
+        }
+      }
+      g.el.classList.toggle('below', box ? box.below : g.preferBelow);
+      g.el.classList.toggle('above', box ? !box.below : !g.preferBelow);
+      g.el.classList.toggle('hover', g === hovered);
+      g.el.style.visibility = '';
+      g.el.style.display = box ? '' : 'none';
+      if (box) g.el.style.left = `${g.x + box.dxIn}px`;
+      g.visible = box !== null;
+      if (box) shown.push(box);
     }
     for (const b of bearings) {
       b.label.style.display = b.failed ? '' : 'none';
@@ -397,9 +438,80 @@ function main() {
   }
   const render = () => { renderer.render(scene, camera); placeLabels(); };
   controls.addEventListener('change', render);
+  /** The joint whose label point is nearest to a pointer event, within kHoverRadius (else null). */
+  const jointAt = (ev) => {
+    const r = renderer.domElement.getBoundingClientRect();
+    let best = null;
+    let bestD = kHoverRadius;
+    for (const g of gaps) {
+      const dd = Math.hypot(g.x - (ev.clientX - r.left), g.y - (ev.clientY - r.top));
+      if (g.onScreen && dd < bestD) { bestD = dd; best = g; }
+    }
+    return best;
+  };
+  renderer.domElement.addEventListener('pointermove', (ev) => {
+    const g = jointAt(ev);
+    if (g !== hovered) { hovered = g; placeLabels(); }
+  });
+  renderer.domElement.addEventListener('pointerleave', () => { if (hovered) { hovered = null; placeLabels(); } });
+  renderer.domElement.addEventListener('click', (ev) => {
+    const g = jointAt(ev);
+    if (!g) return;
+    if (pinned.has(g)) pinned.delete(g); else pinned.add(g);
+    placeLabels();
+  });
 
   // ---- views ------------------------------------------------------------------------------
   let view = '3d';
+  // Points the first views must show: the box's corners and the ground motion's line.
+  const fitPoints = [];
+  for (let k = 0; k < 8; ++k)
+    fitPoints.push(new THREE.Vector3(k & 1 ? box.max.x : box.min.x, k & 2 ? box.max.y : box.min.y, k & 4 ? box.max.z : box.min.z));
+  if (data.ground.length) {
+    const axis = new THREE.Vector3(...groundAxis).multiplyScalar(kGroundArrowRatio * size);
+    fitPoints.push(groundOrigin.clone().sub(axis), groundOrigin.clone().add(axis));
+  }
+  /** Extent of the fit points on the screen (normalized device coordinates, -1..1), null if one is behind the camera. */
+  const screenExtent = (points = fitPoints) => {
+    camera.updateMatrixWorld();
+    const e = { minX: Infinity, maxX: -Infinity, minY: Infinity, maxY: -Infinity };
+    for (const p of points) {
+      vec.copy(p).applyMatrix4(camera.matrixWorldInverse);
+      if (vec.z >= -camera.near) return null;
+      vec.applyMatrix4(camera.projectionMatrix);
+      e.minX = Math.min(e.minX, vec.x); e.maxX = Math.max(e.maxX, vec.x);
+      e.minY = Math.min(e.minY, vec.y); e.maxY = Math.max(e.maxY, vec.y);
+    }
+    return e;
+  };
+  /** Moves the camera along its line of sight and sideways until the fit points fill kFitMargin of
+   *  the canvas's width or height, centred; kept as placed when the model's box already fits (so
+   *  short bridges keep their first views). */
+  function fitCamera() {
+    const e0 = screenExtent(fitPoints.slice(0, 8));
+    if (e0 && Math.max(-e0.minX, e0.maxX, -e0.minY, e0.maxY) <= kFitMargin) return;
+    const dir = camera.position.clone().sub(controls.target).normalize();
+    let d = camera.position.distanceTo(controls.target);
+    const tanHalf = Math.tan((camera.fov * Math.PI) / 360);
+    const right = new THREE.Vector3();
+    const upv = new THREE.Vector3();
+    for (let iter = 0; iter < 40; ++iter) {
+      camera.position.copy(controls.target).addScaledVector(dir, d);
+      camera.lookAt(controls.target);
+      const e = screenExtent();
+      if (!e) { d *= 2; continue; }
+      const ratio = Math.max((e.maxX - e.minX) / 2, (e.maxY - e.minY) / 2) / kFitMargin;
+      const mx = (e.minX + e.maxX) / 2;
+      const my = (e.minY + e.maxY) / 2;
+      if (Math.abs(ratio - 1) < 1e-3 && Math.abs(mx) < 1e-3 && Math.abs(my) < 1e-3) break;
+      right.setFromMatrixColumn(camera.matrixWorld, 0);
+      upv.setFromMatrixColumn(camera.matrixWorld, 1);
+      const hh = d * tanHalf;
+      controls.target.addScaledVector(right, 0.7 * mx * hh * camera.aspect).addScaledVector(upv, 0.7 * my * hh);
+      d *= Math.min(Math.max(ratio, 0.5), 2);
+    }
+    camera.position.copy(controls.target).addScaledVector(dir, d);
+  }
   function setView(name) {
     view = name;
     // distance at which the model's extent fills the view (perspective camera, vertical fov)
@@ -431,7 +543,13 @@ function main() {
       camera.position.copy(center).add(new THREE.Vector3(0.35 * d, -0.85 * d, 0.4 * d));
     }
     camera.lookAt(controls.target);
+    if (name !== 'joint') fitCamera();
+    camera.lookAt(controls.target);
     controls.update();
+    // plan and elevation: dragging scrolls along the bridge and the wheel zooms at the pointer
+    const flat = name === 'plan' || name === 'elevation';
+    controls.mouseButtons.LEFT = flat ? THREE.MOUSE.PAN : THREE.MOUSE.ROTATE;
+    controls.zoomToCursor = flat;
     // in plan the girders are see-through, so the bearings under them show
     memberMaterial.opacity = name === 'plan' ? 0.35 : 1;
     blockMaterial.opacity = name === 'plan' ? 0.5 : 1;
@@ -607,6 +725,40 @@ function main() {
     bearingFailedMark: (tag) => { const b = bearings.find((x) => x.tag === tag); return b ? b.edges.visible && b.label.style.display !== 'none' : null; },
     bearingCenter: (tag) => { const b = bearings.find((x) => x.tag === tag); return b ? [b.mid.x, b.mid.y, b.mid.z] : null; },
     gapTexts: () => gaps.map((g) => g.el.textContent),
+    /** Labels of the joints shown now: { label, left, top, right, bottom } in CSS px of the page. */
+    visibleLabels: () => gaps.filter((g) => g.el.style.display !== 'none').map((g) => {
+      const r = g.el.getBoundingClientRect();
+      return { label: g.label, left: r.left, top: r.top, right: r.right, bottom: r.bottom };
+    }),
+    /** Extent on the page (CSS px) of everything drawn of the model: nodes, members, pads, faces. */
+    modelExtent: () => {
+      const e = { left: Infinity, top: Infinity, right: -Infinity, bottom: -Infinity };
+      const r = renderer.domElement.getBoundingClientRect();
+      const add = (arr) => {
+        for (let k = 0; k + 2 < arr.length; k += 3) {
+          const s = toScreen(new THREE.Vector3(arr[k], arr[k + 1], arr[k + 2]));
+          e.left = Math.min(e.left, s.x + r.left); e.right = Math.max(e.right, s.x + r.left);
+          e.top = Math.min(e.top, s.y + r.top); e.bottom = Math.max(e.bottom, s.y + r.top);
+        }
+      };
+      add(position);
+      for (const m of solids) add(m.geometry.attributes.position.array);
+      for (const b of bearings) add(b.geometry.attributes.position.array);
+      for (const f of faceList) add(f.geometry.attributes.position.array);
+      for (const b of blocks) {
+        b.mesh.updateMatrixWorld();
+        const bb = new THREE.Box3().setFromObject(b.mesh);
+        for (let k = 0; k < 8; ++k)
+          add([k & 1 ? bb.max.x : bb.min.x, k & 2 ? bb.max.y : bb.min.y, k & 4 ? bb.max.z : bb.min.z]);
+      }
+      return e;
+    },
+    /** Shows the label of the joint nearest to a page point, as the pointer does (x, y CSS px). */
+    hoverAt: (x, y) => {
+      renderer.domElement.dispatchEvent(new PointerEvent('pointermove', { clientX: x, clientY: y, bubbles: true }));
+    },
+    /** Page position (CSS px) of joint k's label point. */
+    jointPoint: (k) => { const r = renderer.domElement.getBoundingClientRect(); return { x: gaps[k].x + r.left, y: gaps[k].y + r.top }; },
     groundText: () => groundLabel.textContent,
     groundAcceleration: (f) => groundVector(f),
     memberCount: () => solids.length,

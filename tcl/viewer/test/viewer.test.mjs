@@ -14,6 +14,9 @@
 //   - the plan and elevation views look along Z and Y,
 //   - the plots hold the recorded values, draw them, and every plot's time cursor follows the slider,
 //   - the screenshots (screenshot.mjs) are taken at the frame of the largest recorded contact force,
+//   - on viaducts of 10 and 100 spans (viaduct.tcl), the first view and the plan and elevation
+//     views show the whole model inside the canvas, the joint labels shown never overlap (their
+//     boxes as laid out by the browser), and a hidden joint's label shows on hover,
 // and saves screenshots in DABS_VIEWER_OUT.
 // Environment: DABS_EXE (the dabs program), DABS_VIEWER_MODULES (node_modules with
 // playwright-core), DABS_VIEWER_OUT (output folder). Run by ctest as `node --test`.
@@ -366,3 +369,72 @@ test('screenshots are taken at the largest recorded contact force', { skip }, as
   assert.equal(r.files.length, 4);
   for (const file of r.files) assert.ok(fs.statSync(file).size > 10000, file);
 });
+
+// Long viaducts: the whole model in the canvas and no two joint labels overlapping.
+async function openViaduct(spans) {
+  execFileSync(process.env.DABS_EXE, [path.join(here, 'viaduct.tcl'), out, String(spans)], { stdio: 'pipe' });
+  const p = await context.newPage();
+  const errors = [];
+  p.on('pageerror', (e) => errors.push(e.message));
+  await p.goto('file://' + path.join(out, `viaduct${spans}.html`));
+  await p.waitForFunction(() => window.dabsViewer !== undefined, null, { timeout: 30000 });
+  assert.equal(await p.evaluate(() => window.dabsViewer.ready), true, errors.join('; '));
+  return p;
+}
+
+const intersects = (a, b) => a.left < b.right && b.left < a.right && a.top < b.bottom && b.top < a.bottom;
+
+/** The model's drawn extent lies in the canvas and the labels shown are disjoint and in the canvas. */
+async function checkFitAndLabels(p, what) {
+  const [c, e, labels] = await p.evaluate(() => [window.dabsViewer.canvasRect(), window.dabsViewer.modelExtent(),
+    window.dabsViewer.visibleLabels()]);
+  assert.ok(e.left >= c.x && e.right <= c.x + c.width && e.top >= c.y && e.bottom <= c.y + c.height,
+    `${what}: model drawn over ${JSON.stringify(e)}, canvas ${JSON.stringify(c)}`);
+  // and it fills a good part of the canvas's width (a long bridge lies along the screen)
+  assert.ok(e.right - e.left >= 0.5 * c.width, `${what}: model only ${e.right - e.left} px wide of ${c.width}`);
+  assert.ok(labels.length >= 1, `${what}: no joint label shown`);
+  for (const l of labels)
+    assert.ok(l.left >= c.x - 0.5 && l.right <= c.x + c.width + 0.5, `${what}: label ${l.label} outside the canvas`);
+  for (let i = 0; i < labels.length; ++i)
+    for (let j = i + 1; j < labels.length; ++j)
+      assert.ok(!intersects(labels[i], labels[j]), `${what}: labels ${labels[i].label} and ${labels[j].label} overlap: ` +
+        JSON.stringify([labels[i], labels[j]]));
+  return labels;
+}
+
+for (const spans of [10, 100]) {
+  test(`a viaduct of ${spans} spans fits the views and its joint labels do not overlap`, { skip }, async () => {
+    const p = await openViaduct(spans);
+    try {
+      assert.equal(await p.evaluate(() => window.dabsViewer.gapTexts().length), spans - 1);
+      const frames = await p.evaluate(() => window.dabsViewer.frames);
+      // the first view as opened, then later frames (the labels shown follow the largest values)
+      const first = await checkFitAndLabels(p, 'first view');
+      assert.ok(first.length < spans - 1 || spans <= 10, 'not every label of a long viaduct fits');
+      for (const f of [Math.floor(frames / 2), frames - 1]) {
+        await p.evaluate((k) => window.dabsViewer.setFrame(k), f);
+        await checkFitAndLabels(p, `3D view, frame ${f}`);
+      }
+      for (const view of ['plan', 'elevation']) {
+        await p.evaluate((v) => window.dabsViewer.setView(v), view);
+        await checkFitAndLabels(p, view);
+      }
+      await p.evaluate(() => window.dabsViewer.setView('3d'));
+      // a joint whose label is hidden shows it when the pointer is over the joint, still without overlap
+      const texts = await p.evaluate(() => window.dabsViewer.gapTexts());
+      const shown = new Set((await p.evaluate(() => window.dabsViewer.visibleLabels())).map((l) => l.label));
+      const hidden = texts.map((t) => t.split(':')[0]).findIndex((name) => !shown.has(name));
+      if (hidden >= 0) {
+        const q = await p.evaluate((k) => window.dabsViewer.jointPoint(k), hidden);
+        await p.mouse.move(q.x, q.y);
+        const after = await checkFitAndLabels(p, 'hover');
+        const name = texts[hidden].split(':')[0];
+        assert.ok(after.some((l) => l.label === name), `hovering joint ${name} does not show its label`);
+      }
+      await p.mouse.move(0, 0);
+      await p.screenshot({ path: path.join(out, `viaduct${spans}.png`) });
+    } finally {
+      await p.close();
+    }
+  });
+}
