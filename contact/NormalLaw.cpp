@@ -29,7 +29,8 @@ void NormalLaw::Params::validate() const {
       break;
     case ImpactLaw::Hertz:
       if (!(n > 0.0) || !std::isfinite(n)) throw InputError("n", "must be positive and finite");
-      if (e != 1.0) throw InputError("e", "must be 1: the hertz law has no damping (use -law hertzdamp)");
+      if (e != 1.0)
+        throw InputError("e", "must be 1: the hertz law has no damping (use -law hertzdamp)");
       break;
     case ImpactLaw::HertzDamp:
       if (!(n > 0.0) || !std::isfinite(n)) throw InputError("n", "must be positive and finite");

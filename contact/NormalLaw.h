@@ -42,7 +42,8 @@ enum class ImpactLaw : std::uint8_t { Kelvin, Hertz, HertzDamp, Jankowski };
 /// Sign conventions: gap g > 0 open, g < 0 penetration; gdot = dg/dt (< 0 approaching). N is
 /// compressive-positive. No tension: where the law would pull (dashpot while separating) N = 0,
 /// and N = 0 when open. closedForce() is the law without the clip (the element's held closed
-/// branch); for the power laws it continues to g > 0 as the odd extension delta |delta|^(n-1).
+/// branch); for the power laws it continues to g > 0 as the odd extension delta |delta|^(n-1)
+/// (hertzdamp's damping term likewise; jankowski's coefficient c uses |delta|^(1/4)).
 class NormalLaw {
  public:
   struct Params {

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
-// The node-to-surface element with each impact law (NormalLaw): exact tangents against central
-// differences while approaching and separating, friction stick and slip with the law's normal
+// NodeToSurfaceContact3d with each impact law (NormalLaw), apart from the Kelvin-law cases of
+// NodeToSurfaceContact3dTest.cpp: exact tangents against central differences while approaching and
+// separating, friction stick and slip with the law's normal
 // force, and the release step's energy.
 #include <gtest/gtest.h>
 
@@ -93,7 +94,7 @@ void checkTangents(ImpactLaw law, double vz, double mu, double tangential) {
       << NormalLaw::name(law) << " vz " << vz;
 }
 
-TEST(ImpactLawsTest, TangentsMatchFiniteDifferencesApproachingAndSeparating) {
+TEST(NodeToSurfaceContact3dTest, LawTangentsMatchFiniteDifferencesApproachingAndSeparating) {
   for (ImpactLaw law : {ImpactLaw::Hertz, ImpactLaw::HertzDamp, ImpactLaw::Jankowski})
     for (double vz : {-0.2, 0.0, 0.05}) {
       checkTangents(law, vz, 0.0, 0.0);     // frictionless
@@ -102,7 +103,7 @@ TEST(ImpactLawsTest, TangentsMatchFiniteDifferencesApproachingAndSeparating) {
     }
 }
 
-TEST(ImpactLawsTest, DampingTermDependsOnThePenetration) {
+TEST(NodeToSurfaceContact3dTest, LawDampingTermDependsOnThePenetration) {
   // hertzdamp c_h delta^n deltadot and jankowski c delta^(1/4) deltadot: while approaching the
   // stiffness tangent differs from the spring's alone, d(k delta^n)/d delta.
   for (ImpactLaw law : {ImpactLaw::HertzDamp, ImpactLaw::Jankowski}) {
@@ -130,7 +131,7 @@ TEST(ImpactLawsTest, DampingTermDependsOnThePenetration) {
   EXPECT_FALSE(make(lawParams(ImpactLaw::Hertz))->hasNonSymmetricTangent());
 }
 
-TEST(ImpactLawsTest, JankowskiDampsOnlyWhileApproaching) {
+TEST(NodeToSurfaceContact3dTest, LawJankowskiDampsOnlyWhileApproaching) {
   auto e = make(lawParams(ImpactLaw::Jankowski));
   TrialState s = zeroState(15);
   s.u(2) = -0.13;
@@ -140,7 +141,7 @@ TEST(ImpactLawsTest, JankowskiDampsOnlyWhileApproaching) {
   EXPECT_EQ(Eigen::MatrixXd(e->dampingTangent()).norm(), 0.0);
 }
 
-TEST(ImpactLawsTest, FrictionSticksAndSlidesOnTheLawsNormalForce) {
+TEST(NodeToSurfaceContact3dTest, LawFrictionSticksAndSlidesOnTheLawsNormalForce) {
   for (ImpactLaw law : {ImpactLaw::Hertz, ImpactLaw::HertzDamp, ImpactLaw::Jankowski}) {
     auto e = make(lawParams(law, 0.5));
     TrialState s = zeroState(15);
@@ -162,7 +163,7 @@ TEST(ImpactLawsTest, FrictionSticksAndSlidesOnTheLawsNormalForce) {
   }
 }
 
-TEST(ImpactLawsTest, ReleaseStepForceGivesBackOnlyTheStoredEnergy) {
+TEST(NodeToSurfaceContact3dTest, LawReleaseStepForceGivesBackOnlyTheStoredEnergy) {
   for (ImpactLaw law : {ImpactLaw::Hertz, ImpactLaw::HertzDamp, ImpactLaw::Jankowski}) {
     auto e = make(lawParams(law));
     TrialState s = zeroState(15);
@@ -187,7 +188,7 @@ TEST(ImpactLawsTest, ReleaseStepForceGivesBackOnlyTheStoredEnergy) {
   }
 }
 
-TEST(ImpactLawsTest, HeldClosedBranchEvaluatesTheLawUnclipped) {
+TEST(NodeToSurfaceContact3dTest, LawHeldClosedBranchEvaluatesTheLawUnclipped) {
   // Held in contact, a trial that opens the gap still gets the law's force (odd extension: a
   // pull of k g^n), smooth for Newton on the held equations.
   auto e = make(lawParams(ImpactLaw::Hertz));
@@ -201,7 +202,7 @@ TEST(ImpactLawsTest, HeldClosedBranchEvaluatesTheLawUnclipped) {
   EXPECT_EQ(e->checkHeldStatus(), elements::Element::HeldStatus::Switched);
 }
 
-TEST(ImpactLawsTest, DescribeNamesTheLaw) {
+TEST(NodeToSurfaceContact3dTest, LawDescribeNamesTheLaw) {
   EXPECT_NE(
       make(lawParams(ImpactLaw::HertzDamp))->describe().find("law hertzdamp K 100000 n 1.3 v0 0.3"),
       std::string::npos);
