@@ -24,19 +24,24 @@ using Vec3 = std::array<AD, 3>;
 
 AD dot(const Eigen::Vector3d& a, const Vec3& b) { return a(0) * b[0] + a(1) * b[1] + a(2) * b[2]; }
 
-NormalLaw::Params normalParams(const NodeToSurfaceParams& p) { return {p.K, p.e, p.M1, p.M2}; }
+NormalLaw::Params normalParams(const NodeToSurfaceParams& p) {
+  return {p.K, p.e, p.M1, p.M2, p.law, p.n, p.v0};
+}
 CoulombFriction::Params frictionParams(const NodeToSurfaceParams& p) {
-  return {p.K, p.et, p.muS, p.muK, p.M1, p.M2};
+  return {p.Kt > 0.0 ? p.Kt : p.K, p.et, p.muS, p.muK, p.M1, p.M2};
 }
 
 }  // namespace
 
 void NodeToSurfaceParams::validate() const {
-  normalParams(*this).validate();
+  const NodeToSurfaceParams& params = *this;
+  normalParams(params).validate();
+  if (!(Kt >= 0.0) || !std::isfinite(Kt))
+    throw InputError("Kt", "must be positive and finite (0: the value of K)");
   try {
     frictionParams(*this).validate();
   } catch (const InputError& err) {
-    if (err.field() == "Kt") throw InputError("K", err.reason());
+    if (err.field() == "Kt") throw InputError(params.Kt > 0.0 ? "Kt" : "K", err.reason());
     throw;
   }
   if (!(search > 0.0)) throw InputError("search", "must be positive");
@@ -150,7 +155,7 @@ elements::Element::HeldStatus NodeToSurfaceContact3d<Ndf>::checkHeldStatus() {
   Branches next = natural_;
   if (normalAgrees) {
     next.normal = held_.normal;
-  } else if (normalCycles && normal_.damping() > 0.0) {
+  } else if (normalCycles && normal_.jumpsAtTouch()) {
     // Kelvin inside the face against no force (open) or the release force (which is zero at the
     // face) outside it: the jump of the dashpot force at g = 0.
     const auto free = [](NormalBranch b) {
@@ -170,7 +175,7 @@ elements::Element::HeldStatus NodeToSurfaceContact3d<Ndf>::checkHeldStatus() {
 
 template <int Ndf>
 bool NodeToSurfaceContact3d<Ndf>::hasNonSymmetricTangent() const {
-  return friction_.active() || normal_.damping() > 0.0;
+  return friction_.active() || normal_.velocityDependent();
 }
 
 template <int Ndf>
@@ -319,26 +324,21 @@ Status NodeToSurfaceContact3d<Ndf>::update(const elements::Kinematics& kin) {
   switch (branch) {
     case NormalBranch::Open: Nn = AD(0.0); break;
     case NormalBranch::Kelvin:
-      if (holding_) Nn = -normal_.stiffness() * g - normal_.damping() * gdot;
+      if (holding_) Nn = normal_.closedForce(g, gdot);
       break;
     case NormalBranch::Spring: Nn = -normal_.stiffness() * g; break;
-    case NormalBranch::Release: {
-      const double Nr = std::min(committed_.force(0), -normal_.stiffness() * committed_.gap);
-      // A held release branch inside the face goes on along its tangent at g = 0, N = N_r g /
-      // g_n (the release force has a pole at g = g_n): smooth and monotone, so Newton on the
-      // held equations cannot cycle between the release force and a closed state.
-      if (holding_ && g.value() < 0.0)
-        Nn = Nr * g / committed_.gap;
-      else
-        Nn = -Nr * g / (g - committed_.gap);
+    case NormalBranch::Release:
+      // A held release branch inside the face goes on along its tangent at g = 0 (kelvin: N =
+      // N_r g / g_n; the release force has a pole at g = g_n): smooth and monotone, so Newton on
+      // the held equations cannot cycle between the release force and a closed state.
+      Nn = normal_.releaseForce(g, committed_.gap, committed_.force(0), holding_);
       break;
-    }
   }
   const bool releaseForce = branch == NormalBranch::Release;
   t.gap = g.value();
   // Dashpot power: (N - spring force) times the approach rate -gdot; when N is clipped this is
   // the released spring energy, so the energy balance stays closed.
-  t.dashpotPower = (Nn.value() - normal_.stiffness() * std::max(-g.value(), 0.0)) * (-gdot.value());
+  t.dashpotPower = (Nn.value() - normal_.elasticForce(g.value())) * (-gdot.value());
   if (releaseForce) {
     t.status = ContactStatus::Open;
     t.stickValid = false;
@@ -463,10 +463,14 @@ std::optional<Eigen::VectorXd> NodeToSurfaceContact3d<Ndf>::response(
 template <int Ndf>
 std::string NodeToSurfaceContact3d<Ndf>::describe() const {
   std::ostringstream out;
-  out << Base::describe() << " K " << params_.K << " e " << params_.e << " et " << params_.et
-      << " mu_s " << params_.muS << " mu_k " << params_.muK << " C " << normal_.damping() << " Ct "
-      << friction_.damping() << " search " << params_.search << " normal (" << frame_.n.transpose()
-      << ")";
+  out << Base::describe() << " law " << NormalLaw::name(params_.law) << " K " << params_.K;
+  if (params_.law == ImpactLaw::Hertz || params_.law == ImpactLaw::HertzDamp)
+    out << " n " << params_.n;
+  if (params_.law == ImpactLaw::HertzDamp) out << " v0 " << params_.v0;
+  if (params_.Kt > 0.0) out << " Kt " << params_.Kt;
+  out << " e " << params_.e << " et " << params_.et << " mu_s " << params_.muS << " mu_k "
+      << params_.muK << " C " << normal_.damping() << " Ct " << friction_.damping() << " search "
+      << params_.search << " normal (" << frame_.n.transpose() << ")";
   return out.str();
 }
 

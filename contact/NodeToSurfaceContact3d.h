@@ -19,18 +19,24 @@ namespace dabs::contact {
 enum class ContactStatus : int { Open = 0, Stick = 1, Slide = 2 };
 
 /// Parameters of a node-to-surface pair (Tcl: `element nodeToSurface tag k a b c d -K K ?-e e?
-/// ?-et et? ?-mu_s mus? ?-mu_k muk? ?-masses M1 M2? ?-search dist?`).
+/// ?-law kelvin|hertz|hertzdamp|jankowski? ?-n n? ?-v0 v0? ?-Kt Kt? ?-et et? ?-mu_s mus?
+/// ?-mu_k muk? ?-masses M1 M2? ?-search dist?`).
 struct NodeToSurfaceParams {
-  double K = 0.0;    ///< normal (and tangential) penalty stiffness, EA/L of the contactor body
-  double e = 1.0;    ///< normal restitution in [0, 1]
+  double K = 0.0;  ///< normal penalty stiffness: EA/L of the contactor body (kelvin), or the
+                   ///< power laws' k_h / beta (force/length^n); see NormalLaw
+  double e = 1.0;  ///< normal restitution (kelvin [0, 1], hertzdamp and jankowski (0, 1])
+  ImpactLaw law = ImpactLaw::Kelvin;  ///< normal impact law (NormalLaw)
+  double n = 1.5;                     ///< exponent of hertz and hertzdamp
+  double v0 = 0.0;                    ///< hertzdamp: approach speed the damping is tuned to
+  double Kt = 0.0;   ///< tangential penalty stiffness (force/length); 0: the value of K
   double et = 1.0;   ///< tangential restitution in [0, 1]
   double muS = 0.0;  ///< static friction coefficient
   double muK = 0.0;  ///< kinetic friction coefficient (<= muS)
   double M1 = 0.0;   ///< masses of the two bodies, for the dashpots (needed when e < 1 or et < 1)
   double M2 = 0.0;
   double search = std::numeric_limits<double>::infinity();  ///< search distance (> 0)
-  /// Throws InputError{field, reason} (fields as in the Tcl command: K, e, et, mu_s, mu_k, M1, M2,
-  /// search).
+  /// Throws InputError{field, reason} (fields as in the Tcl command: K, e, n, v0, Kt, et, mu_s,
+  /// mu_k, M1, M2, search).
   void validate() const;
 };
 
@@ -74,14 +80,15 @@ struct FarTest {
 /// of girders", EESD 31:1891-1913): a contactor node k against a target quad a, b, c, d.
 ///
 /// Model. While k penetrates the quad (gap g < 0, projection on the quad), the normal force is
-/// N = max(0, -K g - C gdot) (NormalLaw: penalty spring plus restitution dashpot, never pulling)
-/// and the tangential force follows CoulombFriction (spring Kt = K to a stick point kept in the
-/// state plus a tangential dashpot, the sum bounded by the static/kinetic cone). The force on k is
-/// R = N m + F1 t1 + F2 t2, where m = dg/dx_k = n - grad_s(z_surface) is the normal of the current
-/// surface scaled so that m.n = 1 (m = n for a face that stays parallel to its reference plane);
-/// the target nodes receive -N_i(p) R, the bilinear shape functions at the projection p (static
-/// equilibrium by linear interpolation at p). The frictionless, undamped part is the gradient of
-/// K g^2 / 2, so its tangent is symmetric.
+/// N = max(0, -K g - C gdot) (NormalLaw: penalty spring plus restitution dashpot, never pulling;
+/// or another impact law of NormalLaw: hertz, hertzdamp, jankowski) and the tangential force
+/// follows CoulombFriction (spring Kt = K to a stick point kept in the state plus a tangential
+/// dashpot, the sum bounded by the static/kinetic cone). The force on k is R = N m + F1 t1 + F2 t2,
+/// where m = dg/dx_k = n - grad_s(z_surface) is the normal of the current surface scaled so that
+/// m.n = 1 (m = n for a face that stays parallel to its reference plane); the target nodes receive
+/// -N_i(p) R, the bilinear shape functions at the projection p (static equilibrium by linear
+/// interpolation at p). The frictionless, undamped part is the gradient of K g^2 / 2, so its
+/// tangent is symmetric.
 ///
 /// Assumptions and conventions:
 /// - Small rotations of the target: the surface frame is fixed at the reference geometry
@@ -99,7 +106,8 @@ struct FarTest {
 ///   N = -N_r g / (g - g_n), N_r = min(N_n, K delta_n), so that the step's trapezoid work is the
 ///   energy of linear unloading, 0.5 N_r delta_n; without it a large step on a stiff contact gains
 ///   energy under the trapezoidal rule. The force is zero at g = 0 and slightly tensile (status
-///   open) for that one step.
+///   open) for that one step. The power laws (spring K delta^n) use the same idea with their
+///   stored energy N_r delta_n / (n + 1) (NormalLaw::releaseForce), tensile already at g = 0.
 ///
 /// The tangent is exact (forward-mode automatic differentiation of the force, including the moving
 /// load point and the return map); it is non-symmetric when friction or a dashpot is on.
@@ -265,8 +273,10 @@ class NodeToSurfaceContact3d : public elements::FixedSizeElement<5, Ndf, 0u> {
   };
   std::unique_ptr<Tangents> tangents_;
 
-  /// Branch of the normal law: no force; the Kelvin force -K g - C gdot; the spring alone -K g
-  /// (the set-valued selection at first touch, see checkHeldStatus); the release force.
+  /// Branch of the normal law: no force; the law's closed force unclipped (Kelvin: -K g - C gdot;
+  /// the name stays for every law); the spring alone -K g (the set-valued selection at first
+  /// touch, see checkHeldStatus; only for kelvin with a dashpot, NormalLaw::jumpsAtTouch: the
+  /// power laws are continuous at the touch); the release force.
   enum class NormalBranch : std::uint8_t { Open, Kelvin, Spring, Release };
   struct Branches {
     NormalBranch normal = NormalBranch::Open;

@@ -56,7 +56,8 @@ std::unique_ptr<materials::UniaxialMaterial> parseBumper(Runtime& /*rt*/, ArgRea
 
 // --- contact options shared by nodeToSurface and pounding -----------------------------------
 
-/// Reads -K K | -EAL E A L, -e, -et, -mu_s, -mu_k, -masses M1 M2, -search and validates them.
+/// Reads -K K | -EAL E A L, -law, -n, -v0, -Kt, -e, -et, -mu_s, -mu_k, -masses M1 M2, -search
+/// and validates them.
 /// When only one friction coefficient is given the other takes its value. A validation error
 /// points at the option it is about (the reader recorded where each was read).
 NodeToSurfaceParams readContactOptions(ArgReader& args) {
@@ -71,6 +72,36 @@ NodeToSurfaceParams readContactOptions(ArgReader& args) {
     if (!(v[2] > 0.0)) args.failArgument("-EAL", 2, "the length L must be positive");
     p.K = v[0] * v[1] / v[2];  // axial stiffness of the contactor body (Zhu et al. 2002)
   }
+  if (const auto law = args.optionalWordOption("-law")) {
+    if (*law == "kelvin")
+      p.law = contact::ImpactLaw::Kelvin;
+    else if (*law == "hertz")
+      p.law = contact::ImpactLaw::Hertz;
+    else if (*law == "hertzdamp")
+      p.law = contact::ImpactLaw::HertzDamp;
+    else if (*law == "jankowski")
+      p.law = contact::ImpactLaw::Jankowski;
+    else
+      args.failArgument("-law",
+                        "expected kelvin, hertz, hertzdamp or jankowski, got \"" + *law + "\"");
+  }
+  const bool power = p.law == contact::ImpactLaw::Hertz || p.law == contact::ImpactLaw::HertzDamp;
+  if (const auto n = args.optionalOption("-n")) {
+    if (!power) args.failArgument("-n", "is the exponent of -law hertz or hertzdamp only");
+    p.n = *n;
+  }
+  if (const auto v0 = args.optionalOption("-v0")) {
+    if (p.law != contact::ImpactLaw::HertzDamp)
+      args.failArgument("-v0", "is the approach speed of -law hertzdamp only");
+    p.v0 = *v0;
+  } else if (p.law == contact::ImpactLaw::HertzDamp) {
+    args.fail("-law hertzdamp needs -v0 v0 (the approach speed its damping is tuned to)");
+  }
+  if (p.law != contact::ImpactLaw::Kelvin && EAL)
+    args.failArgument("-EAL", "gives a linear stiffness; -law " +
+                                  std::string(contact::NormalLaw::name(p.law)) +
+                                  " needs -K in force/length^n");
+  p.Kt = args.option("-Kt", 0.0);
   p.e = args.option("-e", 1.0);
   p.et = args.option("-et", 1.0);
   const auto muS = args.optionalOption("-mu_s");
@@ -309,7 +340,8 @@ void contactSteppingCmd(Runtime& rt, ArgReader& args) {
 }
 
 constexpr const char* kContactOptions =
-    "-K K | -EAL E A L ?-e e? ?-et et? ?-mu_s mus? ?-mu_k muk? ?-masses M1 M2? ?-search dist?";
+    "-K K | -EAL E A L ?-law kelvin|hertz|hertzdamp|jankowski? ?-n n? ?-v0 v0? ?-Kt Kt? ?-e e? "
+    "?-et et? ?-mu_s mus? ?-mu_k muk? ?-masses M1 M2? ?-search dist?";
 
 const std::string kNodeToSurfaceUsage =
     std::string("element nodeToSurface tag cNode a b c d ") + kContactOptions;

@@ -121,5 +121,51 @@ TEST_F(ContactParsersTest, ContactSteppingErrorsPointAtTheOption) {
   EXPECT_TRUE(has(ok("contactStepping"), "on 0"));
 }
 
+TEST_F(ContactParsersTest, ImpactLawErrorsPointAtTheArgument) {
+  twoFaces();
+  const std::string cmd = "element nodeToSurface 1 21 11 12 13 14 -K 1e9";
+  // -law value is argument 11, the next option's value 13, the one after 15.
+  std::string m = error(cmd + " -law hunt");
+  EXPECT_TRUE(
+      has(m, "argument 11 (-law) expected kelvin, hertz, hertzdamp or jankowski, got \"hunt\""));
+  EXPECT_TRUE(has(m, "usage: element nodeToSurface"));
+  m = error(cmd + " -law hertz -n -1.5");
+  EXPECT_TRUE(has(m, "argument 13: n must be positive and finite, got \"-1.5\""));
+  m = error(cmd + " -law hertz -e 0.6");
+  EXPECT_TRUE(has(
+      m,
+      "argument 13: e must be 1: the hertz law has no damping (use -law hertzdamp), got \"0.6\""));
+  m = error(cmd + " -law hertzdamp -e 0.6");
+  EXPECT_TRUE(has(m, "-law hertzdamp needs -v0 v0"));
+  m = error(cmd + " -law hertzdamp -v0 0 -e 0.6");
+  EXPECT_TRUE(has(m, "argument 13: v0 must be positive and finite"));
+  m = error(cmd + " -law hertzdamp -v0 1 -e 0");
+  EXPECT_TRUE(has(m, "argument 15: e must be in (0, 1] for hertzdamp;"));
+  m = error(cmd + " -law jankowski -e 0.6");
+  EXPECT_TRUE(has(m, "M1 must be positive for the jankowski law (-masses M1 M2)"));
+  m = error(cmd + " -law jankowski -e 1.2 -masses 1 2");
+  EXPECT_TRUE(has(m, "argument 13: e must be in (0, 1] for jankowski, got \"1.2\""));
+  m = error(cmd + " -law kelvin -n 1.5");
+  EXPECT_TRUE(has(m, "argument 13 (-n) is the exponent of -law hertz or hertzdamp only"));
+  m = error(cmd + " -law jankowski -v0 1 -masses 1 2");
+  EXPECT_TRUE(has(m, "argument 13 (-v0) is the approach speed of -law hertzdamp only"));
+  m = error("element nodeToSurface 1 21 11 12 13 14 -EAL 2e8 0.5 40 -law hertz");
+  EXPECT_TRUE(has(m, "(-EAL) gives a linear stiffness; -law hertz needs -K in force/length^n"));
+  m = error(cmd + " -law hertz -Kt -1");
+  EXPECT_TRUE(has(m, "argument 13: Kt must be positive and finite"));
+  EXPECT_EQ(elementCount(), 0);
+  ok(cmd + " -law hertz -n 1.5 -Kt 1e6 -mu_s 0.3");
+  ok("element nodeToSurface 2 21 11 12 13 14 -K 1e9 -law hertzdamp -v0 0.5 -e 0.7");
+  ok("element nodeToSurface 3 21 11 12 13 14 -K 1e9 -law jankowski -e 0.65 -masses 1e3 2e3");
+  ok("element nodeToSurface 4 21 11 12 13 14 -K 1e6 -law kelvin -e 0.65 -masses 1e3 2e3");
+  EXPECT_EQ(elementCount(), 4);
+  // pounding shares the options.
+  const std::string sides = " -side1 {11} {11 12 13 14} -side2 {21} {21 24 23 22}";
+  m = error("pounding 100" + sides + " -K 1e9 -law jankowski -e 0.6");
+  EXPECT_TRUE(has(m, "M1 must be positive for the jankowski law"));
+  EXPECT_EQ(elementCount(), 4);
+  EXPECT_EQ(ok("pounding 100 -K 1e9 -law hertzdamp -v0 0.5 -e 0.7" + sides), "100 101");
+}
+
 }  // namespace
 }  // namespace dabs::tcl
