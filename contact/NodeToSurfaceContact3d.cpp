@@ -95,8 +95,7 @@ void NodeToSurfaceContact3d<Ndf>::clearForces() {
 
 template <int Ndf>
 void NodeToSurfaceContact3d<Ndf>::commitState() {
-  holding_ = false;
-  switches_ = triedNormal_ = triedSliding_ = 0;
+  releaseHold();
   if (settledFar_) {  // the states differ in the gap alone
     committed_.gap = trial_.gap;
     return;
@@ -107,8 +106,7 @@ void NodeToSurfaceContact3d<Ndf>::commitState() {
 
 template <int Ndf>
 void NodeToSurfaceContact3d<Ndf>::revertToLastCommit() {
-  holding_ = false;
-  switches_ = triedNormal_ = triedSliding_ = 0;
+  releaseHold();
   if (settledFar_) {
     trial_.gap = committed_.gap;
     return;
@@ -121,8 +119,7 @@ template <int Ndf>
 void NodeToSurfaceContact3d<Ndf>::revertToStart() {
   trial_ = committed_ = initial_;
   settledFar_ = false;
-  holding_ = false;
-  switches_ = triedNormal_ = triedSliding_ = 0;
+  releaseHold();
   forcesZero_ = false;
   clearForces();
 }
@@ -141,7 +138,7 @@ void NodeToSurfaceContact3d<Ndf>::holdStatus() {
 template <int Ndf>
 elements::Element::HeldStatus NodeToSurfaceContact3d<Ndf>::checkHeldStatus() {
   if (!holding_) return HeldStatus::Agrees;
-  const bool contact = held_.normal == NormalBranch::Kelvin || held_.normal == NormalBranch::Spring;
+  const bool contact = inContact(held_.normal);
   const bool normalAgrees =
       held_.normal == NormalBranch::Spring ? springAgrees_ : held_.normal == natural_.normal;
   // A switch back to a branch held before in this step would cycle.

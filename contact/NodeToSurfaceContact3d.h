@@ -287,6 +287,11 @@ class NodeToSurfaceContact3d : public elements::FixedSizeElement<5, Ndf, 0u> {
   static std::uint8_t bit(NormalBranch b) noexcept {
     return static_cast<std::uint8_t>(1u << static_cast<unsigned>(b));
   }
+  /// Commit and revert end the step: nothing is held and no branch has been tried.
+  void releaseHold() noexcept {
+    holding_ = false;
+    switches_ = triedNormal_ = triedSliding_ = 0;
+  }
   static bool inContact(NormalBranch b) noexcept {
     return b == NormalBranch::Kelvin || b == NormalBranch::Spring;
   }
