@@ -13,6 +13,7 @@
 #include "materials/Concrete01.h"
 #include "materials/Concrete02.h"
 #include "materials/ENT.h"
+#include "materials/Fatigue.h"
 #include "materials/Elastic.h"
 #include "materials/ElasticPP.h"
 #include "materials/ElasticPPGap.h"
@@ -179,6 +180,26 @@ MaterialPtr parseSeries(ArgReader& args, int tag, const domain::ModelBuilder& bu
   return std::make_unique<Series>(tag, p);
 }
 
+MaterialPtr parseFatigue(ArgReader& args, int tag, const domain::ModelBuilder& builder) {
+  Fatigue::Params p;
+  const int matTag = args.integer("matTag");
+  try {
+    p.material = &builder.uniaxialMaterial(matTag);
+  } catch (const InputError&) {
+    args.failArgument("matTag", "uniaxialMaterial " + std::to_string(matTag) + " does not exist");
+  }
+  // OpenSees' option names and defaults (OpenSees/OpenSees:SRC/material/uniaxial/
+  // FatigueMaterial.cpp, OPS_FatigueMaterial); unknown options are refused, not skipped.
+  p.E0 = args.option("-E0", p.E0);
+  p.m = args.option("-m", p.m);
+  p.minStrain = args.option("-min", p.minStrain);
+  p.maxStrain = args.option("-max", p.maxStrain);
+  p.Dmax = args.option("-Dmax", p.Dmax);
+  args.finish();
+  p.validate();
+  return std::make_unique<Fatigue>(tag, p);
+}
+
 }  // namespace uniaxial
 
 namespace {
@@ -212,6 +233,9 @@ constexpr UniaxialEntry kRows[] = {
      &composite<uniaxial::parseParallel>},
     {"Series", "uniaxialMaterial Series tag matTag1 matTag2 ...",
      &composite<uniaxial::parseSeries>},
+    {"Fatigue",
+     "uniaxialMaterial Fatigue tag matTag ?-E0 E0? ?-m m? ?-min min? ?-max max? ?-Dmax D?",
+     &composite<uniaxial::parseFatigue>},
 };
 
 }  // namespace

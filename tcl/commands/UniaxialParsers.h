@@ -28,5 +28,6 @@ MaterialPtr parseENT(ArgReader& args, int tag);
 /// Components are looked up in `builder` and cloned.
 MaterialPtr parseParallel(ArgReader& args, int tag, const domain::ModelBuilder& builder);
 MaterialPtr parseSeries(ArgReader& args, int tag, const domain::ModelBuilder& builder);
+MaterialPtr parseFatigue(ArgReader& args, int tag, const domain::ModelBuilder& builder);
 
 }  // namespace dabs::tcl::uniaxial
