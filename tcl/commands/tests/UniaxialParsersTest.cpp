@@ -111,7 +111,7 @@ TEST_F(UniaxialParsersTest, TableHasEveryTypeOnceWithItsUsage) {
   }
   EXPECT_EQ(types, (std::set<std::string>{"Elastic", "ElasticPP", "ElasticPPGap", "Steel01",
                                           "Steel02", "Concrete01", "Concrete02", "Viscous", "ENT",
-                                          "Parallel", "Series"}));
+                                          "Parallel", "Series", "Fatigue"}));
 }
 
 TEST_F(UniaxialParsersTest, Steel02DefaultsAndOptionalGroups) {
