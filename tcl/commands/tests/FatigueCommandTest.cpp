@@ -38,6 +38,25 @@ TEST_F(FatigueCommandTest, OptionsInAnyOrderAndStrainLimit) {
   EXPECT_DOUBLE_EQ(number("getTangent"), 1e-8 * 200000.0);
 }
 
+TEST_F(FatigueCommandTest, ZeroLengthSpringFailsAtTheStrainLimitInAnAnalysis) {
+  // The Fatigue spring (1-2) in series with an elastic one (2-3) whose end is pulled by 0.01 a
+  // step: the second step crosses -max, the spring drops its force, the elastic one takes the
+  // whole displacement. Damage and failure are recorded through zeroLength's material responses.
+  ok("node 1 0; node 2 0; node 3 0; fix 1 1; uniaxialMaterial Fatigue 2 1 -max 0.01");
+  ok("element zeroLength 1 1 2 -mat 2 -dir 1; element zeroLength 2 2 3 -mat 1 -dir 1");
+  ok("timeSeries Linear 1; pattern Plain 1 1 { sp 3 1 0.04 }");
+  ok("constraints Transformation; numberer Plain; system BandGeneral; test NormDispIncr 1e-12 20");
+  ok("algorithm Newton; integrator LoadControl 0.25; analysis Static");
+  EXPECT_EQ(ok("analyze 1"), "0");
+  EXPECT_DOUBLE_EQ(number("nodeDisp 2 1"), 0.005);
+  EXPECT_DOUBLE_EQ(number("eleResponse 1 material 1 damage"), 0.0);
+  EXPECT_DOUBLE_EQ(number("eleResponse 1 material 1 failure"), 0.0);
+  EXPECT_EQ(ok("analyze 1"), "0");
+  EXPECT_DOUBLE_EQ(number("eleResponse 1 material 1 damage"), 1.0);
+  EXPECT_DOUBLE_EQ(number("eleResponse 1 material 1 failure"), 1.0);
+  EXPECT_NEAR(number("nodeDisp 2 1"), 0.02, 1e-8);
+}
+
 TEST_F(FatigueCommandTest, BadInputNamesTheArgumentAndLeavesNoMaterial) {
   struct Case {
     const char* script;
