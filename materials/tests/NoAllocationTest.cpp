@@ -14,6 +14,7 @@
 #include "materials/Elastic.h"
 #include "materials/ElasticPP.h"
 #include "materials/ElasticPPGap.h"
+#include "materials/Fatigue.h"
 #include "materials/Parallel.h"
 #include "materials/Series.h"
 #include "materials/Steel01.h"
@@ -62,6 +63,11 @@ TEST(NoAllocationTest, SetTrialStrainAndCommitDoNotAllocate) {
   all.push_back(std::make_unique<ENT>(9, ENT::Params{1000.0}));
   all.push_back(std::make_unique<Parallel>(10, Parallel::Params{{&steel, &spring}, {}}));
   all.push_back(std::make_unique<Series>(11, Series::Params{{&steel, &spring}}));
+  Fatigue::Params fatigue;
+  fatigue.material = &steel;
+  fatigue.E0 = 0.012;  // fails along the path (as in FatigueTest): the failed branch is checked too
+  fatigue.m = -0.5;
+  all.push_back(std::make_unique<Fatigue>(12, fatigue));
   const long beforeClone = gAllocations.load();
   auto probe = steel.clone();  // proves the counting operator new is the one in use
   EXPECT_GT(gAllocations.load() - beforeClone, 0);
