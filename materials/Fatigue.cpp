@@ -138,7 +138,8 @@ Fatigue::State Fatigue::advance(double strain, double wrappedStress) const {
         break;
     }
     s.pseudoDamage = pseudo;
-    // Failure between peaks only in tension (OpenSees' rule: a crack opens under tension).
+    // Failure between peaks only under tensile wrapped stress (the rule of OpenSees
+    // FatigueMaterial::commitState); in compression the damage waits for the next counted peak.
     if (pseudo > params_.Dmax && wrappedStress > 0.0) {
       s.damage = pseudo;
       s.failed = true;
