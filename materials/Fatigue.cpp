@@ -139,7 +139,7 @@ Fatigue::State Fatigue::advance(double strain, double wrappedStress) const {
     }
     s.pseudoDamage = pseudo;
     // Failure between peaks only under tensile wrapped stress (the rule of OpenSees
-    // FatigueMaterial::commitState); in compression the damage waits for the next counted peak.
+    // FatigueMaterial::commitState); in compression failure waits for tension or a counted peak.
     if (pseudo > params_.Dmax && wrappedStress > 0.0) {
       s.damage = pseudo;
       s.failed = true;
