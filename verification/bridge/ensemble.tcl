@@ -30,12 +30,12 @@
 #                Highway Bridges, Part V, 2002), the design limit of bridge.tcl's report
 #   bearing-300  >= 300 %: bearing failure (the failure strain of bridge.tcl's report)
 #   opening      peak longitudinal opening of a joint > 0.05 m: the expansion joint, made for the
-#                0.05 m gap, accommodates +- the gap (bridge.tcl serviceMaxOpening: our limit, the
+#                0.05 m gap, accommodates +- the gap (bridge.tcl jointGap: our limit, the
 #                paper's criterion has no numbers)
 #   unseating    peak longitudinal opening > 0.90 m: the minimum seat length S_EM = 0.7 + 0.005 L
 #                (m, L = 40 m span; JRA 2002 Part V)
 #   residual     residual longitudinal or transverse offset of a joint at the end of the analysis
-#                > 0.05 m (bridge.tcl serviceMaxResidual)
+#                > 0.05 m (bridge.tcl serviceResidual)
 #   service-lost the bridge is not serviceable: opening, residual or bearing-300
 # A run whose analysis fails (a step that no algorithm brings to convergence) is recorded as failed
 # and left out of the fits; the tables count them.
@@ -68,8 +68,8 @@ if {$study eq "smoke"} {
   set recordPatterns {elCentro.at2}
 }
 set seatLength [expr {0.7 + 0.005 * $spanLength}]
-set limits [dict create bearing-250 2.5 bearing-300 3.0 opening $serviceMaxOpening \
-    unseating $seatLength residual $serviceMaxResidual]
+set limits [dict create bearing-250 2.5 bearing-300 3.0 opening $jointGap \
+    unseating $seatLength residual $serviceResidual]
 set damageStates {bearing-250 bearing-300 opening unseating residual service-lost}
 
 # Isolated period: one span's deck on its bearings at their effective stiffness Keq at the design

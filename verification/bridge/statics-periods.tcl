@@ -49,12 +49,23 @@ for {set p 1} {$p <= $nSpans + 1} {incr p} {
   set total [expr {$total + $R}]
   set H [lindex $pierHeights [expr {$p - 1}]]
   set W [expr {($footingMass + $capMass + [dict get $d pierMass] * $H) * $g}]
-  set nGirders [expr {($p > 1) + ($p <= $nSpans)}]
+  # girder ends on the pier: the end piers carry the next units' girders too (endCondition adjacent)
+  set nGirders [expr {$endCondition eq "adjacent" ? 2 : ($p > 1) + ($p <= $nSpans)}]
   # girder: from its end face to its end face; half of its weight to each end
   set girderW [expr {$girderMass * ($spanLength - $jointGap) * $g}]
   set Rhand [expr {$W + 0.5 * $nGirders * $girderW}]
   set hand [expr {$hand + $Rhand}]
   check "PC$p vertical reaction = footing + cap + pier + half of each girder (kN)" $R $Rhand $kPierTol
+}
+# Every support of the model (the piers and, with endCondition adjacent, the far piers of the next
+# units' girders, each carrying half of one and its cap) against the total weight.
+set total 0.0
+foreach n $::groundNodes { set total [expr {$total + [nodeReaction $n 3]}] }
+if {$endCondition eq "adjacent"} {
+  # half of each of the two neighbour girders and the two far piers' caps with a quarter of a pier
+  set hMean 0.0
+  foreach H $pierHeights { set hMean [expr {$hMean + $H / [llength $pierHeights]}] }
+  set hand [expr {$hand + $girderMass * ($spanLength - $jointGap) * $g + 2.0 * ($capMass + 0.24 * [dict get $d pierMass] * $hMean) * $g}]
 }
 check "sum of the vertical reactions = total weight (kN)" $total $hand $kTotalTol
 
@@ -78,6 +89,8 @@ puts "nonlinear model at the dead-load state, periods (s): [join [lmap t [period
 set hdrNonlinear $hdr
 set U0lin 100.0
 set hdr [list [expr {$Geq * $U0lin}] $U0lin 20.0 0.0 0.0 1.0 0.0]
+# The estimate below is the unit's own period: nothing beyond its end piers (endCondition free).
+set endCondition free
 buildModel nopound
 checkAbs "dead load converges (equivalent linear bearings)" [applyDeadLoad] 0 0
 checkAbs "the equivalent linear bearings keep Keq (kN/m)" [dict get $::derived bearingKeq] [dict get $d bearingKeq] 1e-6

@@ -17,6 +17,12 @@ proc damageWord {strain} {
   return "sound"
 }
 
+# The serviceability limits of bridge.tcl, as findings.tcl reads them.
+proc serviceLimits {} {
+  return [dict create step $::serviceStep residual $::serviceResidual drift $::serviceDrift \
+      seatEdge $::seatEdge seatJRA $::seatLengthJRA]
+}
+
 proc writeReport {results outDir {other {}} {ladder {}}} {
   set names {}
   foreach r $results { lappend names [dict get $r case] }
@@ -32,8 +38,9 @@ proc writeReport {results outDir {other {}} {ladder {}}} {
     puts $md "this model under [join [lmap m $motions {findings::motionName $m}] { and }] (\"record\": [dict get $r0 motion];"
     puts $md "\"pulse\": the fitted near-fault pulse). Displacements are magnitudes of peaks over both joints or"
     puts $md "all bearings.\n"
-    puts $md [findings::markdown $motions $ladder [list $::serviceMaxOpening $::serviceMaxResidual]]
+    puts $md [findings::markdown $motions $ladder [serviceLimits]]
     if {[llength $ladder] > 0} { puts $md [ladderTable $ladder] }
+    puts $md [bridgeTable]
     puts $md "## The runs\n"
   }
   puts $md "Motion: [dict get $r0 motion], scaled by [dict get $r0 scale], at $::motionAngle degrees to the"
@@ -41,8 +48,11 @@ proc writeReport {results outDir {other {}} {ladder {}}} {
   puts $md "dt = [dict get $r0 dt] s (at most $::contactDt s while a joint is closed or closing), NormDispIncr"
   puts $md "tolerance [dict get $r0 tol] m. Model: verification/bridge/bridge.tcl"
   puts $md "(spans $::nSpans x $::spanLength m, pier heights $::pierHeights m, joint gap $::jointGap m, HDR bearings"
-  puts $md "$::bearingArea m^2 x $::bearingTr m rubber per girder end). Gap = right girder end minus left girder end"
-  puts $md "(longitudinal: + opening, - closing); bearing displacement = top minus bottom.\n"
+  puts $md "$::bearingArea m^2 x $::bearingTr m rubber per girder end in $::bearingsPerEnd bearings across the width). Gap = right"
+  puts $md "girder end minus left girder end (longitudinal: + opening, - closing); bearing displacement = top"
+  puts $md "minus bottom, the mean of an end's bearings (its value at the girder axis); residuals after"
+  puts $md "$::tailDuration s of free vibration after the motion. A bearing past 300 % ruptures and its girder"
+  puts $md "end comes down by the bearing's height ($::bearingHeight m) onto its seat.\n"
 
   runsTable $md $results
   if {[llength $other] > 0} {
@@ -74,6 +84,42 @@ proc writeReport {results outDir {other {}} {ladder {}}} {
     puts $md "\n(gnuplot not found: no plots; the histories are in the CSV files beside this report.)"
   }
   close $md
+}
+
+# The bridge: its parameters with their sources or reasons, and its modal periods.
+proc bridgeTable {} {
+  set d $::derived
+  set Rd [expr {0.5 * [dict get $d spanMass] * $::g}]
+  set rows [list \
+    [list "spans" "$::nSpans x $::spanLength m, simply supported steel girders" "ours: a typical span of the simply supported steel-girder viaducts of urban expressways (30 to 50 m); the paper does not publish its dimensions"] \
+    [list "beyond the end piers" $::endCondition "ours, see bridge.tcl: the unit stands in an elevated viaduct, its end piers carry the next units' girders"] \
+    [list "pier heights" "$::pierHeights m" "ours: unequal, so that adjacent spans differ in period, the cause of pounding"] \
+    [list "pier section" "circular RC, D $::pierD m, 40 bars of 32 mm, f'c 40 MPa (core)" "ours: a level-2 ductile pier of the 1996 JRA code's time (verification/piers/pier-pushover.tcl)"] \
+    [list "foundation" "footing on 3 x 3 piles of D $::pileD m, k_h $::subgradeKh kN/m3" "JRA pile-group formulas (Chang's beam; a = 0.027 L/D + 0.2)"] \
+    [list "girder" "$::girderMass t/m, A $::girderA m2, I $::girderIvert m4, $::girderWidth m wide, $::girderDepth m deep" "ours: steel girders, RC slab, pavement and barriers of a 10 m deck"] \
+    [list "expansion joint gap" "$::jointGap m" "ours: a finger joint sized for the thermal movement of a 40 m steel span"] \
+    [list "bearings" "$::bearingsPerEnd per girder end, [format %.2f [expr {$::bearingArea / $::bearingsPerEnd}]] m2 each, Tr $::bearingTr m, $::girderSpacing m apart" "ours: one high-damping rubber bearing under each main girder"] \
+    [list "rubber law" "Yoshida, HDR set (a)" "fitted to Bridgestone's X0.6 design curves, Geq within 2.0 % rms, Heq 2.3 % rms (verification/bearing/fitted-parameters.md)"] \
+    [list "bearing design / failure strain" "250 % / 300 %" "JRA Part V (2002): allowable shear strain under level-2 motion; failure: the paper's 300 %"] \
+    [list "after rupture" "drop by $::bearingHeight m onto the lower plate, friction $::seatFriction" "the bearing's height; friction of steel on steel (ours)"] \
+    [list "pounding" "K = EA/L of the girder, e = $::restitution, mu $::frictionS / $::frictionK" "Zhu, Abe and Fujino (2002): penalty stiffness and restitution of girder pounding"] \
+    [list "restrainers" "two sides at +-$::deviceArm m, together K $::restrainerK kN/m, slack $::restrainerSlack m, Fy [format %.0f $::restrainerFy] kN" [format "ours; JRA Part V (2002) 16.3 designs unseating-prevention devices for 1.5 R_d = %.0f kN (R_d, a girder end's dead-load reaction, %.0f kN)" [expr {1.5 * $Rd}] $Rd]] \
+    [list "bumpers" "two sides, together K $::bumperK kN/m, clearance $::bumperClearance m" "ours: rubber stoppers that close before the girders touch"] \
+    [list "damping" "piers $::pierDamping, girders $::girderDamping, foundation $::foundationDamping" "stiffness-proportional Rayleigh damping (bearings, contact and devices take none)"] \
+    [list "motion" "Takatori EW (RSN1120, PEER NGA-West2) at $::motionAngle deg to the axis" "the record of the paper; the NS component is not in the project (PEER's terms), so one component at an angle"] \
+    [list "free vibration after the motion" "$::tailDuration s" "about four isolated periods, before the residuals are read"]]
+  set out "## The bridge\n\n| parameter | value | source or reason |\n|---|---|---|\n"
+  foreach r $rows { append out "| [join $r { | }] |\n" }
+  if {[catch {modalPeriods 6} periods]} {
+    append out "\n(Modal periods not computed: $periods)\n"
+  } else {
+    append out "\nModal periods of the bridge as built (no pounding), at the dead-load state: initial, the bearings at their tangent there; effective, every bearing's shear a linear spring of its effective stiffness at 250 % (the equivalent linear bridge of design practice).\n\n"
+    append out "| mode | 1 | 2 | 3 | 4 | 5 | 6 |\n|---|---:|---:|---:|---:|---:|---:|\n"
+    foreach kind {initial effective} {
+      append out "| $kind (s) | [join [lmap t [dict get $periods $kind] {format %.3f $t}] { | }] |\n"
+    }
+  }
+  return $out
 }
 
 # The table of one motion's runs, one column per case.
@@ -118,8 +164,19 @@ proc runsTable {md results} {
       }
       row $md "$label: displacement long / trans, peak" m $vals
       row $md "$label: displacement long / trans, residual" m $res
-      row $md "$label: peak shear strain" - $strains
+      row $md "$label: peak shear strain (largest of its bearings)" - $strains
       row $md "$label: damage state" - $states
+      set fd {}
+      foreach r $results {
+        set dropped [expr {[dict exists $r peak dropped$bt] ? [dict get $r peak dropped$bt] : 0}]
+        lappend fd "[expr {[dict exists $r peak failed$bt] ? [dict get $r peak failed$bt] : "-"}] / $dropped"
+      }
+      row $md "$label: bearings failed / dropped onto the seat (of [llength [endBearings $bt]])" - $fd
+    }
+    foreach p [findings::piersOf $r0] {
+      set v {}
+      foreach r $results { lappend v "[format %.2f [expr {100 * [dict get $r peak drift$p]}]] / [format %.2f [expr {100 * [dict get $r last drift$p]}]]" }
+      row $md "PC$p ([pierHeight $p] m) drift ratio, peak / residual (JRA residual limit 1.00)" % $v
     }
     foreach j $joints {
       set f {}; set n {}
@@ -165,6 +222,9 @@ proc runsTable {md results} {
     row $md "impacts, all joints" - $n
     set v {}; foreach r $results { lappend v [format %.4f [findings::rotMax $r]] }
     row $md "largest girder rotation about the vertical, peak" rad $v
+    set v {}
+    foreach r $results { lappend v "[format %.2f [expr {100 * [findings::driftMax $r]}]] / [format %.2f [expr {100 * [findings::driftMax $r last]}]]" }
+    row $md "largest pier drift ratio, peak / residual (JRA residual limit 1.00)" % $v
   }
   set mg [expr {[llength $girders] / 2 + 1}]
   set v {}; foreach r $results { lappend v "[fmt [dict get $r peak deckx]] / [fmt [dict get $r peak decky]]" }
@@ -223,14 +283,15 @@ proc jointTables {md results} {
 # The scale ladder: no pounding against pounding at several scales of the record.
 proc ladderTable {ladder} {
   set out "## Scale ladder\n\nThe record scaled; no pounding -> pounding. A bearing fails at 300 % shear strain.\n\n"
-  append out "| scale | largest longitudinal bearing displacement | largest bearing strain, no pounding / pounding | failed bearings, no pounding / pounding | pounding force, peak (kN) |\n|---:|---|---|---|---:|\n"
+  append out "| scale | largest longitudinal bearing displacement | largest bearing strain, no pounding / pounding | failed bearings, no pounding / pounding | largest residual vertical step at a joint (m), no pounding / pounding | pounding force, peak (kN) |\n|---:|---|---|---|---|---:|\n"
   foreach pn [findings::ladderOf $ladder nopound] pp [findings::ladderOf $ladder pound] {
     lassign $pn s ln; lassign $pp sp lp
     if {$s != $sp} { continue }
     set rn [dict create peak [dict get $ln peak]]; set rp [dict create peak [dict get $lp peak]]
     set force 0.0
     foreach j [findings::jointsOf $lp] { set force [expr {max($force, [dict get $lp peak force$j])}] }
-    append out "| $s | [findings::compare [findings::bearingLong $rn] [findings::bearingLong $rp] m] | [findings::pct [findings::strainMax $rn]] / [findings::pct [findings::strainMax $rp]] | [findings::failedCount $rn] / [findings::failedCount $rp] | [format %.0f $force] |\n"
+    set steps [lmap l [list $ln $lp] { format %.3f [findings::gapMax [dict create peak [dict get $l peak] last [dict get $l last]] z last] }]
+    append out "| $s | [findings::compare [findings::bearingLong $rn] [findings::bearingLong $rp] m] | [findings::pct [findings::strainMax $rn]] / [findings::pct [findings::strainMax $rp]] | [findings::failedCount $rn] / [findings::failedCount $rp] | [join $steps { / }] | [format %.0f $force] |\n"
   }
   return $out
 }
@@ -330,8 +391,9 @@ proc makePlots {names outDir {results {}}} {
     puts $gp "plot [plotLines $names $outDir $col $colors]"
   }
   puts $gp "unset multiplot"
-  # Plan view: each bearing (one element per girder end stands for the pair at +-bearingRollArm)
-  # coloured by its damage state, one panel per case
+  # Plan view: the bearings of each girder end (one element per end stands for a pair at
+  # +-bearingRollArm when bearingsPerEnd is 1) coloured by the end's worst damage state, one panel
+  # per case
   if {[llength $results] > 0} {
     # true scale up to five spans; a longer viaduct is drawn wider (30 px a span) with the width of
     # the deck stretched, and its bearings unlabelled past ten spans
@@ -344,7 +406,8 @@ proc makePlots {names outDir {results {}}} {
     puts $gp "set multiplot layout [llength $results],1 title 'Plan: bearings by damage state (sound < 250 % <= past design < 300 % <= failed)'"
     set xmax [expr {$::nSpans * $::spanLength}]
     set hw [expr {0.5 * $::girderWidth}]
-    set pad [expr {0.5 * sqrt(0.5 * $::bearingArea)}]
+    set pad [expr {0.5 * sqrt($::bearingArea / max(2, $::bearingsPerEnd))}]
+    set padYs [expr {$::bearingsPerEnd == 1 ? [list -$::bearingRollArm $::bearingRollArm] : [bearingYs]}]
     set obj 0
     foreach r $results {
       set objs {}
@@ -358,7 +421,7 @@ proc makePlots {names outDir {results {}}} {
         set x [expr {[pierX $p] + ($side == 11 ? -1.0 : 1.0) * $::bearingOffset}]
         set e [dict get $r peak strain$bt]
         set color [expr {$e >= 3.0 ? "#d62728" : ($e >= 2.5 ? "#f2c81e" : "#2ca02c")}]
-        foreach y [list -$::bearingRollArm $::bearingRollArm] {
+        foreach y $padYs {
           lappend objs "set object [incr obj] rect from [expr {$x - $pad}],[expr {$y - $pad}] to [expr {$x + $pad}],[expr {$y + $pad}] fc rgb '$color' fs solid border lc rgb 'black' front"
         }
         # the two bearings of a pier are 2 x bearingOffset apart: left one's label to the left
