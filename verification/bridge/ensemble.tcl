@@ -2,8 +2,9 @@
 # Fragility of the three-span bridge (bridge.tcl) from an ensemble of runs: the three cases
 # (nopound, pound, countermeasure) under every ground-motion record and a family of near-fault
 # pulses, each scaled to a ladder of peak ground velocities (incremental dynamic analysis,
-# Vamvatsikos and Cornell 2002), then lognormal fragility curves of five damage states against PGV
-# and against Sa(T_iso), fitted by maximum likelihood (verification/ensemble/fragility.tcl).
+# Vamvatsikos and Cornell 2002), then lognormal fragility curves of the damage states below against
+# PGV and against Sa(T_iso), fitted by maximum likelihood and by the IDA method with bootstrap
+# bands (verification/ensemble/fragility.tcl).
 #
 #   dabs verification/bridge/ensemble.tcl ?study? ?outDir?
 #   mpirun -n 4 dabs-mp verification/bridge/ensemble.tcl full ensemble-out      (or srun ...)
@@ -24,19 +25,43 @@
 #   ladder   each motion scaled to PGV = 0.3 ... 2.0 m/s: from Baker's 0.3 m/s threshold of a
 #            pulse-like record to above the largest PGVs recorded near faults (Takatori EW 1.23
 #            m/s as distributed)
-# Damage states (the limits and their source)
+# Damage states (the limits and their source; the serviceability limits of bridge.tcl's report)
 #   bearing-250  a bearing's peak shear strain >= 250 %: the allowable shear strain of rubber
 #                bearings under level-2 ground motion (Japan Road Association, Specifications for
 #                Highway Bridges, Part V, 2002), the design limit of bridge.tcl's report
 #   bearing-300  >= 300 %: bearing failure (the failure strain of bridge.tcl's report)
-#   opening      peak longitudinal opening of a joint > 0.05 m: the expansion joint, made for the
-#                0.05 m gap, accommodates +- the gap (bridge.tcl jointGap: our limit, the
-#                paper's criterion has no numbers)
-#   unseating    peak longitudinal opening > 0.90 m: the minimum seat length S_EM = 0.7 + 0.005 L
-#                (m, L = 40 m span; JRA 2002 Part V)
-#   residual     residual longitudinal or transverse offset of a joint at the end of the analysis
-#                > 0.05 m (bridge.tcl serviceResidual)
-#   service-lost the bridge is not serviceable: opening, residual or bearing-300
+#   joint        peak longitudinal opening of a joint > its gap: damage to the expansion joint's
+#                fingers (ours: the joint accommodates +- its gap)
+#   unseating    a girder end's travel towards the edge of its seat > its seat (bridge.tcl seatEdge:
+#                half the cap length less half the gap; JRA's minimum S_EM = 0.7 + 0.005 L is 0.9 m)
+#   residual     residual longitudinal or transverse offset of a joint > the gap (ours)
+#   step         residual vertical step at a joint > 0.05 m (ours: ruptured bearings let girders down)
+#   drift        residual pier drift ratio > 1/100 (JRA Part V, 1996 and 2002)
+#   service-lost the bridge cannot carry traffic: unseating, residual, step or drift (the report's
+#                verdict; the peak opening is damage to the joint, not part of it)
+# and the HAZUS-MH bridge damage states (FEMA, HAZUS-MH MR4 Technical Manual, chapter 7), each
+# mapped by us to these quantities from its description (a state is also exceeded when a higher
+# one is):
+#   slight       "minor spalling and cracks at hinges (joints), minor cracking of the deck":
+#                joint, or bearing-250
+#   moderate     "bearing failure (keeper bars, rockers) without unseating, moderate movement":
+#                bearing-300, or residual
+#   extensive    "significant residual movement at connections, vertical offset, differential
+#                settlement at connections": step, or drift
+#   complete     "connection losing all bearing support, imminent deck collapse": unseating
+# Modelling uncertainty (full study): each motion runs on its own realisation of the bridge, the
+# same at every level of its ladder (Nielson and DesRoches 2007 sample one bridge per motion),
+# drawn with a fixed seed: joint gap uniform 0.03 to 0.07 m (ours: the gap at installation
+# depends on the temperature then); the rubber's force (Y0: stiffness and strength together)
+# lognormal with median 1 and dispersion 0.1 (ours: production bearings scatter by about 10 % in
+# shear stiffness); contact friction mu_k uniform 0.3 to 0.5 with mu_s = mu_k + 0.1 (ours, about
+# the default 0.4 / 0.5); restitution uniform 0.5 to 0.8 (ours, about Zhu et al.'s 0.65). The
+# rubber's damping is not sampled apart from its stiffness (the Yoshida set has no single
+# damping parameter).
+# Fits, against PGV and Sa(T_iso): the maximum-likelihood fit of every run (Baker 2015, eq. 11),
+# and the incremental-dynamic-analysis fit (Baker 2015, eqs. 3 and 4: the PGV at which each motion
+# first exceeds the state; motions that never do are counted and left out) with bootstrap 90 %
+# bands of the median (verification/ensemble/fragility.tcl).
 # A run whose analysis fails (a step that no algorithm brings to convergence) is recorded as failed
 # and left out of the fits; the tables count them.
 
@@ -45,6 +70,7 @@ set ::bridgeLibraryOnly 1
 source [file join $here bridge.tcl]
 source [file join $here .. ensemble fragility.tcl]
 source [file join $here .. ensemble intensity.tcl]
+source [file join $here tools findings.tcl]
 
 set study [expr {$argc > 0 ? [lindex $argv 0] : "smoke"}]
 set outDir [file normalize [expr {$argc > 1 ? [lindex $argv 1] : "ensemble-out"}]]
@@ -67,10 +93,25 @@ if {$study eq "smoke"} {
   set recordFolders [list [file join $here .. data]]
   set recordPatterns {elCentro.at2}
 }
-set seatLength [expr {0.7 + 0.005 * $spanLength}]
-set limits [dict create bearing-250 2.5 bearing-300 3.0 opening $jointGap \
-    unseating $seatLength residual $serviceResidual]
-set damageStates {bearing-250 bearing-300 opening unseating residual service-lost}
+set limits [dict create bearing-250 2.5 bearing-300 3.0 joint $jointGap unseating $seatEdge \
+    residual $serviceResidual step $serviceStep drift $serviceDrift]
+set damageStates {bearing-250 bearing-300 joint unseating residual step drift service-lost \
+    hazus-slight hazus-moderate hazus-extensive hazus-complete}
+# The realisation of the bridge each motion runs on (modelling uncertainty; the full study only):
+# a linear congruential generator with a fixed seed, in the order of the motions.
+proc uniform {state lo hi} {
+  upvar 1 $state x
+  set x [expr {(1664525 * $x + 1013904223) % 4294967296}]
+  return [expr {$lo + ($hi - $lo) * $x / 4294967296.0}]
+}
+proc standardNormal {state} {
+  upvar 1 $state x
+  # Box-Muller from two uniforms in (0, 1]
+  set u1 [expr {1.0 - [uniform x 0.0 1.0]}]
+  set u2 [uniform x 0.0 1.0]
+  return [expr {sqrt(-2.0 * log($u1)) * cos(2.0 * acos(-1.0) * $u2)}]
+}
+set sampleModels [expr {$study eq "full"}]
 
 # Isolated period: one span's deck on its bearings at their effective stiffness Keq at the design
 # strain, 250 % (bridge.tcl's estimate).
@@ -102,6 +143,21 @@ foreach Tp $pulsePeriods {
       pgv [dict get $im pgv] sa [expr {[dict get $im sa] / $g}]]
 }
 
+set realisations [dict create]
+set rng 20261127
+dict for {name m} $motions {
+  if {$sampleModels} {
+    set muK [uniform rng 0.3 0.5]
+    dict set realisations $name [dict create jointGap [uniform rng 0.03 0.07] \
+        rubberFactor [expr {exp(0.1 * [standardNormal rng])}] frictionK $muK frictionS [expr {$muK + 0.1}] \
+        restitution [uniform rng 0.5 0.8]]
+  } else {
+    dict set realisations $name [dict create jointGap $jointGap rubberFactor 1.0 frictionK $frictionK \
+        frictionS $frictionS restitution $restitution]
+  }
+}
+set defaultHdr $hdr
+
 # One job per case, motion and PGV level; the strongest first, so that the long runs start early
 # and the short ones fill the end (the farm hands jobs out in this order).
 set jobs {}
@@ -120,6 +176,10 @@ proc bridgeRun {job} {
   dict with job {}
   set m [dict get $::motions $motion]
   set ::duration $::studyDuration
+  # this motion's realisation of the bridge
+  set real [dict get $::realisations $motion]
+  foreach key {jointGap frictionK frictionS restitution} { set ::$key [dict get $real $key] }
+  set ::hdr [lreplace $::defaultHdr 0 0 [expr {[lindex $::defaultHdr 0] * [dict get $real rubberFactor]}]]
   if {[dict get $m kind] eq "pulse"} {
     set ::pulseTp [dict get $m Tp]; set ::pulseVp 1.0; set ::pulseT0 [dict get $m t0]
     set input pulse
@@ -127,19 +187,17 @@ proc bridgeRun {job} {
     set input [dict get $m file]
   }
   set r [runCase $case $scale $::defaultDt $::defaultIntegrator $::defaultTol $input]
+  set ::hdr $::defaultHdr
+  # the quantities of the damage states, as the report reads them (tools/findings.tcl)
   set peak [dict get $r peak]
-  set last [dict get $r last]
-  set strain 0.0; set opening 0.0; set residual 0.0
-  dict for {key value} $peak {
-    if {[string match strain* $key]} { set strain [expr {max($strain, $value)}] }
-    if {[regexp {^open[0-9]+$} $key]} { set opening [expr {max($opening, $value)}] }
-  }
-  dict for {key value} $last {
-    if {[regexp {^gap[0-9]+[xy]$} $key]} { set residual [expr {max($residual, abs($value))}] }
-  }
+  set opening 0.0
+  foreach j [findings::jointsOf $r] { set opening [expr {max($opening, [dict get $peak open$j])}] }
+  set residual [expr {max([findings::residualOpening $r], [findings::gapMax $r y last])}]
   return [list code [expr {[dict get $r completed] ? 0 : -1}] \
       pgv [expr {$scale * [dict get $m pgv]}] sa [expr {$scale * [dict get $m sa]}] \
-      strain $strain opening $opening residual $residual wall [format %.3f [dict get $r wall]]]
+      strain [findings::strainMax $r] opening $opening residual $residual \
+      step [findings::gapMax $r z last] seat [findings::seatTravel $r] drift [findings::driftMax $r last] \
+      gap [dict get $real jointGap] wall [format %.3f [dict get $r wall]]]
 }
 
 set t0 [clock milliseconds]
@@ -169,12 +227,18 @@ proc exceeds {row ds} {
   switch -- $ds {
     bearing-250 { return [expr {[dict get $row strain] >= [dict get $lim bearing-250]}] }
     bearing-300 { return [expr {[dict get $row strain] >= [dict get $lim bearing-300]}] }
-    opening { return [expr {[dict get $row opening] > [dict get $lim opening]}] }
-    unseating { return [expr {[dict get $row opening] > [dict get $lim unseating]}] }
-    residual { return [expr {[dict get $row residual] > [dict get $lim residual]}] }
+    joint { return [expr {[dict get $row opening] > [dict get $row gap]}] }
+    unseating { return [expr {[dict get $row seat] > 0.5 * [lindex $::capSize 0] - 0.5 * [dict get $row gap]}] }
+    residual { return [expr {[dict get $row residual] > [dict get $row gap]}] }
+    step { return [expr {[dict get $row step] > [dict get $lim step]}] }
+    drift { return [expr {[dict get $row drift] > [dict get $lim drift]}] }
     service-lost {
-      return [expr {[exceeds $row opening] || [exceeds $row residual] || [exceeds $row bearing-300]}]
+      return [expr {[exceeds $row unseating] || [exceeds $row residual] || [exceeds $row step] || [exceeds $row drift]}]
     }
+    hazus-complete { return [exceeds $row unseating] }
+    hazus-extensive { return [expr {[exceeds $row step] || [exceeds $row drift] || [exceeds $row hazus-complete]}] }
+    hazus-moderate { return [expr {[exceeds $row bearing-300] || [exceeds $row residual] || [exceeds $row hazus-extensive]}] }
+    hazus-slight { return [expr {[exceeds $row joint] || [exceeds $row bearing-250] || [exceeds $row hazus-moderate]}] }
   }
 }
 
@@ -205,6 +269,40 @@ foreach c $cases {
 }
 close $fh
 
+# The IDA fits: per case and damage state, the intensity at which each motion first exceeds it
+# (its ladder in ascending order), fitted over the motions that reach it, with bootstrap bands.
+set idaFits [dict create]
+foreach c $cases {
+  foreach ds $damageStates {
+    foreach im {pgv sa} {
+      set firsts {}; set never 0
+      dict for {name m} $motions {
+        set first ""
+        foreach level [lsort -real $pgvLadder] {
+          foreach row $rows {
+            if {[dict get $row case] eq $c && [dict get $row motion] eq $name && [dict get $row level] == $level &&
+                [dict get $row status] eq "ok" && $first eq "" && [exceeds $row $ds]} { set first [dict get $row $im] }
+          }
+        }
+        if {$first eq ""} { incr never } else { lappend firsts $first }
+      }
+      set f [fragility::idaFit $firsts]
+      dict set f never $never
+      if {[llength $firsts] >= 2} { set f [dict merge $f [fragility::bootstrap $firsts 1000 [expr {1000 + [llength $firsts]}]]] }
+      dict set idaFits $c $ds $im $f
+    }
+  }
+}
+proc idaText {f unit} {
+  if {[dict get $f n] == 0} { return "not reached ([dict get $f never] motions)" }
+  set text [format "%.3g %s" [dict get $f theta] $unit]
+  if {[dict exists $f thetaLow]} {
+    append text [format " (90 %% %.3g-%.3g; beta %.2f)" [dict get $f thetaLow] [dict get $f thetaHigh] [dict get $f beta]]
+  }
+  append text [format ", %d of %d motions" [dict get $f n] [expr {[dict get $f n] + [dict get $f never]}]]
+  return $text
+}
+
 proc median {f unit} {
   switch -- [dict get $f status] {
     fit { return [format "%.3g %s (beta %.2f)" [dict get $f theta] $unit [dict get $f beta]] }
@@ -232,18 +330,28 @@ puts $md "\nPGV ladder (m/s): $pgvLadder. Lognormal fits by maximum likelihood (
 puts $md "| damage state (limit) | IM | [join $cases { | }] |"
 puts $md "|---|---|[string repeat ---| [llength $cases]]"
 foreach ds $damageStates {
-  set limit [expr {$ds eq "service-lost" ? "opening, residual or bearing-300" : [format %.3g [dict get $limits $ds]]}]
+  set limit [expr {[dict exists $limits $ds] ? [format %.3g [dict get $limits $ds]] : ($ds eq "service-lost" ? "unseating, residual, step or drift" : "HAZUS, mapped")}]
   foreach im {pgv sa} unit {m/s g} {
     set cells {}
     foreach c $cases { lappend cells [median [dict get $fits $c $ds $im] $unit] }
     puts $md "| $ds ($limit) | [string toupper $im] | [join $cells { | }] |"
   }
 }
+puts $md "\nIncremental dynamic analysis (Baker 2015, eqs. 3 and 4): the PGV at which each motion first exceeds the state, lognormal over the motions that reach it (the others counted; the median is then biased low), with the 90 % bootstrap band of the median (1000 resamples of the motions):\n"
+puts $md "| damage state | [join $cases { | }] |"
+puts $md "|---|[string repeat ---| [llength $cases]]"
+foreach ds $damageStates {
+  puts $md "| $ds | [join [lmap c $cases {idaText [dict get $idaFits $c $ds pgv] m/s}] { | }] |"
+}
+puts $md [format "\nThese rest on %d motions (%d records, %d pulses): a median from so few is uncertain by the band above, and the dispersion more so; the records are those the project ships, not a selection for a site or a hazard level. %s" \
+    [dict size $motions] [llength [lsearch -all -inline [lmap {k v} $motions {dict get $v kind}] record]] [llength $pulsePeriods] \
+    [expr {$sampleModels ? "Each motion ran on its own realisation of the bridge (modelling uncertainty, see ensemble.tcl)." : "No modelling uncertainty (the smoke study)."}]]
 set failedText {}
 dict for {c n} $failedRuns { lappend failedText "$c $n" }
 puts $md "\nRuns whose analysis failed (left out of the fits): [join $failedText {, }].\n"
 if {"pound" in $cases && "countermeasure" in $cases} {
   puts $md "## Does the countermeasure lower the probability of losing serviceability?\n"
+  puts $md "Service lost: a girder end off its seat, a residual offset or vertical step at a joint past its limit, or a pier past the JRA residual drift (the report's verdict; the peak opening is damage to the joint).\n"
   puts $md "| PGV (m/s) | P(service lost), pound | P(service lost), countermeasure | countermeasure - pound |"
   puts $md "|---|---|---|---|"
   foreach x {0.5 1.0 1.5 2.0} {
@@ -258,11 +366,7 @@ if {"pound" in $cases && "countermeasure" in $cases} {
     lappend largest [format "%s %.3f m" $c $top]
   }
   puts $md "\nLargest peak opening of a joint over all runs: [join $largest {, }]."
-  # What the devices can do for the opening limit follows from their free travel.
-  if {$restrainerSlack >= [dict get $limits opening]} {
-    puts $md [format "\nThe restrainers' free travel (slack %.3g m) is not below the opening limit (%.3g m): the cables pull only once a joint has opened past its allowance, so they cannot keep the opening within it; the bumpers (clearance %.3g m) act on closing, not opening." \
-        $restrainerSlack [dict get $limits opening] $bumperClearance]
-  }
+  puts $md "\nWhat the countermeasure changes, median PGV of pounding -> countermeasure (maximum likelihood): [join [lmap ds {residual step unseating service-lost hazus-extensive} {format "%s %s -> %s" $ds [median [dict get $fits pound $ds pgv] m/s] [median [dict get $fits countermeasure $ds pgv] m/s]}] {; }]."
 }
 close $md
 
@@ -288,8 +392,8 @@ close $fh
 set colors {nopound #1f77b4 pound #d62728 countermeasure #2ca02c}
 set labels [list "PGV (m/s)" [format "Sa(T_{iso} = %.2f s, 5 %%) (g)" $Tiso]]
 foreach im {pgv sa} label $labels xmax {2.2 3.0} {
-  set gp "set terminal pngcairo size 1500,800 font ',10'\nset output '[file join $outDir fragility-$im.png]'\n"
-  append gp "set multiplot layout 2,3 title 'Fragility of the bridge ($study study, lognormal maximum-likelihood fits)'\n"
+  set gp "set terminal pngcairo size 1800,1100 font ',10'\nset output '[file join $outDir fragility-$im.png]'\n"
+  append gp "set multiplot layout 3,4 title 'Fragility of the bridge ($study study, lognormal maximum-likelihood fits)'\n"
   append gp "set yrange \[0:1\]\nset xrange \[0.01:$xmax\]\nset xlabel '$label'\nset ylabel 'P(exceed)'\nset key bottom right\nset samples 400\n"
   set block 0
   foreach ds $damageStates {

@@ -55,4 +55,31 @@ checkTrue "all exceed: status all" [expr {[dict get [fragility::fit {0.5 1 1.0 1
 set f [fragility::fit {0.5 0 1.0 0 2.0 1 4.0 1}]
 checkTrue "separated runs: status separated" [expr {[dict get $f status] eq "separated"}]
 check "separated runs: theta between the last 0 and the first 1" [dict get $f theta] [expr {sqrt(2.0)}] 1e-12
+# The IDA fit (Baker 2015, eqs. 3 and 4): intensities exp(mu + sigma z_i) with z_i of mean 0 and
+# sample standard deviation 1 give theta = exp(mu) and beta = sigma exactly.
+set zs {-1.2649110640673518 -0.6324555320336759 0.0 0.6324555320336759 1.2649110640673518}
+set mu [expr {log(1.1)}]; set sigma 0.4
+set f [fragility::idaFit [lmap z $zs {expr {exp($mu + $sigma * $z)}}]]
+check "IDA fit: theta = exp(mean ln IM)" [dict get $f theta] 1.1 1e-12
+check "IDA fit: beta = standard deviation of ln IM (n - 1)" [dict get $f beta] $sigma 1e-12
+checkTrue "IDA fit: no motion, no fit" [expr {[dict get [fragility::idaFit {}] n] == 0}]
+# Bootstrap: the band holds the full-sample estimate, is reproducible with its seed, and narrows
+# when every motion is there four times (more data of the same spread).
+set ims [lmap z $zs {expr {exp($mu + $sigma * $z)}}]
+set band [fragility::bootstrap $ims 1000 7]
+checkTrue "bootstrap: theta's band holds the estimate ([dict get $band thetaLow] .. [dict get $band thetaHigh])" \
+    [expr {[dict get $band thetaLow] < 1.1 && 1.1 < [dict get $band thetaHigh]}]
+checkTrue "bootstrap: the same seed gives the same band" [expr {$band eq [fragility::bootstrap $ims 1000 7]}]
+set band4 [fragility::bootstrap [concat $ims $ims $ims $ims] 1000 7]
+checkTrue "bootstrap: four times the motions, a narrower band" \
+    [expr {[dict get $band4 thetaHigh] - [dict get $band4 thetaLow] < [dict get $band thetaHigh] - [dict get $band thetaLow]}]
+# The standard error of ln theta is s / sqrt(n), s the spread of the data (the population's, of the
+# five values repeated: sigma sqrt(4/5)): with 400 motions the 90 % band of ln theta is
+# 2 x 1.645 s / 20 (the bootstrap's own noise aside, within 10 %)
+set many {}
+for {set i 0} {$i < 80} {incr i} { lappend many {*}$ims }
+set band [fragility::bootstrap $many 1000 11]
+check "bootstrap: 90 % band of ln theta with 400 motions = 2 x 1.645 s / sqrt(400)" \
+    [expr {log([dict get $band thetaHigh]) - log([dict get $band thetaLow])}] [expr {2.0 * 1.645 * $sigma * sqrt(0.8) / 20.0}] 0.1
+
 finish

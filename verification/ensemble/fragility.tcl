@@ -17,6 +17,17 @@
 # the others: the likelihood grows without bound as beta -> 0; theta is the geometric mean of the
 # two x that bracket the jump and beta 0).
 
+# The incremental-dynamic-analysis fit (Baker 2015, section "IDA", eqs. 3 and 4): each motion is
+# scaled up until it first exceeds the damage state; the intensities IM_i at which the n motions
+# do so are taken as lognormal, theta = exp(mean ln IM_i), beta = the standard deviation of
+# ln IM_i (divisor n - 1). A motion that never exceeds within its ladder is censored: it is left
+# out and counted (the fit then says nothing of it, and its median is biased low).
+#
+#   fragility::idaFit {im1 im2 ...}                        -> dict theta beta n
+#   fragility::bootstrap {im1 ...} ?samples? ?seed? ?p?    -> dict of the p and 1 - p quantiles of
+#                                                            theta and beta over resampled sets
+#                                                            (thetaLow thetaHigh betaLow betaHigh)
+
 namespace eval fragility {
   variable maxIterations 100
   variable tolerance 1e-12
@@ -126,4 +137,46 @@ proc fragility::scoring {u y w aName bName} {
     if {$change < $tolerance * (1.0 + abs($a) + abs($b))} { set converged 1 }
   }
   return $converged
+}
+
+proc fragility::idaFit {ims} {
+  set n [llength $ims]
+  if {$n == 0} { return [dict create theta NaN beta NaN n 0] }
+  set mean 0.0
+  foreach x $ims {
+    if {$x <= 0.0} { error "fragility::idaFit: intensity must be positive, got $x" }
+    set mean [expr {$mean + log($x) / $n}]
+  }
+  set var 0.0
+  foreach x $ims { set var [expr {$var + (log($x) - $mean) ** 2}] }
+  set beta NaN
+  if {$n > 1} { set beta [expr {sqrt($var / ($n - 1))}] }
+  return [dict create theta [expr {exp($mean)}] beta $beta n $n]
+}
+
+# Bootstrap (Efron and Tibshirani 1993, percentile intervals): the motions resampled with
+# replacement `samples` times (a linear congruential generator with the given seed, so that the
+# bands are the same on every run and machine), the fit repeated on each, and the p and 1 - p
+# quantiles of theta and beta over the samples.
+proc fragility::bootstrap {ims {samples 1000} {seed 12345} {p 0.05}} {
+  set n [llength $ims]
+  if {$n < 2} { return [dict create thetaLow NaN thetaHigh NaN betaLow NaN betaHigh NaN] }
+  set state $seed
+  set thetas {}; set betas {}
+  for {set b 0} {$b < $samples} {incr b} {
+    set pick {}
+    for {set i 0} {$i < $n} {incr i} {
+      # Numerical Recipes' 32-bit generator (ranqd1): a = 1664525, c = 1013904223
+      set state [expr {(1664525 * $state + 1013904223) % 4294967296}]
+      lappend pick [lindex $ims [expr {$state * $n / 4294967296}]]
+    }
+    set f [idaFit $pick]
+    lappend thetas [dict get $f theta]
+    lappend betas [dict get $f beta]
+  }
+  set thetas [lsort -real $thetas]; set betas [lsort -real $betas]
+  set lo [expr {int(floor($p * ($samples - 1)))}]
+  set hi [expr {int(ceil((1.0 - $p) * ($samples - 1)))}]
+  return [dict create thetaLow [lindex $thetas $lo] thetaHigh [lindex $thetas $hi] \
+      betaLow [lindex $betas $lo] betaHigh [lindex $betas $hi]]
 }

@@ -41,6 +41,7 @@ proc writeReport {results outDir {other {}} {ladder {}}} {
     puts $md [findings::markdown $motions $ladder [serviceLimits]]
     if {[llength $ladder] > 0} { puts $md [ladderTable $ladder] }
     puts $md [bridgeTable]
+    puts $md [whatDecides $outDir]
     puts $md "## The runs\n"
   }
   puts $md "Motion: [dict get $r0 motion], scaled by [dict get $r0 scale], at $::motionAngle degrees to the"
@@ -120,6 +121,24 @@ proc bridgeTable {} {
     }
   }
   return $out
+}
+
+# "What decides each finding": the stored result of the sensitivity study
+# (verification/bridge/sensitivity.tcl full, about 70 runs: too long for the main job), with its
+# figure copied beside the report; the section says where it comes from.
+proc whatDecides {outDir} {
+  set dir [file join $::reportToolsDir results]
+  set file [file join $dir sensitivity.md]
+  if {![file exists $file]} { return "## What decides each finding\n\n(No stored sensitivity study: run verification/bridge/sensitivity.tcl full.)\n" }
+  set fh [open $file]; set text [read $fh]; close $fh
+  # one level down: the study's title becomes this section's
+  set text [string map {"\n## " "\n### "} $text]
+  regsub {^# What decides each finding\n} $text "## What decides each finding\n\nFrom the stored sensitivity study (verification/bridge/tools/results/sensitivity.md; rerun it after changing the model):\n" text
+  if {[file exists [file join $dir sensitivity.png]]} {
+    file copy -force [file join $dir sensitivity.png] [file join $outDir sensitivity.png]
+    append text "\n!\[What decides each finding\](sensitivity.png)\n"
+  }
+  return $text
 }
 
 # The table of one motion's runs, one column per case.
