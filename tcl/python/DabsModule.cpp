@@ -251,7 +251,11 @@ PyObject* numberList(Tcl_Obj* o, bool asFloat, bool asInt) {
 PyObject* fromTcl(Tcl_Obj* o, ResultKind kind) {
   int size = 0;
   Tcl_GetStringFromObj(o, &size);
-  if (size == 0 && !isTclType(o, "list")) Py_RETURN_NONE;
+  if (size == 0) {
+    // No nodes, no elements: an empty list where a list is expected, else None.
+    if (kind == ResultKind::IntList || kind == ResultKind::FloatList) return PyList_New(0);
+    Py_RETURN_NONE;
+  }
   if (kind == ResultKind::String) return text(o);
   if (kind == ResultKind::Dictionary) {
     int n = 0;
