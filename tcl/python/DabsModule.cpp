@@ -125,17 +125,27 @@ class Words {
   Words(const Words&) = delete;
   Words& operator=(const Words&) = delete;
   ~Words() {
-    for (Tcl_Obj* o : words_) Tcl_DecrRefCount(o);
+    Tcl_Obj** w = data();
+    for (std::size_t i = 0; i < size_; ++i) Tcl_DecrRefCount(w[i]);
   }
   void push(Tcl_Obj* o) {
     Tcl_IncrRefCount(o);
+    if (words_.empty() && size_ < kInline) {
+      inline_[size_++] = o;
+      return;
+    }
+    if (words_.empty()) words_.assign(inline_, inline_ + size_);
     words_.push_back(o);
+    ++size_;
   }
-  int size() const { return static_cast<int>(words_.size()); }
-  Tcl_Obj** data() { return words_.data(); }
-  Tcl_Obj* back() const { return words_.back(); }
+  int size() const { return static_cast<int>(size_); }
+  Tcl_Obj** data() { return words_.empty() ? inline_ : words_.data(); }
 
  private:
+  // Most commands have a few words: those stay on the stack (no allocation per call).
+  static constexpr std::size_t kInline = 24;
+  Tcl_Obj* inline_[kInline] = {};
+  std::size_t size_ = 0;
   std::vector<Tcl_Obj*> words_;
 };
 
@@ -148,13 +158,22 @@ PyObject* raise(State* st, const std::string& message) {
 // prints a double with the shortest text that reads back to it, should a command need the text).
 // A list or tuple becomes a Tcl list. Returns null with a Python error set on a value Tcl has no
 // form for.
-Tcl_Obj* toTcl(State* st, PyObject* o, const std::string& where) {
+/// Where an argument stands, for error messages (built only when one is needed).
+struct ArgPlace {
+  std::string_view command;
+  Py_ssize_t position;  ///< 1-based, among the Python arguments
+  std::string text() const {
+    return std::string(command) + ": argument " + std::to_string(position);
+  }
+};
+
+Tcl_Obj* toTcl(State* st, PyObject* o, const ArgPlace& where) {
   if (PyFloat_Check(o)) return Tcl_NewDoubleObj(PyFloat_AS_DOUBLE(o));
   if (PyLong_Check(o)) {
     int overflow = 0;
     const long long v = PyLong_AsLongLongAndOverflow(o, &overflow);
     if (overflow != 0) {
-      raise(st, where + ": integer out of range");
+      raise(st, where.text() + ": integer out of range");
       return nullptr;
     }
     return Tcl_NewWideIntObj(static_cast<Tcl_WideInt>(v));
@@ -193,7 +212,8 @@ Tcl_Obj* toTcl(State* st, PyObject* o, const std::string& where) {
     if (v == -1.0 && PyErr_Occurred()) return nullptr;
     return Tcl_NewDoubleObj(v);
   }
-  raise(st, where + ": expected a number, a string or a list of them, got " + Py_TYPE(o)->tp_name);
+  raise(st, where.text() + ": expected a number, a string or a list of them, got " +
+                Py_TYPE(o)->tp_name);
   return nullptr;
 }
 
@@ -249,8 +269,14 @@ PyObject* numberList(Tcl_Obj* o, bool asFloat, bool asInt) {
 
 // Tcl result -> Python value by the command's convention; an empty result is None.
 PyObject* fromTcl(Tcl_Obj* o, ResultKind kind) {
-  int size = 0;
-  Tcl_GetStringFromObj(o, &size);
+  // Numbers are never empty; asking another value for its length may build its text.
+  int size = 1;
+  if (!isTclType(o, "double") && !isTclType(o, "int")) {
+    if (isTclType(o, "list"))
+      Tcl_ListObjLength(nullptr, o, &size);
+    else
+      Tcl_GetStringFromObj(o, &size);
+  }
   if (size == 0) {
     // No nodes, no elements: an empty list where a list is expected, else None.
     if (kind == ResultKind::IntList || kind == ResultKind::FloatList) return PyList_New(0);
@@ -386,11 +412,11 @@ bool isNumber(PyObject* o) { return PyFloat_Check(o) || PyLong_Check(o); }
 // gathered into that list.
 bool convertArgs(State* st, Command* c, PyObject* const* args, Py_ssize_t nargs, Words& words) {
   words.push(c->name);
-  const std::string name(c->entry->name);
+  const std::string_view name = c->entry->name;
   int keepLists = 0;
   for (Py_ssize_t i = 0; i < nargs; ++i) {
     PyObject* a = args[i];
-    const std::string where = name + ": argument " + std::to_string(i + 1);
+    const ArgPlace where{name, i + 1};
     if (name == "timeSeries" && (isWord(a, "-values") || isWord(a, "-time")) && i + 1 < nargs &&
         isNumber(args[i + 1])) {
       Tcl_Obj* flag = toTcl(st, a, where);
@@ -442,9 +468,9 @@ PyObject* commandCall(PyObject* self, PyObject* const* args, size_t nargsf, PyOb
   State* st = stateOf(c->module);
   if (st == nullptr || st->interp == nullptr) return raise(st, "dabs: the module was shut down");
   if (!ownerThread(st)) return nullptr;
-  const std::string name(c->entry->name);
+  const std::string_view name = c->entry->name;
   if (kwnames != nullptr && PyTuple_GET_SIZE(kwnames) > 0)
-    return raise(st, name +
+    return raise(st, std::string(name) +
                          ": keyword arguments are not accepted (pass flags as strings, e.g. "
                          "'-mass', 1.0)");
   const Py_ssize_t nargs = PyVectorcall_NARGS(nargsf);

@@ -54,7 +54,7 @@ def plot(times, gaps, png, joint_gap):
     fig, ax = plt.subplots(figsize=(9, 4))
     for name, values in gaps.items():
         ax.plot(times, values, label=name, linewidth=0.8)
-    ax.axhline(-joint_gap, color='k', linestyle='--', linewidth=0.6, label='joint gap closed')
+    ax.axhline(-joint_gap, color='k', linestyle='--', linewidth=0.6, label='-joint gap: the girder axes meet')
     ax.set_xlabel('time (s)')
     ax.set_ylabel('relative displacement of the girder ends (m)')
     ax.set_title('Pound case: joint gap histories (bridge.py)')
