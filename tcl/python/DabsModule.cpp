@@ -167,6 +167,13 @@ struct ArgPlace {
   }
 };
 
+/// Lists, tuples and other sequences of values (a numpy array, a range), but not text.
+bool isSequence(PyObject* o) {
+  if (PyList_Check(o) || PyTuple_Check(o)) return true;
+  return PySequence_Check(o) && !PyUnicode_Check(o) && !PyBytes_Check(o) && !PyByteArray_Check(o) &&
+         !PyIndex_Check(o);
+}
+
 Tcl_Obj* toTcl(State* st, PyObject* o, const ArgPlace& where) {
   if (PyFloat_Check(o)) return Tcl_NewDoubleObj(PyFloat_AS_DOUBLE(o));
   if (PyLong_Check(o)) {
@@ -184,19 +191,23 @@ Tcl_Obj* toTcl(State* st, PyObject* o, const ArgPlace& where) {
     if (text == nullptr) return nullptr;
     return Tcl_NewStringObj(text, static_cast<int>(size));
   }
-  if (PyList_Check(o) || PyTuple_Check(o)) {
+  if (isSequence(o)) {
+    PyObject* seq = PySequence_Fast(o, "not a sequence");
+    if (seq == nullptr) return nullptr;
     // Returned with no reference held (as Tcl_New*Obj returns); freed here only on failure.
     Tcl_Obj* list = Tcl_NewListObj(0, nullptr);
-    const Py_ssize_t n = PySequence_Fast_GET_SIZE(o);
+    const Py_ssize_t n = PySequence_Fast_GET_SIZE(seq);
     for (Py_ssize_t i = 0; i < n; ++i) {
-      Tcl_Obj* item = toTcl(st, PySequence_Fast_GET_ITEM(o, i), where);
+      Tcl_Obj* item = toTcl(st, PySequence_Fast_GET_ITEM(seq, i), where);
       if (item == nullptr) {
+        Py_DECREF(seq);
         Tcl_IncrRefCount(list);
         Tcl_DecrRefCount(list);
         return nullptr;
       }
       Tcl_ListObjAppendElement(nullptr, list, item);
     }
+    Py_DECREF(seq);
     return list;
   }
   // numpy scalars and other number types: integers by __index__, reals by __float__.
@@ -404,7 +415,12 @@ bool isListOptionFlag(std::string_view command, PyObject* o, int& lists) {
   return false;
 }
 
-bool isNumber(PyObject* o) { return PyFloat_Check(o) || PyLong_Check(o); }
+bool isNumber(PyObject* o) {
+  if (PyFloat_Check(o) || PyLong_Check(o)) return true;
+  if (PyUnicode_Check(o) || isSequence(o)) return false;
+  return PyIndex_Check(o) ||
+         (Py_TYPE(o)->tp_as_number != nullptr && Py_TYPE(o)->tp_as_number->nb_float != nullptr);
+}
 
 // Python arguments -> Tcl words. A list or tuple is spread into words, as OpenSeesPy reads
 // `fix(1, [1, 1, 1])`, except where Tcl reads one list (kListOptions, kNoSpread); after
@@ -431,17 +447,23 @@ bool convertArgs(State* st, Command* c, PyObject* const* args, Py_ssize_t nargs,
       }
       continue;
     }
-    const bool spread = (PyList_Check(a) || PyTuple_Check(a)) && !c->noSpread && keepLists == 0;
+    const bool spread = !c->noSpread && keepLists == 0 && isSequence(a);
     if (keepLists > 0) --keepLists;
     int lists = 0;
     if (isListOptionFlag(name, a, lists)) keepLists = lists;
     if (spread) {
-      const Py_ssize_t n = PySequence_Fast_GET_SIZE(a);
+      PyObject* seq = PySequence_Fast(a, "not a sequence");
+      if (seq == nullptr) return false;
+      const Py_ssize_t n = PySequence_Fast_GET_SIZE(seq);
       for (Py_ssize_t k = 0; k < n; ++k) {
-        Tcl_Obj* v = toTcl(st, PySequence_Fast_GET_ITEM(a, k), where);
-        if (v == nullptr) return false;
+        Tcl_Obj* v = toTcl(st, PySequence_Fast_GET_ITEM(seq, k), where);
+        if (v == nullptr) {
+          Py_DECREF(seq);
+          return false;
+        }
         words.push(v);
       }
+      Py_DECREF(seq);
     } else {
       Tcl_Obj* v = toTcl(st, a, where);
       if (v == nullptr) return false;

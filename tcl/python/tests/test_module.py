@@ -2,6 +2,7 @@
 # The Python module against closed forms and against the same model in Tcl (through dabs.tcl in
 # the module's own interpreter, or through the dabs program): conversions, return types, blocks,
 # errors.
+import array
 import math
 import threading
 
@@ -29,6 +30,12 @@ def test_every_command_of_the_table_is_a_function():
         assert dabs.tcl('info commands ' + name) == name
     # The help text is the Tcl usage line.
     assert dabs.node.__doc__.startswith('node tag x')
+    # A script sourced through dabs.tcl sees what `dabs script.tcl` with no arguments sees.
+    assert dabs.tcl('list $argc $argv [package present dabs]') == '0 {} 0.1.0'
+    # Tcl's own commands and variables are there; `wipe` leaves them, as in Tcl.
+    dabs.tcl('proc twice {x} { return [expr {2 * $x}] }')
+    dabs.wipe()
+    assert dabs.tcl('twice 21') == '42'
 
 
 def test_truss_and_zero_length_spring_against_closed_form():
@@ -418,10 +425,17 @@ def test_path_values_as_words_or_as_a_list():
     dabs.timeSeries('Path', 1, '-dt', 0.5, '-values', *values)
     dabs.timeSeries('Path', 2, '-dt', 0.5, '-values', values)
     dabs.timeSeries('Path', 3, '-time', [0.0, 0.5, 1.0, 1.5], '-values', values)
-    for tag in (1, 2, 3):
+    # Any sequence of numbers (array.array here, a numpy array alike) is a list.
+    dabs.timeSeries('Path', 4, '-dt', 0.5, '-values', array.array('d', values))
+    for tag in (1, 2, 3, 4):
         dabs.pattern('Plain', tag, tag)
     dabs.setTime(1.25)
-    assert [dabs.getLoadFactor(t) for t in (1, 2, 3)] == [1.625, 1.625, 1.625]
+    assert [dabs.getLoadFactor(t) for t in (1, 2, 3, 4)] == [1.625] * 4
+    dabs.node(1, 0.0)
+    dabs.fix(1, range(1, 2))  # spread into words like a list
+    dabs.node(2, 1.0)
+    dabs.fix(2, (1,))
+    assert dabs.tcl('llength [getNodeTags]') == '2'
 
 
 def test_only_the_importing_thread_may_call():
