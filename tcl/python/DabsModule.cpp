@@ -192,14 +192,21 @@ Tcl_Obj* toTcl(State* st, PyObject* o, const ArgPlace& where) {
     return Tcl_NewStringObj(text, static_cast<int>(size));
   }
   if (isSequence(o)) {
-    PyObject* seq = PySequence_Fast(o, "not a sequence");
+    // A tuple copy: converting an element may run Python code (__float__) that changes a list.
+    PyObject* seq = PySequence_Tuple(o);
     if (seq == nullptr) return nullptr;
+    // A list that holds itself would recurse for ever.
+    if (Py_EnterRecursiveCall(" while converting a nested list for Tcl") != 0) {
+      Py_DECREF(seq);
+      return nullptr;
+    }
     // Returned with no reference held (as Tcl_New*Obj returns); freed here only on failure.
     Tcl_Obj* list = Tcl_NewListObj(0, nullptr);
-    const Py_ssize_t n = PySequence_Fast_GET_SIZE(seq);
+    const Py_ssize_t n = PyTuple_GET_SIZE(seq);
     for (Py_ssize_t i = 0; i < n; ++i) {
-      Tcl_Obj* item = toTcl(st, PySequence_Fast_GET_ITEM(seq, i), where);
+      Tcl_Obj* item = toTcl(st, PyTuple_GET_ITEM(seq, i), where);
       if (item == nullptr) {
+        Py_LeaveRecursiveCall();
         Py_DECREF(seq);
         Tcl_IncrRefCount(list);
         Tcl_DecrRefCount(list);
@@ -207,6 +214,7 @@ Tcl_Obj* toTcl(State* st, PyObject* o, const ArgPlace& where) {
       }
       Tcl_ListObjAppendElement(nullptr, list, item);
     }
+    Py_LeaveRecursiveCall();
     Py_DECREF(seq);
     return list;
   }
@@ -452,11 +460,11 @@ bool convertArgs(State* st, Command* c, PyObject* const* args, Py_ssize_t nargs,
     int lists = 0;
     if (isListOptionFlag(name, a, lists)) keepLists = lists;
     if (spread) {
-      PyObject* seq = PySequence_Fast(a, "not a sequence");
+      PyObject* seq = PySequence_Tuple(a);
       if (seq == nullptr) return false;
-      const Py_ssize_t n = PySequence_Fast_GET_SIZE(seq);
+      const Py_ssize_t n = PyTuple_GET_SIZE(seq);
       for (Py_ssize_t k = 0; k < n; ++k) {
-        Tcl_Obj* v = toTcl(st, PySequence_Fast_GET_ITEM(seq, k), where);
+        Tcl_Obj* v = toTcl(st, PyTuple_GET_ITEM(seq, k), where);
         if (v == nullptr) {
           Py_DECREF(seq);
           return false;
@@ -646,6 +654,8 @@ PyMethodDef kModuleMethods[] = {
 
 int moduleExec(PyObject* module) {
   State* st = stateOf(module);
+  // Python zero-fills the state; an interpreter already there means the module was set up.
+  if (st->interp != nullptr) return 0;
   new (st) State();
   st->thread = PyThread_get_thread_ident();
   st->error = PyErr_NewExceptionWithDoc(

@@ -257,6 +257,12 @@ def test_failed_command_raises_with_the_tcl_message_and_leaves_the_model():
         dabs.node(3, 0.0, 0.0, mass=1.0)
     with pytest.raises(dabs.OpenSeesError, match='integer out of range'):
         dabs.node(2 ** 70, 0.0, 0.0)
+    with pytest.raises(dabs.OpenSeesError, match='argument 1 \\(tag\\) expected an integer from'):
+        dabs.node(2 ** 40, 0.0, 0.0)
+    looped = [1.0]
+    looped.append(looped)
+    with pytest.raises(RecursionError):
+        dabs.node(3, 0.0, looped)
     assert dabs.getNodeTags() == [1, 2]
     with pytest.raises(dabs.OpenSeesError, match='boom'):
         dabs.tcl('error boom')
