@@ -110,7 +110,6 @@ State* stateOf(PyObject* module) { return static_cast<State*>(PyModule_GetState(
 /// One Python function per Tcl command, e.g. dabs.nodeDisp.
 struct Command {
   PyObject_HEAD vectorcallfunc vectorcall;
-  PyObject* module;                      ///< strong reference, for the state
   Tcl_Obj* name;                         ///< the command word; Tcl caches the command lookup in it
   const dabs::tcl::CommandEntry* entry;  ///< the table row: name and usage (static storage)
   ResultKind kind;
@@ -356,13 +355,10 @@ bool ownerThread(State* st) {
 // Python code runs inside a command and only the owning thread may enter, so nothing else touches
 // the interpreter meanwhile.
 int evalWords(State* st, Words& words, bool longRun) {
-  int code = TCL_OK;
-  if (longRun) {
-    Py_BEGIN_ALLOW_THREADS code = Tcl_EvalObjv(st->interp, words.size(), words.data(), 0);
-    Py_END_ALLOW_THREADS
-  } else {
-    code = Tcl_EvalObjv(st->interp, words.size(), words.data(), 0);
-  }
+  if (!longRun) return Tcl_EvalObjv(st->interp, words.size(), words.data(), 0);
+  PyThreadState* saved = PyEval_SaveThread();
+  const int code = Tcl_EvalObjv(st->interp, words.size(), words.data(), 0);
+  PyEval_RestoreThread(saved);
   return code;
 }
 
@@ -495,7 +491,9 @@ Tcl_Obj* lineOf(Words& words) { return Tcl_NewListObj(words.size(), words.data()
 
 PyObject* commandCall(PyObject* self, PyObject* const* args, size_t nargsf, PyObject* kwnames) {
   auto* c = reinterpret_cast<Command*>(self);
-  State* st = stateOf(c->module);
+  // The type was made for this module (PyType_FromModuleAndSpec): no reference cycle from the
+  // functions back to the module is needed to find its state.
+  auto* st = static_cast<State*>(PyType_GetModuleState(Py_TYPE(self)));
   if (st == nullptr || st->interp == nullptr) return raise(st, "dabs: the module was shut down");
   if (!ownerThread(st)) return nullptr;
   const std::string_view name = c->entry->name;
@@ -537,7 +535,6 @@ void commandDealloc(PyObject* self) {
   auto* c = reinterpret_cast<Command*>(self);
   PyTypeObject* type = Py_TYPE(self);
   if (c->name != nullptr) Tcl_DecrRefCount(c->name);
-  Py_XDECREF(c->module);
   type->tp_free(self);
   Py_DECREF(type);
 }
@@ -586,13 +583,11 @@ PyType_Spec kCommandSpec = {"dabs.Command", sizeof(Command), 0,
                                 Py_TPFLAGS_DISALLOW_INSTANTIATION | Py_TPFLAGS_IMMUTABLETYPE,
                             kCommandSlots};
 
-PyObject* makeCommand(PyObject* module, State* st, const dabs::tcl::CommandEntry* entry) {
+PyObject* makeCommand(State* st, const dabs::tcl::CommandEntry* entry) {
   auto* type = reinterpret_cast<PyTypeObject*>(st->commandType);
   auto* c = reinterpret_cast<Command*>(type->tp_alloc(type, 0));
   if (c == nullptr) return nullptr;
   c->vectorcall = commandCall;
-  Py_INCREF(module);
-  c->module = module;
   c->entry = entry;
   c->name = Tcl_NewStringObj(entry->name.data(), static_cast<int>(entry->name.size()));
   Tcl_IncrRefCount(c->name);
@@ -617,9 +612,10 @@ PyObject* tclEval(PyObject* module, PyObject* arg) {
   if (!closeBlock(st)) return nullptr;
   Tcl_Obj* obj = Tcl_NewStringObj(script, static_cast<int>(size));
   Tcl_IncrRefCount(obj);
-  int code = TCL_OK;
-  Py_BEGIN_ALLOW_THREADS code = Tcl_EvalObjEx(st->interp, obj, TCL_EVAL_GLOBAL);
-  Py_END_ALLOW_THREADS Tcl_DecrRefCount(obj);
+  PyThreadState* saved = PyEval_SaveThread();
+  int code = Tcl_EvalObjEx(st->interp, obj, TCL_EVAL_GLOBAL);
+  PyEval_RestoreThread(saved);
+  Tcl_DecrRefCount(obj);
   // What the script wrote with puts appears before Python's next output.
   if (Tcl_Channel out = Tcl_GetStdChannel(TCL_STDOUT)) Tcl_Flush(out);
   if (code == TCL_RETURN) code = TCL_OK;
@@ -691,7 +687,7 @@ int moduleExec(PyObject* module) {
   if (names == nullptr) return -1;
   for (const dabs::tcl::CommandEntry* e : dabs::tcl::commandEntries()) {
     const std::string pyName(e->name);
-    PyObject* fn = makeCommand(module, st, e);
+    PyObject* fn = makeCommand(st, e);
     PyObject* n = fromView(e->name);
     if (fn == nullptr || n == nullptr || PyList_Append(names, n) != 0 ||
         PyModule_AddObject(module, pyName.c_str(), fn) != 0) {
