@@ -25,7 +25,7 @@ enum class ResultKind {
   Generic,     ///< int/float/list by the Tcl object's type; a non-numeric string stays a str
   Vector,      ///< nodeDisp & co: a list of floats for the whole vector, a float for one dof
   FloatList,   ///< eigen, eleResponse: always a list of floats (an int status code stays an int)
-  IntList,     ///< getNodeTags, getEleTags, eleNodes, pounding: always a list of ints
+  IntList,     ///< getNodeTags, getEleTags, eleNodes, pounding, getNDM: always a list of ints
   Float,       ///< getTime, getLoadFactor
   Dictionary,  ///< analysisStatistics, contactStepping: a dict of numbers
   String,      ///< version
@@ -53,6 +53,8 @@ constexpr CommandKind kResultKinds[] = {
     {"getEleTags", ResultKind::IntList},
     {"eleNodes", ResultKind::IntList},
     {"pounding", ResultKind::IntList},
+    {"getNDM", ResultKind::IntList},  // OpenSeesPy returns [ndm], [ndf]
+    {"getNDF", ResultKind::IntList},
     {"getTime", ResultKind::Float},
     {"getLoadFactor", ResultKind::Float},
     {"analysisStatistics", ResultKind::Dictionary},

@@ -65,3 +65,11 @@ def test_python_script_matches_its_tcl_twin(script, tmp_path):
 def test_python_script_matches_openseespy(script):
     reference = parse((HERE / 'reference' / (script + '-openseespy.csv')).read_text(), ',')
     assert_rows_equal(python_rows(script), reference, OPENSEES)
+
+
+def test_return_types_are_openseespy_types():
+    import return_types
+    expected = [line.split(': ', 1) for line in
+                (HERE / 'reference' / 'return-types-openseespy.txt').read_text().splitlines()
+                if line and not line.startswith('#')]
+    assert [list(t) for t in return_types.types(dabs)] == expected

@@ -81,7 +81,7 @@ def test_return_types_follow_openseespy():
     dabs.element('elasticBeamColumn', 1, 1, 2, 0.1, 2.0e8, 1.0e-3, 1)
     assert dabs.getNodeTags() == [1, 2] and all(type(t) is int for t in dabs.getNodeTags())
     assert dabs.getEleTags() == [1] and dabs.eleNodes(1) == [1, 2]
-    assert dabs.getNDM() == 2 and type(dabs.getNDF()) is int
+    assert dabs.getNDM() == [2] and dabs.getNDF() == [3]  # lists, as OpenSeesPy returns them
     disp = dabs.nodeDisp(2)
     assert type(disp) is list and len(disp) == 3 and all(type(v) is float for v in disp)
     assert type(dabs.nodeDisp(2, 1)) is float
