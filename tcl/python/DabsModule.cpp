@@ -372,8 +372,9 @@ PyObject* tclError(State* st) {
 
 // Closes an open `section Fiber` block: runs the section command with the collected calls as its
 // body, as Tcl would have run `section Fiber tag .. { patch ..; layer .. }`. Returns false with
-// OpenSeesError set when the section fails (the section is then not defined).
-bool closeBlock(State* st) {
+// OpenSeesError set when the section fails (the section is then not defined); the message is
+// Tcl's, followed by which call closed the block, since that call raises it and does not run.
+bool closeBlock(State* st, std::string_view closer) {
   if (st->blockHead == nullptr) return true;
   Tcl_Obj* head = st->blockHead;
   Tcl_Obj* body = st->blockBody;
@@ -388,7 +389,11 @@ bool closeBlock(State* st) {
   Tcl_DecrRefCount(head);
   Tcl_DecrRefCount(body);
   if (evalWords(st, words, false) != TCL_OK) {
-    tclError(st);
+    const std::string message = std::string(Tcl_GetStringResult(st->interp)) +
+                                " (the section block was closed by the call of " +
+                                std::string(closer) + ", which was not run)";
+    Tcl_ResetResult(st->interp);
+    raise(st, message);
     return false;
   }
   Tcl_ResetResult(st->interp);
@@ -515,7 +520,7 @@ PyObject* commandCall(PyObject* self, PyObject* const* args, size_t nargsf, PyOb
     Tcl_DecrRefCount(line);
     Py_RETURN_NONE;
   }
-  if (!closeBlock(st)) return nullptr;
+  if (!closeBlock(st, name)) return nullptr;
   if (name == "section" && nargs >= 1 &&
       (isWord(args[0], "Fiber") || isWord(args[0], "fiberSec"))) {
     // The section is defined when its block closes: at the next call that is not patch, layer or
@@ -611,7 +616,7 @@ PyObject* tclEval(PyObject* module, PyObject* arg) {
   Py_ssize_t size = 0;
   const char* script = PyUnicode_AsUTF8AndSize(arg, &size);
   if (script == nullptr) return nullptr;
-  if (!closeBlock(st)) return nullptr;
+  if (!closeBlock(st, "tcl")) return nullptr;
   Tcl_Obj* obj = Tcl_NewStringObj(script, static_cast<int>(size));
   Tcl_IncrRefCount(obj);
   PyThreadState* saved = PyEval_SaveThread();

@@ -300,8 +300,12 @@ def test_error_in_a_section_block_surfaces_where_the_block_closes():
     dabs.uniaxialMaterial('Elastic', 1, 100.0)
     dabs.section('Fiber', 5)
     dabs.patch('rect', 99, 2, 2, -0.1, -0.1, 0.1, 0.1)  # no material 99: found when the block closes
-    with pytest.raises(dabs.OpenSeesError, match='section Fiber 5.*99'):
+    with pytest.raises(dabs.OpenSeesError) as raised:
         dabs.node(1, 0.0, 0.0)
+    tcl_message = dabs.tcl('catch {section Fiber 5 { patch rect 99 2 2 -0.1 -0.1 0.1 0.1 }} m; set m')
+    assert str(raised.value) == (tcl_message + ' (the section block was closed by the call of node,'
+                                 ' which was not run)')
+    assert 'section Fiber 5' in tcl_message and '99' in tcl_message
     assert dabs.getNodeTags() == []  # the closing call was not run either
     dabs.section('Fiber', 5)  # the failed section was not defined: its tag is free
     dabs.fiber(0.0, 0.0, 0.01, 1)
