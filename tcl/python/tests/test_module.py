@@ -497,3 +497,16 @@ def test_analyze_lets_other_python_threads_run():
         done.set()
         t.join()
     assert during > 1000
+
+
+def test_threads_and_dabs_threads_work_as_in_tcl():
+    import os
+    import subprocess
+    import sys
+    script = 'import dabs; print(dabs.threads()); dabs.threads(1); print(dabs.threads())'
+    done = subprocess.run([sys.executable, '-c', script], capture_output=True, text=True,
+                          timeout=60, env=dict(os.environ, DABS_THREADS='2'))
+    assert done.returncode == 0, done.stderr
+    assert done.stdout.split() == ['2', '1']
+    with pytest.raises(dabs.OpenSeesError, match='threads: argument 1 \\(n\\).*must be 1 to 256'):
+        dabs.threads(0)
