@@ -1,12 +1,14 @@
 # SPDX-License-Identifier: MIT
-# The bridge case study's pound case run from Python through the dabs module: bridge.tcl is
-# sourced as a library (::bridgeLibraryOnly), its runCase runs the case in the module's
-# interpreter, and the joint gap histories it writes are plotted with matplotlib when that is
-# installed.
-#
-#   PYTHONPATH=build/python python3 verification/bridge/bridge.py ?--duration s? ?--out dir? ?--motion m?
-#
-# Prints the run's completion, its peak joint gaps and the plot's path (or why there is none).
+"""The bridge case study's pound case run from Python through the dabs module.
+
+bridge.tcl is sourced as a library (::bridgeLibraryOnly), its runCase runs the case in the
+module's interpreter, and the joint gap histories it writes are plotted with matplotlib when that
+is installed.
+
+    PYTHONPATH=build/python python3 verification/bridge/bridge.py ?--duration s? ?--out dir? ?--motion m?
+
+Prints the run's completion, its peak joint gaps and the plot's path (or why there is none).
+"""
 import argparse
 import csv
 import pathlib
@@ -66,7 +68,7 @@ def plot(times, gaps, png, joint_gap):
 
 
 def main(argv=None):
-    parser = argparse.ArgumentParser(description=__doc__)
+    parser = argparse.ArgumentParser(description=__doc__.split('\n')[0])
     parser.add_argument('--duration', type=float, default=20.0, help='seconds of motion (20)')
     parser.add_argument('--out', default='bridge-py-out', help='output folder (bridge-py-out)')
     parser.add_argument('--motion', default='auto', help='auto | record | pulse | file.AT2')
