@@ -493,6 +493,20 @@ bool convertArgs(State* st, Command* c, PyObject* const* args, Py_ssize_t nargs,
   return true;
 }
 
+// Whether `section(...)` opens a block: a fiber section given without its body, i.e. nothing
+// after the tag but its options (`-GJ GJ`, `-noCentroid`). A body given as a Tcl script string,
+// as in Tcl, runs at once.
+bool opensFiberBlock(PyObject* const* args, Py_ssize_t nargs) {
+  if (nargs < 1 || !(isWord(args[0], "Fiber") || isWord(args[0], "fiberSec"))) return false;
+  for (Py_ssize_t i = 2; i < nargs; ++i) {
+    if (isWord(args[i], "-GJ"))
+      ++i;
+    else if (!isWord(args[i], "-noCentroid"))
+      return false;
+  }
+  return true;
+}
+
 // A Tcl list of the words, as one line of a section body.
 Tcl_Obj* lineOf(Words& words) { return Tcl_NewListObj(words.size(), words.data()); }
 
@@ -521,8 +535,7 @@ PyObject* commandCall(PyObject* self, PyObject* const* args, size_t nargsf, PyOb
     Py_RETURN_NONE;
   }
   if (!closeBlock(st, name)) return nullptr;
-  if (name == "section" && nargs >= 1 &&
-      (isWord(args[0], "Fiber") || isWord(args[0], "fiberSec"))) {
+  if (name == "section" && opensFiberBlock(args, nargs)) {
     // The section is defined when its block closes: at the next call that is not patch, layer or
     // fiber.
     st->blockHead = lineOf(words);

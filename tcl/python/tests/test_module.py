@@ -279,6 +279,9 @@ def test_section_block_is_the_tcl_body():
     dabs.fiber(0.1, 0.0, 0.002, 1)
     dabs.tcl('section Fiber 2 { patch quad 1 4 2 -0.2 -0.1 0.2 -0.1 0.2 0.1 -0.2 0.1;'
              ' layer circ 1 6 0.001 0.0 0.0 0.05; fiber 0.1 0.0 0.002 1 }')
+    # A body given as a Tcl script, as in Tcl, defines the section at once.
+    dabs.section('Fiber', 3, '-noCentroid', 'fiber 0.0 0.0 0.01 1')
+    assert 'section 3 already exists' in dabs.tcl('catch {section Fiber 3 {}} m; set m')
     # Two identical cantilevers on the two sections give the same tip displacement, bit for bit.
     dabs.geomTransf('Linear', 1)
     for k, sec in ((0, 1), (10, 2)):
