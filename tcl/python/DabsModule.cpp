@@ -700,7 +700,8 @@ int moduleExec(PyObject* module) {
                  Tcl_GetStringResult(st->interp));
     return -1;
   }
-  Tcl_PkgProvide(st->interp, "dabs", "0.1.0");
+  Tcl_PkgProvide(st->interp, "dabs", DABS_VERSION);
+  if (PyModule_AddStringConstant(module, "__version__", DABS_VERSION) != 0) return -1;
 
   // One function per row of the command table, so a new Tcl command appears here unedited.
   PyObject* names = PyList_New(0);

@@ -102,7 +102,7 @@ def test_return_types_follow_openseespy():
     assert type(dabs.getTime()) is float
     assert dabs.getTime() == float(dabs.tcl('getTime %.17g'))
     assert dabs.getTime() != round(dabs.getTime(), 6)
-    assert type(dabs.version()) is str
+    assert type(dabs.version()) is str and dabs.version().endswith(dabs.__version__)
     stats = dabs.analysisStatistics()
     assert stats['steps'] == 3 and type(stats['iterations']) is int
     assert dabs.wipeAnalysis() is None
