@@ -364,6 +364,20 @@ int evalWords(State* st, Words& words, bool longRun) {
   return code;
 }
 
+// Python's sys.stdout and Tcl's stdout channel buffer on their own: flushing Python's before Tcl
+// writes and Tcl's after keeps lines of `print(..)` and of `puts`/`printModel` in call order.
+void flushPythonStdout() {
+  PyObject* out = PySys_GetObject("stdout");  // borrowed
+  if (out == nullptr || out == Py_None) return;
+  PyObject* r = PyObject_CallMethod(out, "flush", nullptr);
+  if (r == nullptr) PyErr_Clear();  // a closed or odd stdout is not the command's failure
+  Py_XDECREF(r);
+}
+
+void flushTclStdout() {
+  if (Tcl_Channel out = Tcl_GetStdChannel(TCL_STDOUT)) Tcl_Flush(out);
+}
+
 PyObject* tclError(State* st) {
   PyErr_SetString(st->error, Tcl_GetStringResult(st->interp));
   Tcl_ResetResult(st->interp);
@@ -545,7 +559,11 @@ PyObject* commandCall(PyObject* self, PyObject* const* args, size_t nargsf, PyOb
     Py_RETURN_NONE;
   }
   const bool longRun = name == "analyze" || name == "eigen" || name == "ensemble";
-  if (evalWords(st, words, longRun) != TCL_OK) return tclError(st);
+  const bool writes = name == "print" || name == "printModel";
+  if (writes) flushPythonStdout();
+  const int code = evalWords(st, words, longRun);
+  if (writes) flushTclStdout();
+  if (code != TCL_OK) return tclError(st);
   PyObject* result = fromTcl(Tcl_GetObjResult(st->interp), c->kind);
   Tcl_ResetResult(st->interp);
   return result;
@@ -632,12 +650,12 @@ PyObject* tclEval(PyObject* module, PyObject* arg) {
   if (!closeBlock(st, "tcl")) return nullptr;
   Tcl_Obj* obj = Tcl_NewStringObj(script, static_cast<int>(size));
   Tcl_IncrRefCount(obj);
+  flushPythonStdout();
   PyThreadState* saved = PyEval_SaveThread();
   int code = Tcl_EvalObjEx(st->interp, obj, TCL_EVAL_GLOBAL);
   PyEval_RestoreThread(saved);
   Tcl_DecrRefCount(obj);
-  // What the script wrote with puts appears before Python's next output.
-  if (Tcl_Channel out = Tcl_GetStdChannel(TCL_STDOUT)) Tcl_Flush(out);
+  flushTclStdout();
   if (code == TCL_RETURN) code = TCL_OK;
   if (code != TCL_OK) return tclError(st);
   PyObject* result = text(Tcl_GetObjResult(st->interp));
@@ -649,7 +667,7 @@ PyObject* tclEval(PyObject* module, PyObject* arg) {
 void shutdownState(State* st) {
   if (st == nullptr || st->interp == nullptr) return;
   dropBlock(st);
-  if (Tcl_Channel out = Tcl_GetStdChannel(TCL_STDOUT)) Tcl_Flush(out);
+  flushTclStdout();
   Tcl_DeleteInterp(st->interp);
   st->interp = nullptr;
 }

@@ -513,3 +513,23 @@ def test_threads_and_dabs_threads_work_as_in_tcl():
     assert done.stdout.split() == ['2', '1']
     with pytest.raises(dabs.OpenSeesError, match='threads: argument 1 \\(n\\).*must be 1 to 256'):
         dabs.threads(0)
+
+
+def test_python_and_tcl_output_keep_call_order():
+    import os
+    import subprocess
+    import sys
+    script = ('import dabs\n'
+              'print("a")\n'
+              'dabs.tcl("puts b")\n'
+              'print("c")\n'
+              'dabs.model("basic", "-ndm", 1, "-ndf", 1)\n'
+              'dabs.node(7, 0.5)\n'
+              'dabs.printModel("-node", 7)\n'
+              'print("d")\n')
+    done = subprocess.run([sys.executable, '-c', script], capture_output=True, text=True,
+                          timeout=60, env=dict(os.environ))
+    assert done.returncode == 0, done.stderr
+    lines = [line for line in done.stdout.splitlines() if line.strip()]
+    assert lines[:3] == ['a', 'b', 'c'] and lines[-1] == 'd'
+    assert any('7' in line for line in lines[3:-1])  # the node's print between c and d
