@@ -151,7 +151,9 @@ class Words {
 };
 
 PyObject* raise(State* st, const std::string& message) {
-  PyErr_SetString(st->error, message.c_str());
+  // After the module was cleared at interpreter shutdown there is no OpenSeesError left to raise.
+  PyErr_SetString(st != nullptr && st->error != nullptr ? st->error : PyExc_RuntimeError,
+                  message.c_str());
   return nullptr;
 }
 
@@ -379,7 +381,7 @@ void flushTclStdout() {
 }
 
 PyObject* tclError(State* st) {
-  PyErr_SetString(st->error, Tcl_GetStringResult(st->interp));
+  raise(st, Tcl_GetStringResult(st->interp));
   Tcl_ResetResult(st->interp);
   return nullptr;
 }

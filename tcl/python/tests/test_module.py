@@ -533,3 +533,19 @@ def test_python_and_tcl_output_keep_call_order():
     lines = [line for line in done.stdout.splitlines() if line.strip()]
     assert lines[:3] == ['a', 'b', 'c'] and lines[-1] == 'd'
     assert any('7' in line for line in lines[3:-1])  # the node's print between c and d
+
+
+def test_calls_after_shutdown_raise_instead_of_crashing():
+    import subprocess
+    import sys
+    script = ('import dabs\n'
+              'dabs._shutdown()\n'
+              'for call in (lambda: dabs.getNodeTags(), lambda: dabs.tcl("set x 1")):\n'
+              '    try:\n'
+              '        call()\n'
+              '    except dabs.OpenSeesError as e:\n'
+              '        print(e)\n')
+    done = subprocess.run([sys.executable, '-c', script], capture_output=True, text=True,
+                          timeout=60)
+    assert done.returncode == 0, done.stderr
+    assert done.stdout.splitlines() == ['dabs: the module was shut down'] * 2
