@@ -549,3 +549,28 @@ def test_calls_after_shutdown_raise_instead_of_crashing():
                           timeout=60)
     assert done.returncode == 0, done.stderr
     assert done.stdout.splitlines() == ['dabs: the module was shut down'] * 2
+
+
+def test_pounding_takes_its_node_lists_as_lists():
+    # Two girder end faces 10 mm apart; every node of each face contacts the other face.
+    dabs.model('basic', '-ndm', 3, '-ndf', 3)
+    corners = [(-1.0, -0.5), (1.0, -0.5), (1.0, 0.5), (-1.0, 0.5)]
+    for i, (y, z) in enumerate(corners, start=1):
+        dabs.node(10 + i, 0.0, y, z)
+        dabs.node(20 + i, 0.01, y, z)
+    made = dabs.pounding(100, '-side1', [11, 12, 13, 14], (11, 12, 13, 14),
+                         '-side2', [21, 22, 23, 24], [21, 24, 23, 22], '-K', 1.0e6)
+    assert made == list(range(100, 108))
+    python_nodes = [dabs.eleNodes(e) for e in made]
+    assert python_nodes[0][0] == 11 and dabs.eleResponse(100, 'gap') == [pytest.approx(0.01)]
+    # The Tcl twin: the same pairs on the same nodes.
+    dabs.wipe()
+    tcl = dabs.tcl('model basic -ndm 3 -ndf 3\n'
+                   'foreach i {1 2 3 4} y {-1.0 1.0 1.0 -1.0} z {-0.5 -0.5 0.5 0.5} {\n'
+                   '  node [expr {10 + $i}] 0.0 $y $z; node [expr {20 + $i}] 0.01 $y $z\n'
+                   '}\n'
+                   'pounding 100 -side1 {11 12 13 14} {11 12 13 14}'
+                   ' -side2 {21 22 23 24} {21 24 23 22} -K 1.0e6\n'
+                   'lmap e [getEleTags] { eleNodes $e }')
+    assert [[int(n) for n in group.split()] for group in tcl.strip('{}').split('} {')] == \
+        python_nodes
