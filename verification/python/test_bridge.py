@@ -1,5 +1,5 @@
 # SPDX-License-Identifier: MIT
-# verification/bridge/bridge.py (the case study's pound case from Python, first 8 s of the motion)
+# verification/bridge/bridge.py (the case study's pound case from Python, first 7 s of the motion)
 # against the same runCase run by the dabs program: the same peaks of every followed quantity,
 # to round-off, and the gap history file the plot is drawn from.
 import os
@@ -10,7 +10,7 @@ import sys
 import pytest
 
 BRIDGE = pathlib.Path(__file__).resolve().parent.parent / 'bridge'
-DURATION = 8.0
+DURATION = 7.0
 
 
 def peaks(text):
@@ -48,6 +48,6 @@ def test_bridge_py_matches_the_tcl_run(tmp_path):
     assert python_peaks.keys() == tcl_peaks.keys()
     for key, value in tcl_peaks.items():
         assert python_peaks[key] == pytest.approx(value, rel=1e-12, abs=1e-15), key
-    assert max(tcl_peaks['force1'], tcl_peaks['force2']) > 0.0  # the girders pounded
+    assert min(tcl_peaks['force1'], tcl_peaks['force2']) > 0.0  # both joints pounded
     rows = (tmp_path / 'py' / 'pound.csv').read_text().splitlines()
-    assert rows[0].startswith('t,gap1x,gap1y') and len(rows) == int(DURATION / 0.0025) + 1
+    assert rows[0].startswith('t,gap1x,gap1y') and len(rows) == round(DURATION / 0.0025) + 1
