@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "tcl/commands/CommandTable.h"
 
+#include <array>
 #include <string>
 #include <vector>
 
@@ -55,6 +56,31 @@ void setError(Tcl_Interp* interp, const std::string& message) {
 
 }  // namespace
 
+// Every family of commands, in registration order: the one list both registerCommands and
+// commandEntries read, so another language's binding sees exactly the commands Tcl has.
+static std::array<std::span<const CommandEntry>, 11> commandFamilies() {
+  return {
+      modelCommands(),
+      loadCommands(),
+      analysisCommands(),
+      queryCommands(),
+      recorderCommands(),
+      materialTestCommands(),
+      sectionCommands(),
+      beamCommands(),
+      bearingCommands(),
+      contactCommands(),
+      dabs::parallel::parallelCommands(),  // getPID, getNP, send, recv, barrier, Bcast, ensemble
+  };
+}
+
+std::vector<const CommandEntry*> commandEntries() {
+  std::vector<const CommandEntry*> entries;
+  for (const auto& family : commandFamilies())
+    for (const CommandEntry& entry : family) entries.push_back(&entry);
+  return entries;
+}
+
 int runCommand(Runtime& rt, const CommandEntry& entry, int objc, Tcl_Obj* const objv[]) {
   ArgReader args(objc, objv, std::string(entry.usage));
   try {
@@ -83,19 +109,6 @@ int registerCommands(Tcl_Interp* interp) {
   auto* rt = new Runtime(interp);
   Tcl_CallWhenDeleted(interp, deleteRuntime, rt);
   Tcl_CreateExitHandler(flushAtExit, rt);
-  const std::span<const CommandEntry> families[] = {
-      modelCommands(),
-      loadCommands(),
-      analysisCommands(),
-      queryCommands(),
-      recorderCommands(),
-      materialTestCommands(),
-      sectionCommands(),
-      beamCommands(),
-      bearingCommands(),
-      contactCommands(),
-      dabs::parallel::parallelCommands(),  // getPID, getNP, send, recv, barrier, Bcast, ensemble
-  };
   // Keep Tcl's `load` reachable before ours takes its name.
   if (Tcl_FindCommand(interp, "::load", nullptr, TCL_GLOBAL_ONLY) != nullptr &&
       Tcl_FindCommand(interp, kTclLoad, nullptr, TCL_GLOBAL_ONLY) == nullptr &&
@@ -103,7 +116,7 @@ int registerCommands(Tcl_Interp* interp) {
                (std::string("namespace eval ::dabs {}; rename ::load ") + kTclLoad).c_str()) !=
           TCL_OK)
     return TCL_ERROR;
-  for (const auto& family : families) {
+  for (const auto& family : commandFamilies()) {
     for (const CommandEntry& entry : family) {
       rt->bindings.push_back(std::make_unique<CommandBinding>(CommandBinding{rt, &entry}));
       Tcl_CreateObjCommand(interp, std::string(entry.name).c_str(),

@@ -4,6 +4,7 @@
 #include <tcl.h>
 
 #include <span>
+#include <vector>
 
 #include "tcl/commands/Registry.h"
 
@@ -18,6 +19,10 @@ struct CommandBinding {
 /// Creates a Runtime for `interp`, registers every command of every family and arranges for the
 /// runtime to be deleted with the interpreter. Returns TCL_OK or TCL_ERROR.
 int registerCommands(Tcl_Interp* interp);
+
+/// The rows of every command registerCommands creates, in table order (for bindings that expose
+/// each command under its own name, such as the Python module). The rows have static storage.
+std::vector<const CommandEntry*> commandEntries();
 
 /// Runs one command row: builds the ArgReader, calls the row, and turns ArgError/InputError into a
 /// Tcl error whose message names the command and argument (style.md section 5).

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <fstream>
 #include <iterator>
+#include <set>
 #include <sstream>
 #include <vector>
 
@@ -293,6 +294,21 @@ TEST_F(CommandTableTest, YoshidaBearingTakesOneOrTwoRockingStiffnesses) {
   EXPECT_EQ(number("analyze 1"), 0.0);
   EXPECT_NEAR(number("nodeDisp 2 4"), 2.0 / 100.0, 1e-12);
   EXPECT_NEAR(number("nodeDisp 2 5"), 3.0 / 400.0, 1e-12);
+}
+
+TEST_F(CommandTableTest, EntriesAreTheRegisteredCommands) {
+  // Every row commandEntries gives (what the Python module exposes) is a command of the
+  // interpreter, each once, with its usage line.
+  const std::vector<const CommandEntry*> entries = commandEntries();
+  ASSERT_GT(entries.size(), 50u);
+  std::set<std::string_view> names;
+  for (const CommandEntry* e : entries) {
+    EXPECT_TRUE(names.insert(e->name).second) << e->name;
+    EXPECT_FALSE(e->usage.empty()) << e->name;
+    EXPECT_EQ(ok("info commands " + std::string(e->name)), std::string(e->name));
+  }
+  EXPECT_TRUE(names.count("nodeDisp") == 1 && names.count("section") == 1 &&
+              names.count("pounding") == 1 && names.count("ensemble") == 1);
 }
 
 }  // namespace dabs::tcl::testing
