@@ -122,6 +122,10 @@ void YoshidaBearing3d::initialize(const NodalCoordinates& x) {
   bl(4, 4) = -1.0, bl(4, 10) = 1.0;
   bl(5, 5) = -1.0, bl(5, 11) = 1.0;
   for (int blk = 0; blk < 4; ++blk) b_.middleCols<3>(3 * blk) = bl.middleCols<3>(3 * blk) * axes_;
+  for (int node = 0; node < 2; ++node) {
+    mz_.segment<3>(6 * node + 3) = ez;
+    my_.segment<3>(6 * node + 3) = ey;
+  }
 
   revertToStart();
   k0_ = k_;
@@ -172,6 +176,7 @@ Status YoshidaBearing3d::update(const Kinematics& trial) {
     t.failureTime = trial.time;
   }
   assemble(q, kb);
+  if (p_.pDelta && !t.dropped) addPDelta(t.deformation, q, kb);
   return Status::Ok;
 }
 
@@ -220,6 +225,17 @@ void YoshidaBearing3d::seatContact(State& t, Basic& q, BasicMatrix& kb) const {
 void YoshidaBearing3d::assemble(const Basic& q, const BasicMatrix& kb) {
   f_.noalias() = b_.transpose() * q;
   k_.noalias() = b_.transpose() * kb * b_;
+}
+
+void YoshidaBearing3d::addPDelta(const Basic& d, const Basic& q, const BasicMatrix& kb) {
+  // The couple of N at j and -N at i, offset by (d1, d2), balanced half at each end
+  // (ElastomericX's P-Delta moments): f += N/2 (d1 mz - d2 my). Its derivative holds dN/du
+  // (the axial row of the basic tangent, with dN/dU for the Kumar law) and N dd/du.
+  const double n = q(0);
+  f_.noalias() += 0.5 * n * (d(1) * mz_ - d(2) * my_);
+  const Eigen::Matrix<double, 1, kNumDof> dn = kb.row(0) * b_;
+  k_.noalias() += 0.5 * mz_ * (d(1) * dn + n * b_.row(1));
+  k_.noalias() -= 0.5 * my_ * (d(2) * dn + n * b_.row(2));
 }
 
 void YoshidaBearing3d::commitState() {
@@ -305,6 +321,7 @@ std::string YoshidaBearing3d::describe() const {
         << " ac " << v.ac << " cavitation " << v.cavitation << " buckling " << v.buckling
         << " kvShear " << v.kvShear;
   }
+  if (p_.pDelta) out << " pDelta";
   out << " damage " << damage();
   return out.str();
 }

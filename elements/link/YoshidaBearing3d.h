@@ -58,8 +58,15 @@ namespace dabs::elements {
 /// Constantinou 2014): Kv falls with the shear displacement |U|, tension cavitates at 3GA and
 /// softens with damage, compression is limited by the critical load Pcr(|U|). Kv and Tr then
 /// come from the bearing's geometry (Kv0 = Ec A/Tr, Tr = n tr). N depends on U, so the tangent
-/// has dN/dU in the axial row and is non-symmetric (hasNonSymmetricTangent()). P-Delta moments of
-/// the axial force are not added (as before): the rocking springs carry the end moments.
+/// has dN/dU in the axial row and is non-symmetric (hasNonSymmetricTangent()).
+///
+/// P-Delta (Params::pDelta, Tcl `-pDelta`; off by default): the axial force N at j, offset by the
+/// shear deformation (d1, d2) from i, is a couple that the end moments balance. As ElastomericX
+/// (OpenSees) does, half of it is added at each end, in the local frame:
+///   Mz_i = Mz_j += N d1 / 2,   My_i = My_j -= N d2 / 2,
+/// with the consistent tangent (the d(N)/du part too, so non-symmetric). For a bearing of nonzero
+/// length ElastomericX adds terms in the end rotations times L as well; here d1, d2 already hold
+/// the shear deformation with the rotations (the class comment), and nothing else is added.
 ///
 /// The element's own viscous force (the material's Maxwell part) is a function of the
 /// displacement increment over the step, so dampingTangent() is zero and the Maxwell stiffness is
@@ -96,6 +103,7 @@ class YoshidaBearing3d final : public FixedSizeElement<2, 6> {
     double failureLimit = 3.0;  ///< failure shear strain (300 %)
     AfterFailure afterFailure = AfterFailure::Keep;
     Seat seat;  ///< used with AfterFailure::Drop only (the Tcl defaults: Ks = Kv, Kst = Ks)
+    bool pDelta = false;  ///< add the P-Delta moments of the axial force (class comment)
     /// Kumar et al.'s vertical law; when given, Tr and Kv are replaced by its n tr and Kv0.
     std::optional<KumarVertical::Params> vertical;
 
@@ -134,7 +142,9 @@ class YoshidaBearing3d final : public FixedSizeElement<2, 6> {
   /// the tangent non-symmetric; an intact bearing keeps the symmetric solver.
   /// The Kumar vertical law couples N to the shear displacement (dN/dU without dV/dd0), so a
   /// bearing with it declares a non-symmetric tangent throughout.
-  bool hasNonSymmetricTangent() const override { return trial_.dropped || coupledVertical(); }
+  bool hasNonSymmetricTangent() const override {
+    return trial_.dropped || coupledVertical() || p_.pDelta;
+  }
   Eigen::Ref<const Eigen::MatrixXd> committedStiff() const override { return kc_; }
 
   void commitState() override;
@@ -178,6 +188,8 @@ class YoshidaBearing3d final : public FixedSizeElement<2, 6> {
   /// tangent (axial and shear rows; torsion and rocking zero).
   void seatContact(State& t, Basic& q, BasicMatrix& kb) const;
   void assemble(const Basic& q, const BasicMatrix& kb);
+  /// Adds the P-Delta end moments of the axial force q(0) and their tangent to f_ and k_.
+  void addPDelta(const Basic& d, const Basic& q, const BasicMatrix& kb);
   bool coupledVertical() const noexcept {
     return vertical_ && (vertical_->params().kvShear || vertical_->params().buckling);
   }
@@ -189,6 +201,9 @@ class YoshidaBearing3d final : public FixedSizeElement<2, 6> {
   double length_ = 0.0;
   Eigen::Matrix3d axes_ = Eigen::Matrix3d::Identity();
   Eigen::Matrix<double, 6, kNumDof> b_ = Eigen::Matrix<double, 6, kNumDof>::Zero();  ///< global B
+  /// Unit local z (my_: y) moments at both ends in global dofs (the P-Delta moment directions).
+  Eigen::Matrix<double, kNumDof, 1> mz_ = Eigen::Matrix<double, kNumDof, 1>::Zero();
+  Eigen::Matrix<double, kNumDof, 1> my_ = Eigen::Matrix<double, kNumDof, 1>::Zero();
   State trial_{};
   State committed_{};
 };

@@ -919,6 +919,57 @@ TEST(YoshidaBearing3dTest, KumarVerticalValidation) {
   }
 }
 
+TEST(YoshidaBearing3dTest, PDeltaMomentsAreHalfTheAxialForceTimesTheShearAtEachEnd) {
+  for (bool kumarLaw : {false, true}) {
+    YoshidaBearing3d::Params p = kumarLaw ? kumarElement() : element();
+    p.pDelta = true;
+    auto e = make(kCoincidentNodes, false, p);
+    EXPECT_TRUE(e->hasNonSymmetricTangent());
+    // Coincident nodes: local x = global Z, y = global X, z = global Y. Compression with shear.
+    TrialState s = zeroState();
+    s.u(6) = 0.12;    // d1
+    s.u(7) = -0.05;   // d2
+    s.u(8) = -0.002;  // d0
+    ASSERT_TRUE(ok(e->update(s.kinematics())));
+    const double n = e->trialState().basicForce(0);
+    ASSERT_LT(n, 0.0);
+    const Eigen::VectorXd fl = *e->response(std::vector<std::string>{"localForce"});
+    // Rotations are zero, so the rocking springs carry nothing: the moments are P-Delta alone.
+    EXPECT_NEAR(fl(5), 0.5 * n * 0.12, 1e-12 * std::abs(n));    // Mz at i
+    EXPECT_NEAR(fl(11), 0.5 * n * 0.12, 1e-12 * std::abs(n));   // Mz at j
+    EXPECT_NEAR(fl(4), -0.5 * n * -0.05, 1e-12 * std::abs(n));  // My at i
+    EXPECT_NEAR(fl(10), -0.5 * n * -0.05, 1e-12 * std::abs(n));
+    // The end moments balance the couple of the axial forces (N at j offset by d from i):
+    // sum of local moments about z = N d1, about y = -N d2.
+    EXPECT_NEAR(fl(5) + fl(11), n * 0.12, 1e-12 * std::abs(n));
+    // Without -pDelta the same state has no end moments.
+    p.pDelta = false;
+    auto plain = make(kCoincidentNodes, false, p);
+    ASSERT_TRUE(ok(plain->update(s.kinematics())));
+    EXPECT_EQ((*plain->response(std::vector<std::string>{"localForce"}))(5), 0.0);
+  }
+}
+
+TEST(YoshidaBearing3dTest, PDeltaTangentMatchesFiniteDifference) {
+  for (const auto& x : {kCoincidentNodes, kInclined}) {
+    for (bool kumarLaw : {false, true}) {
+      YoshidaBearing3d::Params p = kumarLaw ? kumarElement() : element();
+      p.pDelta = true;
+      auto e = make(x, true, p);
+      TrialState s = zeroState(0.01);
+      s.u << 0.001, 0.002, -0.001, 0.002, 0.001, -0.003, 0.13, -0.07, -0.02, 0.001, -0.002, 0.004;
+      ASSERT_TRUE(ok(e->update(s.kinematics())));
+      const Eigen::MatrixXd k = e->tangentStiff();
+      const Eigen::MatrixXd kfd = testing::numericalStiffness(*e, s, 1e-8);
+      EXPECT_LT(testing::relativeDifference(k, kfd), kFdRelTol) << kumarLaw;
+      // The moment rows alone (small beside the axial stiffness in the matrix norm).
+      for (int row : {3, 4, 5, 9, 10, 11})
+        EXPECT_LT((k.row(row) - kfd.row(row)).norm(), 1e-5 * std::max(1.0, kfd.row(row).norm()))
+            << "row " << row << " kumar " << kumarLaw;
+    }
+  }
+}
+
 TEST(YoshidaBearing3dTest, NewtonConvergesQuadraticallyUnderTakatori) {
   double dtRecord = 0.0;
   const std::vector<double> ag =

@@ -24,6 +24,7 @@ constexpr const char* kBearingUsage =
     "?-orient x1 x2 x3 y1 y2 y3? ?-mass m? ?-limits design failure? ?-afterFailure "
     "keep|release|stop|{drop h}? ?-seat Ks mu_s mu_k ?Kst?? ?-vertical kumar G Kbulk Di Do ts tr "
     "n? ?-tc tc? ?-kc kc? ?-phi phi? ?-ac ac? ?-cavitation 0|1? ?-buckling 0|1? ?-kvShear 0|1? "
+    "?-pDelta? "
     "(-Tr and -Kv are required without -vertical, not allowed with it)";
 
 // Seat friction when -seat is not given (steel girder end on a concrete pier cap, a round value).
@@ -110,7 +111,7 @@ void readVertical(ArgReader& args, elements::YoshidaBearing3d::Params& p) {
 // defaults Ks = Kv, mu_s = mu_k = 0.5, Kst = Ks)
 // and -vertical kumar G Kbulk Di Do ts tr n ?-tc tc? ?-kc kc? ?-phi phi? ?-ac ac?
 //   ?-cavitation 0|1? ?-buckling 0|1? ?-kvShear 0|1? (the arguments in the order and with the
-//   names of OpenSees' ElastomericX; Tr = n tr and Kv0 follow from them)
+//   names of OpenSees' ElastomericX; Tr = n tr and Kv0 follow from them) and ?-pDelta?
 std::unique_ptr<elements::Element> parseYoshidaBearing(Runtime& rt, ArgReader& args, int tag) {
   using elements::YoshidaBearing3d;
   if (rt.builder.ndm != 3)
@@ -165,6 +166,8 @@ std::unique_ptr<elements::Element> parseYoshidaBearing(Runtime& rt, ArgReader& a
                         "is a fifth value: -seat takes Ks mu_s mu_k and optionally Kst");
   }
   readVertical(args, p);
+  // -pDelta: the P-Delta end moments of the axial force, as OpenSees' ElastomericX adds them.
+  p.pDelta = args.flag("-pDelta");
   args.finish();
   if (p.vertical) {
     // One source for Tr and Kv: the geometry of -vertical kumar.

@@ -5,7 +5,7 @@
 # twin defines `makeBearing tag iNode jNode` and the bearing's data below, then sources this file.
 # Units kN, m. The horizontal laws differ, so only the axial force N against the axial
 # deformation u is written, at a horizontal offset held fixed (imposed first, then kept constant).
-# Writes elastomericx-vertical.out: a header line per block, then "u N" per step.
+# Writes elastomericx-vertical.out: a header line per block, then "u N Mz_i" per step.
 
 # Rubber and geometry (G, Kbulk in kN/m^2; lengths in m): Do 0.8, Di 0.1, 20 layers of 10 mm.
 set G 800.0
@@ -22,7 +22,8 @@ set ac 1.0
 set out [open elastomericx-vertical.out w]
 
 # Moves the top node's vertical dof through the targets in steps no longer than du and writes
-# u and N after each step.
+# u, N and the local moment about z at node i (the P-Delta moment N d1/2: the rotations are held,
+# so the rocking springs carry nothing) after each step.
 proc axialPath {out targets du} {
   set u 0.0
   foreach target $targets {
@@ -31,7 +32,8 @@ proc axialPath {out targets du} {
       integrator DisplacementControl 2 3 $step
       if {[analyze 1] != 0} { error "axial step to [expr {$u + $step}] failed" }
       set u [expr {$u + $step}]
-      puts $out [format "%.10g %.10g" [nodeDisp 2 3] [lindex [eleResponse 1 basicForce] 0]]
+      puts $out [format "%.10g %.10g %.10g" [nodeDisp 2 3] [lindex [eleResponse 1 basicForce] 0] \
+        [lindex [eleResponse 1 localForce] 5]]
     }
   }
 }

@@ -113,6 +113,10 @@ TEST_F(BearingParsersTest, VerticalKumarIsAcceptedWithItsOptions) {
   ok("element yoshidaBearing 6 3 4 1 -Kt 10 -vertical kumar 800 2e6 0 0.8 0.003 0.01 20 -tc 0.01 "
      "-kc 20 -phi 0.3 -ac 2 -cavitation 0 -buckling 0 -kvShear 0");
   EXPECT_TRUE(has(printed(6), "tc 0.01 kc 20 phi 0.3 ac 2 cavitation 0 buckling 0 kvShear 0"));
+  EXPECT_FALSE(has(printed(6), "pDelta"));
+  ok("node 9 0 0 0; node 10 0 0 0");
+  ok("element yoshidaBearing 7 9 10 1 -Tr 0.2 -Kv 1e6 -pDelta");  // with the linear axial spring
+  EXPECT_TRUE(has(printed(7), "pDelta"));
 }
 
 TEST_F(BearingParsersTest, VerticalKumarErrorsNameTheArgumentAndWhatWasExpected) {
