@@ -40,11 +40,11 @@ namespace dabs::elements {
 ///
 /// Differences from ElastomericX, on purpose: (1) Kv, uc and Pcr follow the trial uh (ElastomericX
 /// updates them when a step is committed, one step late), so the tangent holds dN/duh and is
-/// consistent; (2) the damage is updated only on the post-cavitation envelope (ElastomericX also
-/// updates it whenever u passes the zero-shear uc, which with shear lies below the sheared uc and
-/// then raises Fcn above Fc); (3) the critical load follows the current overlap area (ElastomericX
-/// keeps the least one reached but starts the buckled branch at the current one, so the force
-/// jumps when the shear comes back).
+/// consistent; (2) the damage is updated from the largest tension on the post-cavitation curve
+/// only, and never heals; (3) the critical load follows the current overlap area (ElastomericX
+/// keeps the least one reached but starts the buckled branch at the current one, so its force
+/// jumps when the shear comes back). At a held shear offset the two give the same numbers
+/// (verification/opensees/elastomericx-vertical.tcl).
 class KumarVertical {
  public:
   /// Geometry, rubber and law parameters (lengths and forces in the model's units).
