@@ -89,7 +89,7 @@ class KumarVertical {
   /// The axial force at deformation u and shear displacement uh from the committed history.
   Response evaluate(double u, double uh, const State& committed) const;
 
-  /// Axial stiffness Kv(uh) (Kv0 when kvShear is off) and its derivative.
+  /// Axial stiffness Kv(uh) (force/length; Kv0 when kvShear is off).
   double stiffness(double uh) const;
   /// Critical load Pcr(uh) > 0 (the magnitude of the compression limit).
   double criticalLoad(double uh) const;

@@ -176,6 +176,12 @@ std::unique_ptr<elements::Element> parseYoshidaBearing(Runtime& rt, ArgReader& a
       args.failArgument("-Kv",
                         "is not allowed with -vertical kumar (Kv0 = Ec A / Tr from G, Kbulk "
                         "and the geometry)");
+    // The law's Tr and Kv0 (the element takes the same), so defaults that follow Kv (the seat's
+    // Ks) follow Kv0.
+    p.vertical->validate();
+    const elements::KumarVertical law(*p.vertical);
+    p.Tr = law.Tr();
+    p.Kv = law.Kv0();
   } else {
     if (!tr) args.fail("-Tr (total rubber thickness) is required");
     if (!kv) args.fail("-Kv (axial stiffness) is required");

@@ -114,6 +114,14 @@ TEST_F(BearingParsersTest, VerticalKumarIsAcceptedWithItsOptions) {
      "-kc 20 -phi 0.3 -ac 2 -cavitation 0 -buckling 0 -kvShear 0");
   EXPECT_TRUE(has(printed(6), "tc 0.01 kc 20 phi 0.3 ac 2 cavitation 0 buckling 0 kvShear 0"));
   EXPECT_FALSE(has(printed(6), "pDelta"));
+  // The seat's default stiffness follows Kv, here Kv0 from the geometry.
+  ok("node 11 0 0 0; node 12 0 0 0");
+  ok("element yoshidaBearing 8 11 12 1 -vertical kumar 800 2e6 0.1 0.8 0.003 0.01 20 "
+     "-afterFailure drop 0.3");
+  const std::string text = printed(8);
+  const std::size_t at = text.find(" Kv ") + 4;
+  const std::string kv0 = text.substr(at, text.find(' ', at) - at);
+  EXPECT_TRUE(has(text, "afterFailure drop 0.3 seat " + kv0 + " 0.5 0.5 " + kv0));
   ok("node 9 0 0 0; node 10 0 0 0");
   ok("element yoshidaBearing 7 9 10 1 -Tr 0.2 -Kv 1e6 -pDelta");  // with the linear axial spring
   EXPECT_TRUE(has(printed(7), "pDelta"));
