@@ -79,7 +79,7 @@ void KumarVertical::stiffness(double uh, double& kv, double& dkv) const {
     dkv = 0.0;
     return;
   }
-  // Kumar et al. (2014), after Koh and Kelly: Kv = Kv0 / (1 + 3/pi^2 (uh/r)^2).
+  // Kumar et al. (2014), after Warn et al. (2007): Kv = Kv0 / (1 + 3/pi^2 (uh/r)^2).
   const double c = 3.0 / (kPi * kPi);
   const double den = 1.0 + c * (uh / r_) * (uh / r_);
   kv = Kv0_ / den;
@@ -96,7 +96,7 @@ void KumarVertical::criticalLoad(double uh, double& pcr, double& dpcr) const {
   pcr = kMinCriticalRatio * Pcr0_;
   dpcr = 0.0;
   if (uh >= p_.Do) return;
-  // Overlap of the top and bottom bonded areas (Kumar et al. 2014, after Warn et al.):
+  // Overlap of the top and bottom bonded areas (Kumar et al. 2014, after Buckle and Liu 1994):
   // Ar / A = (d - sin d) / pi with d = 2 acos(uh / Do).
   const double d = 2.0 * std::acos(uh / p_.Do);
   const double ratio = (d - std::sin(d)) / kPi;

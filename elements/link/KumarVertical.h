@@ -24,16 +24,18 @@ namespace dabs::elements {
 ///   Fc  = 3 G A                        cavitation force (Gent's 3G tensile stress)
 ///   Pcr0 = sqrt(Pe G As), Pe = pi^2 (Ec/3) (I h/Tr) / h^2, As = A h/Tr  (Koh and Kelly)
 ///
-/// The law:
-///   Kv(uh) = Kv0 / (1 + 3/pi^2 (uh/r)^2)            (Kumar et al. 2014, after Koh and Kelly)
+/// The law (the papers' equation numbers are not cited: the formulas are the published model as
+/// ElastomericX implements it, read from its source, the paper not being at hand):
+///   Kv(uh) = Kv0 / (1 + 3/pi^2 (uh/r)^2)            (Kumar et al. 2014, after Warn et al. 2007)
 ///   uc = Fc / Kv(uh)                                 cavitation deformation
 ///   envelope for u > uc:  N = Fc (1 + (1 - exp(-kc (u - uc))) / (kc Tr))
 ///     (post-cavitation: initial slope Fc/Tr = 3GA/Tr, decaying at rate kc, 1/length)
 ///   damage: once u reached umax > uc, Fcn = Fc (1 - phi (1 - exp(-ac (umax - uc)/uc)))
 ///   unloading/reloading after cavitation: straight from (umax, N(umax)) to (ucn, Fcn),
 ///     ucn = Fcn / Kv, then N = Kv u through the origin (the elastic part)
-///   buckling: Pcr(uh) = Pcr0 Ar/A with Ar = ((Do + tc)^2 - Di^2)/4 (d - sin d),
-///     d = 2 acos(uh/Do), not less than 0.2 Pcr0 (the cut-off of Kumar et al. and ElastomericX;
+///   buckling (overlap-area reduction of Buckle and Liu 1994, as Kumar et al. use it):
+///     Pcr(uh) = Pcr0 Ar/A with Ar = ((Do + tc)^2 - Di^2)/4 (d - sin d),
+///     d = 2 acos(uh/Do), not less than 0.2 Pcr0 (the cut-off ElastomericX applies;
 ///     0.2 Pcr0 too for uh >= Do); for u <= -Pcr/Kv: N = -Pcr + Kpb (u + Pcr/Kv), Kpb = Kv0/1e4
 ///     (a small positive stiffness past the critical load, as ElastomericX).
 /// Each of the three effects can be switched off (Params::kvShear, cavitation, buckling).
