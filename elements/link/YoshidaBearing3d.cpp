@@ -24,16 +24,21 @@ bool reached(double strain, double limit) { return strain >= limit * (1.0 - kLim
 }  // namespace
 
 void YoshidaBearing3d::Params::validate() const {
-  requireFinite(Tr, "Tr");
-  requireFinite(Kv, "Kv");
+  if (vertical) {
+    // Tr and Kv follow from the geometry (KumarVertical): the element replaces them.
+    vertical->validate();
+  } else {
+    requireFinite(Tr, "Tr");
+    requireFinite(Kv, "Kv");
+    if (Tr <= 0.0) throw InputError("Tr", "must be positive");
+    if (Kv <= 0.0) throw InputError("Kv", "must be positive");
+  }
   requireFinite(Kt, "Kt");
   requireFinite(Kry, "Kr");
   requireFinite(Krz, "Kr");
   requireFinite(mass, "mass");
   requireFinite(designLimit, "design");
   requireFinite(failureLimit, "failure");
-  if (Tr <= 0.0) throw InputError("Tr", "must be positive");
-  if (Kv <= 0.0) throw InputError("Kv", "must be positive");
   if (Kt < 0.0) throw InputError("Kt", "must not be negative");
   if (Kry < 0.0 || Krz < 0.0) throw InputError("Kr", "must not be negative");
   if (mass < 0.0) throw InputError("mass", "must not be negative");
@@ -71,7 +76,12 @@ YoshidaBearing3d::YoshidaBearing3d(int tag, int iNode, int jNode,
       material_(material.clone()),
       p_(p),
       seatCone_{p.seat.Kst, 0.0, p.seat.muS, p.seat.muK} {
-  assert(p.Tr > 0.0 && p.Kv > 0.0);
+  if (p.vertical) {
+    vertical_.emplace(*p.vertical);
+    p_.Tr = vertical_->Tr();
+    p_.Kv = vertical_->Kv0();
+  }
+  assert(p_.Tr > 0.0 && p_.Kv > 0.0);
   for (int node = 0; node < 2; ++node)
     for (int d = 0; d < 3; ++d) m_(6 * node + d, 6 * node + d) = 0.5 * p.mass;
 }
@@ -112,6 +122,10 @@ void YoshidaBearing3d::initialize(const NodalCoordinates& x) {
   bl(4, 4) = -1.0, bl(4, 10) = 1.0;
   bl(5, 5) = -1.0, bl(5, 11) = 1.0;
   for (int blk = 0; blk < 4; ++blk) b_.middleCols<3>(3 * blk) = bl.middleCols<3>(3 * blk) * axes_;
+  for (int node = 0; node < 2; ++node) {
+    mz_.segment<3>(6 * node + 3) = ez;
+    my_.segment<3>(6 * node + 3) = ey;
+  }
 
   revertToStart();
   k0_ = k_;
@@ -142,6 +156,16 @@ Status YoshidaBearing3d::update(const Kinematics& trial) {
     q.segment<2>(1) = material_->getStress();
     kb.block<2, 2>(1, 1) = material_->getTangent();
   }
+  if (vertical_ && !dropping()) {
+    // Kumar et al. (2014): N(d0, |U|); dN/dU = dN/d|U| U/|U| (taken as zero at U = 0).
+    const double uh = u.norm();
+    const KumarVertical::Response r =
+        vertical_->evaluate(t.deformation(0), uh, committed_.vertical);
+    q(0) = r.N;
+    kb(0, 0) = r.dNdu;
+    if (uh > 0.0) kb.block<1, 2>(0, 1) = r.dNduh / uh * u.transpose();
+    t.vertical = r.state;
+  }
   t.basicForce = q;
 
   // Damage by shear strain in any direction of the shear plane.
@@ -152,6 +176,7 @@ Status YoshidaBearing3d::update(const Kinematics& trial) {
     t.failureTime = trial.time;
   }
   assemble(q, kb);
+  if (p_.pDelta && !t.dropped) addPDelta(t.deformation, q, kb);
   return Status::Ok;
 }
 
@@ -200,6 +225,17 @@ void YoshidaBearing3d::seatContact(State& t, Basic& q, BasicMatrix& kb) const {
 void YoshidaBearing3d::assemble(const Basic& q, const BasicMatrix& kb) {
   f_.noalias() = b_.transpose() * q;
   k_.noalias() = b_.transpose() * kb * b_;
+}
+
+void YoshidaBearing3d::addPDelta(const Basic& d, const Basic& q, const BasicMatrix& kb) {
+  // The couple of N at j and -N at i, offset by (d1, d2), balanced half at each end
+  // (ElastomericX's P-Delta moments): f += N/2 (d1 mz - d2 my). Its derivative holds dN/du
+  // (the axial row of the basic tangent, with dN/dU for the Kumar law) and N dd/du.
+  const double n = q(0);
+  f_.noalias() += 0.5 * n * (d(1) * mz_ - d(2) * my_);
+  const Eigen::Matrix<double, 1, kNumDof> dn = kb.row(0) * b_;
+  k_.noalias() += 0.5 * mz_ * (d(1) * dn + n * b_.row(1));
+  k_.noalias() -= 0.5 * my_ * (d(2) * dn + n * b_.row(2));
 }
 
 void YoshidaBearing3d::commitState() {
@@ -255,6 +291,14 @@ std::optional<Eigen::VectorXd> YoshidaBearing3d::response(std::span<const std::s
   if (name == "seatStatus")
     return scalar(trial_.dropped && trial_.seatGap < 0.0 ? (trial_.sliding ? 2.0 : 1.0) : 0.0);
   if (name == "seatDissipatedEnergy") return scalar(trial_.seatDissipated);
+  if (vertical_) {
+    const double uh = trial_.deformation.segment<2>(1).norm();
+    if (name == "verticalStiffness") return scalar(vertical_->stiffness(uh));
+    if (name == "criticalLoad") return scalar(vertical_->criticalLoad(uh));
+    if (name == "cavitationForce") return scalar(trial_.vertical.cavitationRatio * vertical_->Fc());
+    if (name == "maxTension") return scalar(trial_.vertical.umax);
+    if (name == "verticalBranch") return scalar(trial_.vertical.branch);
+  }
   if (name == "hystereticForce" || name == "viscousForce" || name == "backForce" ||
       name == "dissipatedEnergy")
     return material_->response(name);
@@ -270,6 +314,14 @@ std::string YoshidaBearing3d::describe() const {
   if (p_.afterFailure == AfterFailure::Drop)
     out << " " << p_.seat.h << " seat " << p_.seat.Ks << " " << p_.seat.muS << " " << p_.seat.muK
         << " " << p_.seat.Kst;
+  if (vertical_) {
+    const auto& v = vertical_->params();
+    out << " vertical kumar " << v.G << " " << v.Kbulk << " " << v.Di << " " << v.Do << " " << v.ts
+        << " " << v.tr << " " << v.n << " tc " << v.tc << " kc " << v.kc << " phi " << v.phi
+        << " ac " << v.ac << " cavitation " << v.cavitation << " buckling " << v.buckling
+        << " kvShear " << v.kvShear;
+  }
+  if (p_.pDelta) out << " pDelta";
   out << " damage " << damage();
   return out.str();
 }

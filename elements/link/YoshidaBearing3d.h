@@ -6,6 +6,7 @@
 #include <optional>
 
 #include "elements/FixedSizeElement.h"
+#include "elements/link/KumarVertical.h"
 #include "materials/BiaxialMaterial.h"
 #include "materials/friction/CoulombCone.h"
 
@@ -52,6 +53,21 @@ namespace dabs::elements {
 /// sliding tangent is non-symmetric (dq/dd0 = -mu_k Ks n for a slide direction n, and
 /// dq/ds = mu_k N (I - n n^T)/|s - s_c|), declared by hasNonSymmetricTangent().
 ///
+/// Vertical behaviour (Params::vertical, Tcl `-vertical kumar ...`): by default the axial force
+/// is linear, N = Kv d0. With the Kumar option it follows KumarVertical (Kumar, Whittaker and
+/// Constantinou 2014): Kv falls with the shear displacement |U|, tension cavitates at 3GA and
+/// softens with damage, compression is limited by the critical load Pcr(|U|). Kv and Tr then
+/// come from the bearing's geometry (Kv0 = Ec A/Tr, Tr = n tr). N depends on U, so the tangent
+/// has dN/dU in the axial row and is non-symmetric (hasNonSymmetricTangent()).
+///
+/// P-Delta (Params::pDelta, Tcl `-pDelta`; off by default): the axial force N at j, offset by the
+/// shear deformation (d1, d2) from i, is a couple that the end moments balance. As ElastomericX
+/// (OpenSees) does, half of it is added at each end, in the local frame:
+///   Mz_i = Mz_j += N d1 / 2,   My_i = My_j -= N d2 / 2,
+/// with the consistent tangent (the d(N)/du part too, so non-symmetric). For a bearing of nonzero
+/// length ElastomericX adds terms in the end rotations times L as well; here d1, d2 already hold
+/// the shear deformation with the rotations (the class comment), and nothing else is added.
+///
 /// The element's own viscous force (the material's Maxwell part) is a function of the
 /// displacement increment over the step, so dampingTangent() is zero and the Maxwell stiffness is
 /// in tangentStiff(). Rayleigh damping does not apply by default (as for OpenSees zero-length
@@ -87,6 +103,9 @@ class YoshidaBearing3d final : public FixedSizeElement<2, 6> {
     double failureLimit = 3.0;  ///< failure shear strain (300 %)
     AfterFailure afterFailure = AfterFailure::Keep;
     Seat seat;  ///< used with AfterFailure::Drop only (the Tcl defaults: Ks = Kv, Kst = Ks)
+    bool pDelta = false;  ///< add the P-Delta moments of the axial force (class comment)
+    /// Kumar et al.'s vertical law; when given, Tr and Kv are replaced by its n tr and Kv0.
+    std::optional<KumarVertical::Params> vertical;
 
     /// Throws InputError{field, reason} for parameters that cannot make a valid element.
     void validate() const;
@@ -107,7 +126,8 @@ class YoshidaBearing3d final : public FixedSizeElement<2, 6> {
     Eigen::Vector3d seatForce = Eigen::Vector3d::Zero();   ///< N (>= 0), Ft1, Ft2 on j (local)
     Eigen::Vector2d stickPoint = Eigen::Vector2d::Zero();  ///< s_c (local y, z), relative to i
     bool sliding = false;                                  ///< the friction cone was exceeded
-    double seatDissipated = 0.0;  ///< work of the seat friction so far (force x length)
+    double seatDissipated = 0.0;    ///< work of the seat friction so far (force x length)
+    KumarVertical::State vertical;  ///< history of the vertical law (Params::vertical only)
   };
 
   /// `p` must be valid; the material is cloned.
@@ -120,19 +140,28 @@ class YoshidaBearing3d final : public FixedSizeElement<2, 6> {
   bool rayleighByDefault() const override { return false; }
   /// True once the bearing has dropped onto its seat (trial state), where sliding friction makes
   /// the tangent non-symmetric; an intact bearing keeps the symmetric solver.
-  bool hasNonSymmetricTangent() const override { return trial_.dropped; }
+  /// The Kumar vertical law couples N to the shear displacement (dN/dU without dV/dd0), so a
+  /// bearing with it declares a non-symmetric tangent throughout.
+  bool hasNonSymmetricTangent() const override {
+    return trial_.dropped || coupledVertical() || p_.pDelta;
+  }
   Eigen::Ref<const Eigen::MatrixXd> committedStiff() const override { return kc_; }
 
   void commitState() override;
   void revertToLastCommit() override;
   void revertToStart() override;
 
+  /// The vertical law (Params::vertical), or null for the linear axial spring.
+  const KumarVertical* verticalLaw() const noexcept { return vertical_ ? &*vertical_ : nullptr; }
+
   /// force/globalForce (12), localForce (12), basicForce (6), deformation/basicDeformation (6),
   /// shearStrain, maxShearStrain, damage, failureTime (1 each), and the material's
   /// hystereticForce, viscousForce, backForce (2, local y-z), dissipatedEnergy (1); the seat's
   /// dropped (1: 0 or 1), seatGap (1, g = h + d0, 0 before the drop), seatForce (3: N, Ft1, Ft2,
   /// force of the seat on node j in local y-z), seatStatus (1: 0 intact or open, 1 stick,
-  /// 2 slide) and seatDissipatedEnergy (1).
+  /// 2 slide) and seatDissipatedEnergy (1); with the Kumar vertical law, verticalStiffness (Kv at
+  /// the trial |U|), criticalLoad (Pcr, > 0), cavitationForce (the damaged Fcn), maxTension (umax)
+  /// and verticalBranch (0 elastic, 1 post-cavitation envelope, 2 after cavitation, 3 buckled).
   std::optional<Eigen::VectorXd> response(std::span<const std::string> args) const override;
   std::string describe() const override;
 
@@ -159,13 +188,22 @@ class YoshidaBearing3d final : public FixedSizeElement<2, 6> {
   /// tangent (axial and shear rows; torsion and rocking zero).
   void seatContact(State& t, Basic& q, BasicMatrix& kb) const;
   void assemble(const Basic& q, const BasicMatrix& kb);
+  /// Adds the P-Delta end moments of the axial force q(0) and their tangent to f_ and k_.
+  void addPDelta(const Basic& d, const Basic& q, const BasicMatrix& kb);
+  bool coupledVertical() const noexcept {
+    return vertical_ && (vertical_->params().kvShear || vertical_->params().buckling);
+  }
 
   std::unique_ptr<materials::BiaxialMaterial> material_;
   Params p_;
-  materials::CoulombCone seatCone_;  ///< friction law of the seat (AfterFailure::Drop)
+  materials::CoulombCone seatCone_;        ///< friction law of the seat (AfterFailure::Drop)
+  std::optional<KumarVertical> vertical_;  ///< vertical law (Params::vertical)
   double length_ = 0.0;
   Eigen::Matrix3d axes_ = Eigen::Matrix3d::Identity();
   Eigen::Matrix<double, 6, kNumDof> b_ = Eigen::Matrix<double, 6, kNumDof>::Zero();  ///< global B
+  /// Unit local z (my_: y) moments at both ends in global dofs (the P-Delta moment directions).
+  Eigen::Matrix<double, kNumDof, 1> mz_ = Eigen::Matrix<double, kNumDof, 1>::Zero();
+  Eigen::Matrix<double, kNumDof, 1> my_ = Eigen::Matrix<double, kNumDof, 1>::Zero();
   State trial_{};
   State committed_{};
 };

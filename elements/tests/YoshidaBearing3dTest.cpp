@@ -764,6 +764,212 @@ std::vector<double> readAt2(const std::string& path, double& dt) {
   return a;
 }
 
+// --- the Kumar vertical law (-vertical kumar) ----------------------------------------------
+
+/// The bearing of KumarVerticalTest (kN, m): Do 0.8, Di 0.1, 20 x 10 mm rubber, 3 mm shims.
+KumarVertical::Params kumar() {
+  KumarVertical::Params v;
+  v.G = 800.0;
+  v.Kbulk = 2.0e6;
+  v.Di = 0.1;
+  v.Do = 0.8;
+  v.ts = 0.003;
+  v.tr = 0.01;
+  v.n = 20.0;
+  v.kc = 20.0;
+  return v;
+}
+
+YoshidaBearing3d::Params kumarElement() {
+  YoshidaBearing3d::Params p = element();
+  p.Tr = 0.0;  // both follow from the geometry
+  p.Kv = 0.0;
+  p.vertical = kumar();
+  return p;
+}
+
+TEST(YoshidaBearing3dTest, KumarVerticalReplacesTrAndKvAndFollowsTheLaw) {
+  auto e = make(kCoincidentNodes, false, kumarElement());
+  const KumarVertical law(kumar());
+  ASSERT_NE(e->verticalLaw(), nullptr);
+  EXPECT_DOUBLE_EQ(e->params().Tr, 0.2);
+  EXPECT_DOUBLE_EQ(e->params().Kv, law.Kv0());
+  EXPECT_TRUE(e->hasNonSymmetricTangent());
+  // Coincident nodes: local x = global Z (axial), local y = global X. Offset 0.3 m in X, then
+  // tension past cavitation: N is the law's at (u, |U|).
+  TrialState s = zeroState();
+  s.u(6) = 0.3;
+  s.u(8) = 0.01;
+  ASSERT_TRUE(ok(e->update(s.kinematics())));
+  const auto r = law.evaluate(0.01, 0.3, {});
+  EXPECT_EQ(r.state.branch, 1);
+  EXPECT_NEAR(e->trialState().basicForce(0), r.N, 1e-12 * law.Fc());
+  EXPECT_NEAR(e->resistingForce()(8), r.N, 1e-12 * law.Fc());
+  EXPECT_NEAR((*e->response(std::vector<std::string>{"verticalStiffness"}))(0), law.stiffness(0.3),
+              1e-9 * law.Kv0());
+  EXPECT_EQ((*e->response(std::vector<std::string>{"verticalBranch"}))(0), 1.0);
+  EXPECT_NEAR((*e->response(std::vector<std::string>{"criticalLoad"}))(0), law.criticalLoad(0.3),
+              1e-9 * law.Pcr0());
+}
+
+TEST(YoshidaBearing3dTest, KumarVerticalTangentMatchesFiniteDifferenceInEveryBranch) {
+  const KumarVertical law(kumar());
+  for (const auto& x : {kCoincidentNodes, kInclined}) {
+    auto e = make(x, true, kumarElement());
+    const Eigen::Matrix3d R = e->axes();  // rows: local x, y, z in global coordinates
+    // Node j moved by a local axial d0 and a local shear (d1, d2), rotations zero.
+    auto at = [&](double d0, double d1, double d2) {
+      TrialState s = zeroState(0.01);
+      s.u.segment<3>(6) = R.transpose() * Eigen::Vector3d(d0, d1, d2);
+      return s;
+    };
+    struct Case {
+      const char* what;
+      double d0, d1, d2;
+      int branch;
+      bool commit;
+    };
+    // In order: each case starts from the state the earlier committed ones left. The shear
+    // increments avoid whole multiples of the material's sub-step (0.02 U0): there the number of
+    // sub-steps, and with it the discrete shear force, jumps.
+    const Case cases[] = {{"elastic compression with shear", -0.004, 0.2, -0.1, 0, false},
+                          {"buckled with shear", -0.03, 0.25, 0.1, 3, false},
+                          {"post-cavitation envelope", 0.03, 0.2, 0.1, 1, true},
+                          {"after cavitation, between ucn and umax", 0.015, 0.2231, 0.1, 2, false},
+                          {"after cavitation, elastic", 0.0003, 0.2231, 0.1, 0, false}};
+    for (const Case& c : cases) {
+      const TrialState s = at(c.d0, c.d1, c.d2);
+      ASSERT_TRUE(ok(e->update(s.kinematics()))) << c.what;
+      ASSERT_EQ(e->trialState().vertical.branch, c.branch) << c.what;
+      const Eigen::MatrixXd k = e->tangentStiff();
+      const Eigen::MatrixXd kfd = testing::numericalStiffness(*e, s, 1e-8);
+      EXPECT_LT(testing::relativeDifference(k, kfd), kFdRelTol) << c.what;
+      // The coupling itself (the axial force at j against j's shear displacement), which is
+      // small beside Kv in the matrix norm: the global rows of the axial force at j.
+      const Eigen::Vector3d ax = R.row(0).transpose();
+      for (int dir = 1; dir <= 2; ++dir) {
+        const Eigen::Vector3d shear = R.row(dir).transpose();
+        const double kc = ax.dot(k.block<3, 3>(6, 6) * shear);
+        const double kcfd = ax.dot(kfd.block<3, 3>(6, 6) * shear);
+        EXPECT_NEAR(kc, kcfd, 1e-5 * std::max(std::abs(kcfd), law.Fc())) << c.what << " " << dir;
+      }
+      if (c.commit) e->commitState();
+    }
+    // The coupling of N with the shear does not vanish (Kv and Pcr fall with |U|).
+    ASSERT_TRUE(ok(e->update(at(-0.03, 0.25, 0.1).kinematics())));
+    const Eigen::MatrixXd k = e->tangentStiff();
+    EXPECT_GT(std::abs(R.row(0) * k.block<3, 3>(6, 6) * R.row(1).transpose()), 1.0);
+  }
+}
+
+TEST(YoshidaBearing3dTest, KumarVerticalCommitRevertAndRevertToStart) {
+  auto e = make(kCoincidentNodes, false, kumarElement());
+  const KumarVertical law(kumar());
+  TrialState s = zeroState();
+  s.u(8) = 0.05;  // cavitates and damages
+  ASSERT_TRUE(ok(e->update(s.kinematics())));
+  e->commitState();
+  const KumarVertical::State committed = e->committedState().vertical;
+  EXPECT_DOUBLE_EQ(committed.umax, 0.05);
+  EXPECT_LT(committed.cavitationRatio, 1.0);
+  // A larger trial excursion, reverted: the history is the committed one again.
+  s.u(8) = 0.2;
+  ASSERT_TRUE(ok(e->update(s.kinematics())));
+  EXPECT_DOUBLE_EQ(e->trialState().vertical.umax, 0.2);
+  e->revertToLastCommit();
+  EXPECT_DOUBLE_EQ(e->trialState().vertical.umax, committed.umax);
+  EXPECT_DOUBLE_EQ(e->trialState().vertical.cavitationRatio, committed.cavitationRatio);
+  s.u(8) = 0.01;  // on the unloading path of the committed history
+  ASSERT_TRUE(ok(e->update(s.kinematics())));
+  EXPECT_NEAR(e->trialState().basicForce(0), law.evaluate(0.01, 0.0, committed).N,
+              1e-12 * law.Fc());
+  EXPECT_EQ(e->trialState().vertical.branch, 2);
+  e->revertToStart();
+  EXPECT_DOUBLE_EQ(e->committedState().vertical.umax, 0.0);
+  EXPECT_DOUBLE_EQ(e->committedState().vertical.cavitationRatio, 1.0);
+  ASSERT_TRUE(ok(e->update(s.kinematics())));
+  EXPECT_NEAR(e->trialState().basicForce(0), law.evaluate(0.01, 0.0, {}).N, 1e-12 * law.Fc());
+}
+
+TEST(YoshidaBearing3dTest, WithoutTheVerticalOptionTheAxialSpringStaysLinear) {
+  auto e = make(kCoincidentNodes);
+  EXPECT_EQ(e->verticalLaw(), nullptr);
+  EXPECT_FALSE(e->hasNonSymmetricTangent());
+  for (double d0 : {0.05, -0.05}) {
+    TrialState s = zeroState();
+    s.u(6) = 0.15;
+    s.u(8) = d0;
+    ASSERT_TRUE(ok(e->update(s.kinematics())));
+    EXPECT_EQ(e->trialState().basicForce(0), kKv * d0);  // bit for bit
+    EXPECT_EQ(e->tangentStiff()(8, 8), kKv);
+    EXPECT_EQ(e->tangentStiff()(8, 6), 0.0);
+  }
+  EXPECT_FALSE(e->response(std::vector<std::string>{"verticalStiffness"}).has_value());
+}
+
+TEST(YoshidaBearing3dTest, KumarVerticalValidation) {
+  YoshidaBearing3d::Params p = kumarElement();
+  EXPECT_NO_THROW(p.validate());  // Tr and Kv need not be given
+  p.vertical->Do = 0.05;          // below Di
+  try {
+    p.validate();
+    ADD_FAILURE() << "no error";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.field(), "Di");
+  }
+}
+
+TEST(YoshidaBearing3dTest, PDeltaMomentsAreHalfTheAxialForceTimesTheShearAtEachEnd) {
+  for (bool kumarLaw : {false, true}) {
+    YoshidaBearing3d::Params p = kumarLaw ? kumarElement() : element();
+    p.pDelta = true;
+    auto e = make(kCoincidentNodes, false, p);
+    EXPECT_TRUE(e->hasNonSymmetricTangent());
+    // Coincident nodes: local x = global Z, y = global X, z = global Y. Compression with shear.
+    TrialState s = zeroState();
+    s.u(6) = 0.12;    // d1
+    s.u(7) = -0.05;   // d2
+    s.u(8) = -0.002;  // d0
+    ASSERT_TRUE(ok(e->update(s.kinematics())));
+    const double n = e->trialState().basicForce(0);
+    ASSERT_LT(n, 0.0);
+    const Eigen::VectorXd fl = *e->response(std::vector<std::string>{"localForce"});
+    // Rotations are zero, so the rocking springs carry nothing: the moments are P-Delta alone.
+    EXPECT_NEAR(fl(5), 0.5 * n * 0.12, 1e-12 * std::abs(n));    // Mz at i
+    EXPECT_NEAR(fl(11), 0.5 * n * 0.12, 1e-12 * std::abs(n));   // Mz at j
+    EXPECT_NEAR(fl(4), -0.5 * n * -0.05, 1e-12 * std::abs(n));  // My at i
+    EXPECT_NEAR(fl(10), -0.5 * n * -0.05, 1e-12 * std::abs(n));
+    // The end moments balance the couple of the axial forces (N at j offset by d from i):
+    // sum of local moments about z = N d1, about y = -N d2.
+    EXPECT_NEAR(fl(5) + fl(11), n * 0.12, 1e-12 * std::abs(n));
+    // Without -pDelta the same state has no end moments.
+    p.pDelta = false;
+    auto plain = make(kCoincidentNodes, false, p);
+    ASSERT_TRUE(ok(plain->update(s.kinematics())));
+    EXPECT_EQ((*plain->response(std::vector<std::string>{"localForce"}))(5), 0.0);
+  }
+}
+
+TEST(YoshidaBearing3dTest, PDeltaTangentMatchesFiniteDifference) {
+  for (const auto& x : {kCoincidentNodes, kInclined}) {
+    for (bool kumarLaw : {false, true}) {
+      YoshidaBearing3d::Params p = kumarLaw ? kumarElement() : element();
+      p.pDelta = true;
+      auto e = make(x, true, p);
+      TrialState s = zeroState(0.01);
+      s.u << 0.001, 0.002, -0.001, 0.002, 0.001, -0.003, 0.13, -0.07, -0.02, 0.001, -0.002, 0.004;
+      ASSERT_TRUE(ok(e->update(s.kinematics())));
+      const Eigen::MatrixXd k = e->tangentStiff();
+      const Eigen::MatrixXd kfd = testing::numericalStiffness(*e, s, 1e-8);
+      EXPECT_LT(testing::relativeDifference(k, kfd), kFdRelTol) << kumarLaw;
+      // The moment rows alone (small beside the axial stiffness in the matrix norm).
+      for (int row : {3, 4, 5, 9, 10, 11})
+        EXPECT_LT((k.row(row) - kfd.row(row)).norm(), 1e-5 * std::max(1.0, kfd.row(row).norm()))
+            << "row " << row << " kumar " << kumarLaw;
+    }
+  }
+}
+
 TEST(YoshidaBearing3dTest, NewtonConvergesQuadraticallyUnderTakatori) {
   double dtRecord = 0.0;
   const std::vector<double> ag =

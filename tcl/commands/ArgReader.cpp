@@ -325,6 +325,32 @@ double ArgReader::realAfterOption(std::string_view key, std::string_view name) {
   return value;
 }
 
+std::vector<double> ArgReader::realsAfterOption(std::string_view key,
+                                                std::initializer_list<std::string_view> names) {
+  const std::size_t read = positionOf(key);
+  assert(read != 0 && "realsAfterOption needs the option's value read first");
+  std::string all;
+  for (std::string_view name : names) {
+    if (!all.empty()) all.push_back(' ');
+    all.append(name);
+  }
+  std::vector<double> out;
+  out.reserve(names.size());
+  std::size_t j = read + 1;
+  for (std::string_view name : names) {
+    double value = 0.0;
+    if (j >= tokens_.size() || used_[j] || !parseReal(tokens_[j], value))
+      expected(j, name,
+               "expected a number after " + std::string(key) + " " + std::string(text(read)) +
+                   " (" + all + ")");
+    used_[j] = true;
+    record(name, j);
+    out.push_back(value);
+    ++j;
+  }
+  return out;
+}
+
 std::optional<std::vector<double>> ArgReader::optionReals(std::string_view key, std::size_t n) {
   const std::size_t i = findKey(key);
   if (i == kNone) return std::nullopt;

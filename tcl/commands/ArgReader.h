@@ -3,6 +3,7 @@
 
 #include <tcl.h>
 
+#include <initializer_list>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -84,6 +85,10 @@ class ArgReader {
   /// "-afterFailure drop h", read by optionalWordOption("-afterFailure") and then
   /// realAfterOption("-afterFailure", "h")); the number is recorded under `name`.
   double realAfterOption(std::string_view key, std::string_view name);
+  /// Consumes the numbers right after the value of option `key` (read before), one per name, each
+  /// recorded under its name (as in "-vertical kumar G Kbulk ...").
+  std::vector<double> realsAfterOption(std::string_view key,
+                                       std::initializer_list<std::string_view> names);
   /// Consumes "-key v1 v2 ... vn" (exactly n reals) when present.
   std::optional<std::vector<double>> optionReals(std::string_view key, std::size_t n);
   /// Consumes "-key v1 v2 ..." with every following number when present (at least one).

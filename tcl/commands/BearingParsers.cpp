@@ -4,6 +4,8 @@
 // couple the two shear directions) and `element yoshidaBearing`.
 #include <array>
 #include <string>
+#include <string_view>
+#include <vector>
 
 #include "elements/link/YoshidaBearing3d.h"
 #include "materials/InputError.h"
@@ -20,7 +22,10 @@ constexpr const char* kYoshidaUsage =
 constexpr const char* kBearingUsage =
     "element yoshidaBearing tag iNode jNode matTag -Tr Tr -Kv Kv ?-Kt Kt? ?-Kr Kr ?Krz?? "
     "?-orient x1 x2 x3 y1 y2 y3? ?-mass m? ?-limits design failure? ?-afterFailure "
-    "keep|release|stop|{drop h}? ?-seat Ks mu_s mu_k ?Kst??";
+    "keep|release|stop|{drop h}? ?-seat Ks mu_s mu_k ?Kst?? ?-vertical kumar G Kbulk Di Do ts tr "
+    "n? ?-tc tc? ?-kc kc? ?-phi phi? ?-ac ac? ?-cavitation 0|1? ?-buckling 0|1? ?-kvShear 0|1? "
+    "?-pDelta? "
+    "(-Tr and -Kv are required without -vertical, not allowed with it)";
 
 // Seat friction when -seat is not given (steel girder end on a concrete pier cap, a round value).
 constexpr double kDefaultSeatFriction = 0.5;
@@ -61,11 +66,52 @@ void biaxialMaterialCommand(Runtime& rt, ArgReader& args) {
   Tcl_SetObjResult(rt.interp, Tcl_NewIntObj(tag));
 }
 
+// A 0|1 switch of -vertical kumar (default 1).
+bool readSwitch(ArgReader& args, std::string_view key) {
+  const int v = args.option(key, 1);
+  if (v != 0 && v != 1) args.failArgument(key, "expected 0 or 1");
+  return v == 1;
+}
+
+// -vertical kumar G Kbulk Di Do ts tr n and its options (Kumar et al. 2014; see KumarVertical.h).
+void readVertical(ArgReader& args, elements::YoshidaBearing3d::Params& p) {
+  static constexpr std::array<const char*, 7> kOptions{"-tc",         "-kc",       "-phi",    "-ac",
+                                                       "-cavitation", "-buckling", "-kvShear"};
+  const auto law = args.optionalWordOption("-vertical");
+  if (!law) {
+    for (const char* key : kOptions)
+      if (args.optionalOption(key)) args.failArgument(key, "needs -vertical kumar");
+    return;
+  }
+  if (*law != "kumar") args.failArgument("-vertical", "expected kumar");
+  const std::vector<double> v =
+      args.realsAfterOption("-vertical", {"G", "Kbulk", "Di", "Do", "ts", "tr", "n"});
+  elements::KumarVertical::Params k;
+  k.G = v[0];
+  k.Kbulk = v[1];
+  k.Di = v[2];
+  k.Do = v[3];
+  k.ts = v[4];
+  k.tr = v[5];
+  k.n = v[6];
+  k.tc = args.option("-tc", k.tc);
+  k.kc = args.option("-kc", k.kc);
+  k.phi = args.option("-phi", k.phi);
+  k.ac = args.option("-ac", k.ac);
+  k.cavitation = readSwitch(args, "-cavitation");
+  k.buckling = readSwitch(args, "-buckling");
+  k.kvShear = readSwitch(args, "-kvShear");
+  p.vertical = k;
+}
+
 // element yoshidaBearing tag iNode jNode matTag -Tr Tr -Kv Kv ?-Kt Kt? ?-Kr Kr ?Krz??
 //   ?-orient x1 x2 x3 y1 y2 y3? ?-mass m? ?-limits design failure? ?-afterFailure
 //   keep|release|stop|drop?
 // with drop: -afterFailure drop h ?-seat Ks mu_s mu_k ?Kst?? (h the bearing's height; seat
 // defaults Ks = Kv, mu_s = mu_k = 0.5, Kst = Ks)
+// and -vertical kumar G Kbulk Di Do ts tr n ?-tc tc? ?-kc kc? ?-phi phi? ?-ac ac?
+//   ?-cavitation 0|1? ?-buckling 0|1? ?-kvShear 0|1? (the arguments in the order and with the
+//   names of OpenSees' ElastomericX; Tr = n tr and Kv0 follow from them) and ?-pDelta?
 std::unique_ptr<elements::Element> parseYoshidaBearing(Runtime& rt, ArgReader& args, int tag) {
   using elements::YoshidaBearing3d;
   if (rt.builder.ndm != 3)
@@ -119,11 +165,29 @@ std::unique_ptr<elements::Element> parseYoshidaBearing(Runtime& rt, ArgReader& a
       args.failArgument("-seat", 4,
                         "is a fifth value: -seat takes Ks mu_s mu_k and optionally Kst");
   }
+  readVertical(args, p);
+  // -pDelta: the P-Delta end moments of the axial force, as OpenSees' ElastomericX adds them.
+  p.pDelta = args.flag("-pDelta");
   args.finish();
-  if (!tr) args.fail("-Tr (total rubber thickness) is required");
-  if (!kv) args.fail("-Kv (axial stiffness) is required");
-  p.Tr = *tr;
-  p.Kv = *kv;
+  if (p.vertical) {
+    // One source for Tr and Kv: the geometry of -vertical kumar.
+    if (tr) args.failArgument("-Tr", "is not allowed with -vertical kumar (Tr = n tr)");
+    if (kv)
+      args.failArgument("-Kv",
+                        "is not allowed with -vertical kumar (Kv0 = Ec A / Tr from G, Kbulk "
+                        "and the geometry)");
+    // The law's Tr and Kv0 (the element takes the same), so defaults that follow Kv (the seat's
+    // Ks) follow Kv0.
+    p.vertical->validate();
+    const elements::KumarVertical law(*p.vertical);
+    p.Tr = law.Tr();
+    p.Kv = law.Kv0();
+  } else {
+    if (!tr) args.fail("-Tr (total rubber thickness) is required");
+    if (!kv) args.fail("-Kv (axial stiffness) is required");
+    p.Tr = *tr;
+    p.Kv = *kv;
+  }
   if (p.afterFailure == YoshidaBearing3d::AfterFailure::Drop) {
     p.seat.Ks = seat ? (*seat)[0] : p.Kv;
     p.seat.muS = seat ? (*seat)[1] : kDefaultSeatFriction;

@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 #include <tcl.h>
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -66,6 +67,34 @@ TEST(ArgReaderTest, PositionsOfPositionalArgumentsAndOptions) {
   EXPECT_EQ(args.positionOf("Fy"), 6u);   // a validation error names the field without '-'
   EXPECT_EQ(args.positionOf("b"), 8u);
   EXPECT_EQ(args.positionOf("eta"), 0u);  // never read
+}
+
+TEST(ArgReaderTest, RealsAfterAWordOptionRecordEachUnderItsName) {
+  Words w{"element", "yoshidaBearing", "5", "-vertical", "kumar", "800", "2e6", "0.1", "-kc", "20"};
+  ArgReader args(w.count(), w.data(), "element yoshidaBearing tag ?-vertical kumar G K Di?", 2);
+  args.setContext("element yoshidaBearing 5");
+  args.integer("tag");
+  EXPECT_EQ(args.optionalWordOption("-vertical"), std::optional<std::string>("kumar"));
+  const std::vector<double> v = args.realsAfterOption("-vertical", {"G", "K", "Di"});
+  EXPECT_EQ(v, (std::vector<double>{800.0, 2e6, 0.1}));
+  EXPECT_EQ(args.option("-kc", 10.0), 20.0);
+  args.finish();
+  EXPECT_EQ(args.positionOf("G"), 5u);
+  EXPECT_EQ(args.positionOf("Di"), 7u);
+  // Too few numbers: the error names the first missing one and lists what was expected.
+  Words few{"element", "yoshidaBearing", "5", "-vertical", "kumar", "800", "-kc", "20"};
+  ArgReader short_(few.count(), few.data(), "usage", 2);
+  short_.setContext("element yoshidaBearing 5");
+  short_.integer("tag");
+  short_.optionalWordOption("-vertical");
+  try {
+    short_.realsAfterOption("-vertical", {"G", "K", "Di"});
+    ADD_FAILURE() << "no error";
+  } catch (const ArgError& e) {
+    EXPECT_EQ(std::string(e.what()),
+              "element yoshidaBearing 5: argument 6 (K) expected a number after -vertical kumar "
+              "(G K Di), got \"-kc\"; usage: usage");
+  }
 }
 
 TEST(ArgReaderTest, FailArgumentNamesPositionAndTokenOrTheCommand) {

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: MIT
-// Bad input to `element yoshidaBearing ... -afterFailure drop h ?-seat Ks mu_s mu_k ?Kst??`: each
+// Bad input to `element yoshidaBearing ... -afterFailure drop h ?-seat Ks mu_s mu_k ?Kst??` and to
+// `-vertical kumar G Kbulk Di Do ts tr n ?-tc ..?`: each
 // error names the command, the argument by its position on the command line (the command word
 // is argument 0) and what was expected, and leaves the model unchanged.
 
@@ -90,6 +91,76 @@ TEST_F(BearingParsersTest, DropErrorsNameTheArgumentAndWhatWasExpected) {
   EXPECT_TRUE(has(m, "usage: element yoshidaBearing"));
   EXPECT_EQ(elementCount(), 0);           // nothing was added
   ok(bearing("-afterFailure drop 0.2"));  // the tag is still free
+}
+
+// "element yoshidaBearing 5 1 2 1 -vertical kumar G Kbulk Di Do ts tr n": -vertical is argument
+// 6, kumar 7, G 8 ... n 14, the next option word 15 and its value 16.
+std::string kumarBearing(const std::string& options) {
+  return "element yoshidaBearing 5 1 2 1 -vertical kumar 800 2e6 0.1 0.8 0.003 0.01 20 " + options;
+}
+
+TEST_F(BearingParsersTest, VerticalKumarIsAcceptedWithItsOptions) {
+  bearingModel();
+  ok(kumarBearing(""));
+  // Defaults: tc 0, kc 10, phi 0.5, ac 1, every effect on; Tr = n tr.
+  EXPECT_TRUE(has(printed(5),
+                  "vertical kumar 800 2e+06 0.1 0.8 0.003 0.01 20 tc 0 kc 10 phi 0.5 ac 1 "
+                  "cavitation 1 buckling 1 kvShear 1"));
+  EXPECT_TRUE(has(printed(5), "Tr 0.2 Kv "));
+  EXPECT_EQ(ok("eleResponse 5 maxTension"), "0.0");
+  EXPECT_EQ(ok("eleResponse 5 verticalBranch"), "0.0");
+  ok("node 3 0 0 0; node 4 0 0 0");
+  ok("element yoshidaBearing 6 3 4 1 -Kt 10 -vertical kumar 800 2e6 0 0.8 0.003 0.01 20 -tc 0.01 "
+     "-kc 20 -phi 0.3 -ac 2 -cavitation 0 -buckling 0 -kvShear 0");
+  EXPECT_TRUE(has(printed(6), "tc 0.01 kc 20 phi 0.3 ac 2 cavitation 0 buckling 0 kvShear 0"));
+  EXPECT_FALSE(has(printed(6), "pDelta"));
+  // The seat's default stiffness follows Kv, here Kv0 from the geometry.
+  ok("node 11 0 0 0; node 12 0 0 0");
+  ok("element yoshidaBearing 8 11 12 1 -vertical kumar 800 2e6 0.1 0.8 0.003 0.01 20 "
+     "-afterFailure drop 0.3");
+  const std::string text = printed(8);
+  const std::size_t at = text.find(" Kv ") + 4;
+  const std::string kv0 = text.substr(at, text.find(' ', at) - at);
+  EXPECT_TRUE(has(text, "afterFailure drop 0.3 seat " + kv0 + " 0.5 0.5 " + kv0));
+  ok("node 9 0 0 0; node 10 0 0 0");
+  ok("element yoshidaBearing 7 9 10 1 -Tr 0.2 -Kv 1e6 -pDelta");  // with the linear axial spring
+  EXPECT_TRUE(has(printed(7), "pDelta"));
+}
+
+TEST_F(BearingParsersTest, VerticalKumarErrorsNameTheArgumentAndWhatWasExpected) {
+  bearingModel();
+  std::string m = error("element yoshidaBearing 5 1 2 1 -vertical kumar 800 2e6 0.1 0.8 0.003");
+  EXPECT_TRUE(has(m,
+                  "element yoshidaBearing 5: argument 13 (tr) expected a number after -vertical "
+                  "kumar (G Kbulk Di Do ts tr n), got nothing"));
+  m = error("element yoshidaBearing 5 1 2 1 -vertical kumar 800 2e6 0.1 0.8 x 0.01 20");
+  EXPECT_TRUE(has(m, "argument 12 (ts) expected a number after -vertical kumar"));
+  EXPECT_TRUE(has(m, "got \"x\""));
+  m = error("element yoshidaBearing 5 1 2 1 -vertical linear 800");
+  EXPECT_TRUE(has(m, "argument 7 (-vertical) expected kumar, got \"linear\""));
+  m = error(kumarBearing("").replace(kumarBearing("").find(" 800 "), 5, " -800 "));
+  EXPECT_TRUE(has(m, "argument 8: G (shear modulus) must be positive, got \"-800\""));
+  m = error("element yoshidaBearing 5 1 2 1 -vertical kumar 800 2e6 0.9 0.8 0.003 0.01 20");
+  EXPECT_TRUE(has(m, "argument 10: Di (inner diameter) must be less than Do, got \"0.9\""));
+  m = error("element yoshidaBearing 5 1 2 1 -vertical kumar 800 2e6 0.1 0.8 0.003 0.01 2.5");
+  EXPECT_TRUE(has(m, "argument 14: n (number of rubber layers) must be a whole number >= 1"));
+  m = error(kumarBearing("-phi 1.5"));
+  EXPECT_TRUE(has(m, "argument 16: phi (damage index) must be in [0, 1), got \"1.5\""));
+  m = error(kumarBearing("-kc 0"));
+  EXPECT_TRUE(has(m, "argument 16: kc (cavitation parameter) must be positive, got \"0\""));
+  m = error(kumarBearing("-buckling 2"));
+  EXPECT_TRUE(has(m, "argument 16 (-buckling) expected 0 or 1, got \"2\""));
+  m = error(kumarBearing("-Kv 1e6"));
+  EXPECT_TRUE(has(m, "argument 16 (-Kv) is not allowed with -vertical kumar"));
+  m = error(kumarBearing("-Tr 0.2"));
+  EXPECT_TRUE(has(m, "argument 16 (-Tr) is not allowed with -vertical kumar (Tr = n tr)"));
+  m = error(bearing("-phi 0.3"));
+  EXPECT_TRUE(has(m, "argument 11 (-phi) needs -vertical kumar, got \"0.3\""));
+  m = error("element yoshidaBearing 5 1 2 1 -Kt 10");
+  EXPECT_TRUE(has(m, "-Tr (total rubber thickness) is required"));
+  EXPECT_TRUE(has(m, "usage: element yoshidaBearing"));
+  EXPECT_EQ(elementCount(), 0);  // nothing was added
+  ok(kumarBearing(""));          // the tag is still free
 }
 
 }  // namespace
