@@ -33,18 +33,20 @@ proc run {case motion bx strain gx gy rot {resx 0.0} {resy 0.0} {resz 0.002} {se
   return [dict create case $case motion $motion scale 1.0 peak $peak last $last]
 }
 
-# Independent reading of a comparison: word from the two magnitudes.
-proc expectedWord {a b} {
+# Independent reading of a comparison: word from the two magnitudes and the unit (the report
+# states that below 1 mm or 1e-4 rad nothing moves, so no change there is a reduction).
+proc expectedWord {a b {unit ""}} {
   set ref [expr {max($a, $b)}]
-  if {$ref == 0.0 || abs($b - $a) < $::kSame * $ref} { return "about the same" }
+  set floor [expr {$unit eq "m" ? 0.001 : ($unit eq "rad" ? 0.0001 : 0.0)}]
+  if {$ref == 0.0 || $ref < $floor || abs($b - $a) < $::kSame * $ref} { return "about the same" }
   return [expr {$b < $a ? "reduces" : "increases"}]
 }
 # Every "a -> b unit (p %, word)" in text; returns the number of comparisons checked.
 proc checkComparisons {label text} {
   set n 0
-  foreach {all a b p word} [regexp -all -inline {([0-9.]+) -> ([0-9.]+) [a-z]+ \(([-+0-9.]+) %, ([a-z ]+)\)} $text] {
+  foreach {all a b unit p word} [regexp -all -inline {([0-9.]+) -> ([0-9.]+) ([a-z]+) \(([-+0-9.]+) %, ([a-z ]+)\)} $text] {
     incr n
-    set want [expectedWord $a $b]
+    set want [expectedWord $a $b $unit]
     check "$label: \"$all\" says $want" [expr {$word eq $want}] "(says $word)"
     set pct [expr {$a > 0 ? 100.0 * ($b - $a) / $a : 0.0}]
     check "$label: \"$all\" percentage" [expr {abs($pct - $p) <= 0.05 + 100.0 * 0.0005 / max($a, 1e-3)}] "(recomputed $pct)"
@@ -58,6 +60,14 @@ check "changeWord: 4 % smaller is about the same" [expr {[findings::changeWord 1
 check "changeWord: 6 % smaller reduces" [expr {[findings::changeWord 1.0 0.94] eq "reduces"}]
 check "changeWord: 6 % larger increases" [expr {[findings::changeWord 0.94 1.0] eq "increases"}]
 check "changeWord: zero and zero" [expr {[findings::changeWord 0.0 0.0] eq "about the same"}]
+check "changeWord: rotations below 1e-4 rad are no motion, whatever their ratio" [expr {[findings::changeWord 4e-7 1e-7 rad] eq "about the same"}]
+check "changeWord: 1e-4 rad and more compare by ratio" [expr {[findings::changeWord 4e-4 1e-4 rad] eq "reduces"}]
+check "changeWord: gaps below 1 mm are no motion" [expr {[findings::changeWord 0.0008 0.0001 m] eq "about the same"}]
+# a motion along the axis: no rotation with or without the devices; finding 2 cannot agree on it
+set rp0 [run pound r 0.4 2.0 0.10 0.0 2e-7]
+set rc0 [run countermeasure r 0.4 2.0 0.05 0.0 1e-7]
+set row [lindex [findings::paperFindings [list [list [run nopound r 0.5 2.0 0.2 0.0 2e-7] $rp0 $rc0]] {} $limits] 1]
+check "finding 2: rotations of 1e-7 rad are not reduced by the devices" [expr {[dict get $row verdict] eq "differs"}] [dict get $row ours]
 check "compare: the 0.422/0.422 case" [expr {[findings::compare 0.422 0.422 m] eq "0.422 -> 0.422 m (+0.0 %, about the same)"}] [findings::compare 0.422 0.422 m]
 
 # --- 2. a model that disagrees with the paper everywhere ------------------------------------------

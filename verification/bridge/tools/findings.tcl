@@ -15,15 +15,22 @@ namespace eval findings {
   # Shear strain of bearing failure and of the design limit (yoshidaBearing -limits defaults).
   variable failureStrain 3.0
   variable designStrain 2.5
+  # Below these sizes a quantity is no motion at all (a change between two of them is "about the
+  # same", whatever its percentage): 1 mm, and 1e-4 rad (0.5 mm at the girders' 5 m half-width).
+  # Without them a motion along the bridge axis, with rotations of 1e-7 rad, would "reduce" them.
+  variable noMotion {m 0.001 rad 0.0001}
 }
 
 # Word for the change from `before` to `after` (magnitudes): "reduces", "increases" or "about
-# the same" (|after - before| < sameFraction * max(|before|, |after|)).
-proc findings::changeWord {before after} {
+# the same" (|after - before| < sameFraction * max(|before|, |after|), or both below the unit's
+# noMotion size).
+proc findings::changeWord {before after {unit ""}} {
   variable sameFraction
+  variable noMotion
   set a [expr {abs($before)}]; set b [expr {abs($after)}]
   set ref [expr {max($a, $b)}]
-  if {$ref == 0.0 || abs($b - $a) < $sameFraction * $ref} { return "about the same" }
+  set floor [expr {[dict exists $noMotion $unit] ? [dict get $noMotion $unit] : 0.0}]
+  if {$ref == 0.0 || $ref < $floor || abs($b - $a) < $sameFraction * $ref} { return "about the same" }
   return [expr {$b < $a ? "reduces" : "increases"}]
 }
 
@@ -31,7 +38,7 @@ proc findings::changeWord {before after} {
 proc findings::compare {before after unit {digits 3}} {
   set a [expr {abs($before)}]; set b [expr {abs($after)}]
   set pct [expr {$a > 0.0 ? 100.0 * ($b - $a) / $a : 0.0}]
-  return [format "%.${digits}f -> %.${digits}f %s (%+.1f %%, %s)" $a $b $unit $pct [changeWord $a $b]]
+  return [format "%.${digits}f -> %.${digits}f %s (%+.1f %%, %s)" $a $b $unit $pct [changeWord $a $b $unit]]
 }
 
 # --- quantities of one run ---------------------------------------------------------------------
@@ -215,7 +222,7 @@ proc findings::paperFindings {motions ladder limits} {
   # judged on the middle span, as the paper's figure shows it; the extremes over the bridge beside
   foreach runs $motions {
     lassign $runs rn rp rc
-    set w [changeWord [midBearingLong $rn] [midBearingLong $rp]]
+    set w [changeWord [midBearingLong $rn] [midBearingLong $rp] m]
     lappend agree [expr {$w eq "reduces"}]
     lappend ours "[motionName $runs], middle span (G[midGirder $rn]), longitudinal bearing displacement, no pounding -> pounding: [compare [midBearingLong $rn] [midBearingLong $rp] m]; over the bridge, largest: [compare [bearingLong $rn] [bearingLong $rp] m]; largest closing of a joint (girder ends moving towards each other): [compare [closingMax $rn] [closingMax $rp] m]"
   }
@@ -228,8 +235,8 @@ proc findings::paperFindings {motions ladder limits} {
   set ours {}; set agree {}
   foreach runs $motions {
     lassign $runs rn rp rc
-    set wx [changeWord [midGapMax $rp x] [midGapMax $rc x]]
-    set wr [changeWord [midRot $rp] [midRot $rc]]
+    set wx [changeWord [midGapMax $rp x] [midGapMax $rc x] m]
+    set wr [changeWord [midRot $rp] [midRot $rc] rad]
     lappend agree [expr {$wx eq "reduces" && $wr eq "reduces"}]
     lappend ours "[motionName $runs], middle span (G[midGirder $rp] and its joints), pounding -> countermeasure: peak longitudinal gap [compare [midGapMax $rp x] [midGapMax $rc x] m], peak girder rotation about the vertical [compare [midRot $rp] [midRot $rc] rad 4]; over the bridge, largest: gap [compare [gapMax $rp x] [gapMax $rc x] m], rotation [compare [rotMax $rp] [rotMax $rc] rad 4]"
   }
@@ -264,7 +271,7 @@ proc findings::paperFindings {motions ladder limits} {
   set ours {}; set agree {}
   foreach runs $motions {
     lassign $runs rn rp rc
-    set w [changeWord [gapMax $rp y] [gapMax $rc y]]
+    set w [changeWord [gapMax $rp y] [gapMax $rc y] m]
     lappend agree [expr {$w eq "reduces"}]
     lappend ours "[motionName $runs], peak transverse gap, pounding -> countermeasure: [compare [gapMax $rp y] [gapMax $rc y] m]"
   }
@@ -326,7 +333,7 @@ proc findings::whyPounding {ladder} {
     lassign $pp sp lp
     if {$s != $sp} { continue }
     set rn [dict create peak [dict get $ln peak]]; set rp [dict create peak [dict get $lp peak]]
-    set w [changeWord [bearingLong $rn] [bearingLong $rp]]
+    set w [changeWord [bearingLong $rn] [bearingLong $rp] m]
     if {$w eq "reduces" && $reducedFrom eq ""} { set reducedFrom $s }
     lappend parts "x$s: [compare [bearingLong $rn] [bearingLong $rp] m] at [pct [strainMax $rn]] bearing strain without pounding"
   }
@@ -433,7 +440,7 @@ proc findings::whyDevices {motions dir} {
 # Markdown: the findings table and the serviceability verdicts.
 proc findings::markdown {motions ladder limits} {
   variable sameFraction
-  set out "A change is \"about the same\" when it is below [format %.0f [expr {100 * $sameFraction}]] % of the larger value; otherwise it \"reduces\" or \"increases\".\n\n"
+  set out "A change is \"about the same\" when it is below [format %.0f [expr {100 * $sameFraction}]] % of the larger value, or when both values are below 1 mm (1e-4 rad for rotations: no motion); otherwise it \"reduces\" or \"increases\".\n\n"
   append out "| # | finding of the paper | our model (numbers) | agrees / differs | why |\n|---|---|---|---|---|\n"
   foreach row [paperFindings $motions $ladder $limits] {
     append out "| [dict get $row n] | [dict get $row paper] | [dict get $row ours] | [dict get $row verdict] | [dict get $row why] |\n"
