@@ -115,6 +115,8 @@ proc sensitivityRun {job} {
   return $out
 }
 
+# The smoke study starts from an empty folder (a rerun must run the model as it is now).
+if {$study eq "smoke" && [getPID] == 0} { file delete -force [file join $outDir runs] }
 set t0 [clock milliseconds]
 set summary [ensemble run $jobs sensitivityRun -out [file join $outDir runs]]
 set wall [expr {([clock milliseconds] - $t0) / 1000.0}]
