@@ -107,7 +107,7 @@ proc bridgeTable {} {
     [list "restrainers" "two sides at +-$::deviceArm m, together K $::restrainerK kN/m, slack $::restrainerSlack m, Fy [format %.0f $::restrainerFy] kN" [format "ours; JRA Part V (2002) 16.3 designs unseating-prevention devices for 1.5 R_d = %.0f kN (R_d, a girder end's dead-load reaction, %.0f kN)" [expr {1.5 * $Rd}] $Rd]] \
     [list "bumpers" "two sides, together K $::bumperK kN/m, clearance $::bumperClearance m" "ours: rubber stoppers that close before the girders touch"] \
     [list "damping" "piers $::pierDamping, girders $::girderDamping, foundation $::foundationDamping" "stiffness-proportional Rayleigh damping (bearings, contact and devices take none)"] \
-    [list "motion" "Takatori EW (RSN1120, PEER NGA-West2) at $::motionAngle deg to the axis" "the record of the paper; the NS component is not in the project (PEER's terms), so one component at an angle"] \
+    [list "motion" "Takatori EW (RSN1120, PEER NGA-West2) at $::motionAngle deg to the axis" "the record of the paper; its NS component is not in the reference data we have (PEER distributes it to registered users; no Debian package carries it), so one component at an angle"] \
     [list "free vibration after the motion" "$::tailDuration s" "about four isolated periods, before the residuals are read"]]
   set out "## The bridge\n\n| parameter | value | source or reason |\n|---|---|---|\n"
   foreach r $rows { append out "| [join $r { | }] |\n" }
