@@ -98,16 +98,18 @@ puts [format "loop of analyze 1 / one analyze $steps (processor time): %.3f (tar
 # --- 2. bridge ---
 set ::bridgeLibraryOnly 1
 source [file join [file dirname [info script]] .. bridge bridge.tcl]
-# The quantities the case study reports: girder ends and mid-spans (6 dofs each), the four
-# bearings' forces and deformations, the pounding elements' contact forces.
+# The quantities the case study reports: girder ends and mid-spans (6 dofs each), the bearings of
+# the four girder ends at the joints (their forces and deformations), the pounding elements'
+# contact forces.
 proc studyRecorders {} {
   global tmp
   if {[info exists ::recordersAdded]} { return }
   set ::recordersAdded 1
   set nodes [concat $::girderEndNodes [dict values $::girderMid]]
   recorder Node -file [file join $tmp bridge-disp.out] -time -node {*}$nodes -dof 1 2 3 4 5 6 disp
-  recorder Element -file [file join $tmp bridge-bearings.out] -time -ele 2011 2012 3011 3012 force
-  recorder Element -file [file join $tmp bridge-bearing-def.out] -time -ele 2011 2012 3011 3012 deformation
+  set bearings [concat {*}[lmap bt {2011 2012 3011 3012} { endBearings $bt }]]
+  recorder Element -file [file join $tmp bridge-bearings.out] -time -ele {*}$bearings force
+  recorder Element -file [file join $tmp bridge-bearing-def.out] -time -ele {*}$bearings deformation
   set contacts [concat {*}$::poundingEles]
   if {[llength $contacts]} {
     recorder Element -file [file join $tmp bridge-pounding.out] -time -ele {*}$contacts contactForce

@@ -24,12 +24,14 @@
 # The model (see README "The bridge case study" and report.md for the results):
 #   PC1 ... PC4  (PC(n+1) for n spans) RC piers on pile-group foundations (springs + dashpots derived below), a fiber
 #                forceBeamColumn plastic-hinge segment at the base, elastic segments above, a cap
-#   G1 G2 G3     (G1 ... Gn) simply supported steel girders, elastic 3D beams with mass, each on two Yoshida
-#                high-damping-rubber bearings (fitted set (a) of verification/bearing/fitted-parameters.md)
+#   G1 G2 G3     (G1 ... Gn) simply supported steel girders, elastic 3D beams with mass, each end on
+#                bearingsPerEnd Yoshida high-damping-rubber bearings across the width (fitted set (a)
+#                of verification/bearing/fitted-parameters.md) that drop onto their seats when they rupture
+#   ends         beyond PC1 and PC(n+1): the next units' girders, or abutments (endCondition)
 #   joints       expansion joints over PC2 and PC3 (every inner pier): point-to-surface pounding both ways between the
 #                girder end faces (4-node faces rigidly tied to the girder end); countermeasure:
 #                cable restrainers (tension) and rubber bumpers (compression) between the girder ends,
-#                longitudinal and transverse
+#                longitudinal and transverse, on both sides of the girders
 #   damping      stiffness-proportional Rayleigh damping on the piers and girders only; bearings,
 #                contact and the restrainers decline Rayleigh damping; foundation dashpots
 #   motion       one horizontal component applied at angle $motionAngle to the bridge axis
@@ -64,7 +66,8 @@ set steelE 2.0e8            ;# kPa
 set steelG 7.7e7            ;# kPa
 set girderDepth 2.5         ;# m, end-face height (girder + slab)
 set girderWidth 10.0        ;# m, end-face width
-set girderElements 4        ;# elastic elements between the bearings of a span
+set girderElements 4        ;# elastic elements between the bearings of a span (at most 8: the
+                            ;# three-span numbers of girder 6 meet the devices' from 9 on)
 set girderDamping 0.02      ;# damping ratio of the girders at their first vertical mode
 
 # RC piers: circular, D = 2 m (the section of verification/piers/pier-pushover.tcl)
@@ -131,7 +134,8 @@ set bearingDesignStrain 2.5
 #             girders sit on bearings on the abutment seat and face the backwall across the joint
 #             gap; the backwall and backfill are a bilinear spring (Caltrans SDC 1.7 section 7.8.1:
 #             initial stiffness Ki = 28.7 kN/mm per m of width scaled by h/1.7 m, passive capacity
-#             239 kPa x backwall area x h/1.7 m); PC1's and PC(n+1)'s heights are then unused
+#             239 kPa x backwall area x h/1.7 m); no restrainers or bumpers there; PC1's and
+#             PC(n+1)'s heights still set the deck level and the mean pier height
 #   free      nothing (the girders' outer ends are free): the former model, for comparison
 # The default is adjacent because the paper's bridge stands inside an elevated expressway: its
 # end piers carry the neighbouring units' girders, and the unit's end joints pound on them.
@@ -154,7 +158,7 @@ set restrainerK 4.0e4       ;# kN/m (ours)
 set restrainerSlack 0.05    ;# m, free opening before the cables pull (ours; well within the JRA
                             ;# limit of the devices' travel, 0.75 S_E = 0.68 m)
 # Strength: the design force of unseating-prevention devices, 1.5 R_d with R_d the dead-load
-# reaction of a girder end (JRA Specifications for Highway Bridges Part V, 2002, 16.3): 4415 kN
+# reaction of a girder end (JRA Specifications for Highway Bridges Part V, 2002, 16.3): 4409 kN
 set restrainerFy [expr {1.5 * 0.5 * $girderMass * ($spanLength - $jointGap) * $g}]
 set restrainerB 0.02
 set bumperK 1.0e5           ;# kN/m
@@ -353,8 +357,68 @@ proc hdrEffectiveModulus {set strain} {
   return $::hdrGeq([list $set $strain])
 }
 
+# The end face of a girder (or of what faces it across a joint) at x, rigidly tied to node center:
+# corners base + tagBase + {1..4}, (y, z) counter-clockwise seen from +X, and contactor points
+# base + tagBase + {5..8} inset from the corners by contactInset. Two equal faces have their
+# corners on each other's edges, so a corner would enter and leave the other face with every
+# sub-millimetre relative movement (force jumps that stall Newton and make the peaks depend on
+# round-off); inset points stay on the other face while the relative transverse and vertical
+# offsets are below the inset, and all eight pairs share a flat impact (K is EA/L / 8).
+proc endFace {base tagBase x center zG} {
+  set hw [expr {0.5 * $::girderWidth}]; set hd [expr {0.5 * $::girderDepth}]
+  set iw [expr {$hw - $::contactInset}]; set id [expr {$hd - $::contactInset}]
+  set k 0
+  foreach {dy dz cy cz} [list -$hw -$hd -$iw -$id $hw -$hd $iw -$id $hw $hd $iw $id -$hw $hd -$iw $id] {
+    incr k
+    node [expr {$base + $tagBase + $k}] $x $dy [expr {$zG + $dz}]
+    rigidLink beam $center [expr {$base + $tagBase + $k}]
+    node [expr {$base + $tagBase + 4 + $k}] $x $cy [expr {$zG + $cz}]
+    rigidLink beam $center [expr {$base + $tagBase + 4 + $k}]
+  }
+}
+
+# Pounding both ways across a joint between the end face (70s) of the body numbered from left and
+# the start face (60s) of the one numbered from right, masses mL and mR; returns the pair tags
+# (from tag). The left end face has outward normal +X and the right start face -X: corner order
+# gives (b - a) x (d - a) pointing towards the other girder.
+proc jointPounding {tag left right mL mR K} {
+  set faceL [list [expr {$left + 71}] [expr {$left + 72}] [expr {$left + 73}] [expr {$left + 74}]]
+  set faceR [list [expr {$right + 61}] [expr {$right + 64}] [expr {$right + 63}] [expr {$right + 62}]]
+  set pointsL [list [expr {$left + 75}] [expr {$left + 76}] [expr {$left + 77}] [expr {$left + 78}]]
+  set pointsR [list [expr {$right + 65}] [expr {$right + 66}] [expr {$right + 67}] [expr {$right + 68}]]
+  return [pounding $tag -side1 $pointsL $faceL -side2 $pointsR $faceR \
+      -K $K -e $::restitution -mu_s $::frictionS -mu_k $::frictionK -masses $mL $mR -search $::contactSearch]
+}
+
+# The countermeasure across a joint at x = xj: devices on both sides of the girders (at
+# Y = -deviceArm and +deviceArm), each with half of the stiffness and strength, so that the pair
+# of longitudinal devices resists the relative rotation of the girder ends about the vertical by
+# its couple (K/2) (2 deviceArm)^2 / 2. Materials matBase + 1 ... 6, device nodes left + 82 + 100k
+# and right + 81 + 100k tied to leftNode and rightNode, elements eleTag + k; returns the elements.
+proc jointDevices {matBase eleTag left right leftNode rightNode xj zG} {
+  set m $matBase
+  uniaxialMaterial Restrainer [expr {$m + 1}] [expr {0.5 * $::restrainerK}] $::restrainerSlack -Fy [expr {0.5 * $::restrainerFy}] -b $::restrainerB
+  uniaxialMaterial Bumper [expr {$m + 2}] [expr {0.5 * $::bumperK}] $::bumperClearance
+  uniaxialMaterial Parallel [expr {$m + 3}] [expr {$m + 1}] [expr {$m + 2}]
+  uniaxialMaterial Restrainer [expr {$m + 4}] [expr {0.5 * $::restrainerK}] $::transverseSlack -Fy [expr {0.5 * $::restrainerFy}] -b $::restrainerB
+  uniaxialMaterial Bumper [expr {$m + 5}] [expr {0.5 * $::bumperK}] $::transverseSlack
+  uniaxialMaterial Parallel [expr {$m + 6}] [expr {$m + 4}] [expr {$m + 5}]
+  set eles {}
+  foreach k {1 2} y [list -$::deviceArm $::deviceArm] {
+    set nL [expr {$left + 82 + 100 * $k}]; set nR [expr {$right + 81 + 100 * $k}]
+    node $nL $xj $y $zG
+    node $nR $xj $y $zG
+    rigidLink beam $leftNode $nL
+    rigidLink beam $rightNode $nR
+    element zeroLength [expr {$eleTag + $k}] $nL $nR -mat [expr {$m + 3}] [expr {$m + 6}] -dir 1 2
+    lappend eles [expr {$eleTag + $k}]
+  }
+  return $eles
+}
+
 proc buildModel {case} {
   foreach v $::parameterNames { if {$v ne "case" && ![string match tcl* $v] && ![string match auto* $v]} { global $v } }
+  if {$girderElements < 1 || $girderElements > 8} { error "girderElements must be 1 ... 8, got $girderElements" }
   hdrEffectiveModulus $hdr $bearingDesignStrain   ;# its own small model: before this one
   wipe
   model basic -ndm 3 -ndf 6
@@ -367,10 +431,12 @@ proc buildModel {case} {
   set Ap [expr {$pi * $pileD * $pileD / 4.0}]
   set EIp [expr {$pileE * $Ip}]
   # Chang's beam on elastic foundation: beta = (k_h D / 4 EI)^(1/4); fixed-head lateral stiffness
-  # of a long pile 4 EI beta^3. Axial: a Ap Ep / L with a = 0.027 L/D + 0.2 (JRA, cast-in-place).
+  # of a long pile 4 EI beta^3. Axial: a Ap Ep / L with a = 0.031 L/D - 0.15 for cast-in-place
+  # piles (JRA Specifications for Highway Bridges Part IV, 2002, the pile's axial spring; as we
+  # read that table: check it against the code's text before a design use)
   set beta [expr {pow($subgradeKh * $pileD / (4.0 * $EIp), 0.25)}]
   set kPileH [expr {4.0 * $EIp * pow($beta, 3)}]
-  set aV [expr {0.027 * $pileLength / $pileD + 0.2}]
+  set aV [expr {0.031 * $pileLength / $pileD - 0.15}]
   set kPileV [expr {$aV * $Ap * $pileE / $pileLength}]
   set kFH 0.0; set kFV 0.0; set kFR 0.0; set kFT 0.0
   foreach xi {-1 0 1} {
@@ -570,24 +636,9 @@ proc buildModel {case} {
         }
       }
     }
-    # end faces: corners (y, z) counter-clockwise seen from +X
-    set hw [expr {0.5 * $girderWidth}]; set hd [expr {0.5 * $girderDepth}]
-    # Contactor points (+4): inset from the corners by $contactInset. Two equal faces have their
-    # corners on each other's edges, so a corner would enter and leave the other face with every
-    # sub-millimetre relative movement (force jumps that stall Newton and make the peaks depend on
-    # round-off); inset points stay on the other face while the relative transverse and vertical
-    # offsets are below the inset, and all eight pairs share a flat impact (K below is EA/L / 8).
-    set iw [expr {$hw - $contactInset}]; set id [expr {$hd - $contactInset}]
-    foreach {tagBase x center} [list 60 $xs $first 70 $xe $last] {
-      set k 0
-      foreach {dy dz cy cz} [list -$hw -$hd -$iw -$id $hw -$hd $iw -$id $hw $hd $iw $id -$hw $hd -$iw $id] {
-        incr k
-        node [expr {$b + $tagBase + $k}] $x $dy [expr {$zG + $dz}]
-        rigidLink beam $center [expr {$b + $tagBase + $k}]
-        node [expr {$b + $tagBase + 4 + $k}] $x $cy [expr {$zG + $cz}]
-        rigidLink beam $center [expr {$b + $tagBase + 4 + $k}]
-      }
-    }
+    # end faces: corners and contactor points (endFace)
+    endFace $b 60 $xs $first $zG
+    endFace $b 70 $xe $last $zG
   }
   set ::pierEles $pierEles
   set ::girderEles $girderEles
@@ -599,38 +650,11 @@ proc buildModel {case} {
     set left [girderBase $j]
     set right [girderBase [expr {$j + 1}]]
     set list {}
-    if {$case ne "nopound"} {
-      # The left girder's end face has outward normal +X and the right girder's start face -X:
-      # corner order gives (b - a) x (d - a) pointing towards the other girder.
-      set faceL [list [expr {$left + 71}] [expr {$left + 72}] [expr {$left + 73}] [expr {$left + 74}]]
-      set faceR [list [expr {$right + 61}] [expr {$right + 64}] [expr {$right + 63}] [expr {$right + 62}]]
-      set pointsL [list [expr {$left + 75}] [expr {$left + 76}] [expr {$left + 77}] [expr {$left + 78}]]
-      set pointsR [list [expr {$right + 65}] [expr {$right + 66}] [expr {$right + 67}] [expr {$right + 68}]]
-      set list [pounding [poundingBase $j] -side1 $pointsL $faceL -side2 $pointsR $faceR \
-          -K $K -e $restitution -mu_s $frictionS -mu_k $frictionK \
-          -masses $spanMass $spanMass -search $contactSearch]
-    }
+    if {$case ne "nopound"} { set list [jointPounding [poundingBase $j] $left $right $spanMass $spanMass $K] }
     lappend ::poundingEles $list
     if {$case eq "countermeasure"} {
-      # Devices on both sides of the girders (at Y = -deviceArm and +deviceArm), each with half of
-      # the stiffness and strength: the pair of longitudinal devices resists the relative rotation
-      # of the girder ends about the vertical by its couple (K/2) (2 deviceArm)^2 / 2
-      set xj [pierX [expr {$j + 1}]]
-      set m [expr {100 + 10 * $j}]
-      uniaxialMaterial Restrainer [expr {$m + 1}] [expr {0.5 * $restrainerK}] $restrainerSlack -Fy [expr {0.5 * $restrainerFy}] -b $restrainerB
-      uniaxialMaterial Bumper [expr {$m + 2}] [expr {0.5 * $bumperK}] $bumperClearance
-      uniaxialMaterial Parallel [expr {$m + 3}] [expr {$m + 1}] [expr {$m + 2}]
-      uniaxialMaterial Restrainer [expr {$m + 4}] [expr {0.5 * $restrainerK}] $transverseSlack -Fy [expr {0.5 * $restrainerFy}] -b $restrainerB
-      uniaxialMaterial Bumper [expr {$m + 5}] [expr {0.5 * $bumperK}] $transverseSlack
-      uniaxialMaterial Parallel [expr {$m + 6}] [expr {$m + 4}] [expr {$m + 5}]
-      foreach k {1 2} y [list -$deviceArm $deviceArm] {
-        set nL [expr {$left + 82 + 100 * $k}]; set nR [expr {$right + 81 + 100 * $k}]
-        node $nL $xj $y $zG
-        node $nR $xj $y $zG
-        rigidLink beam [lindex $::girderEndNodes [expr {2 * $j - 1}]] $nL
-        rigidLink beam [lindex $::girderEndNodes [expr {2 * $j}]] $nR
-        element zeroLength [expr {[deviceTag $j] + $k}] $nL $nR -mat [expr {$m + 3}] [expr {$m + 6}] -dir 1 2
-      }
+      jointDevices [expr {100 + 10 * $j}] [deviceTag $j] $left $right \
+          [lindex $::girderEndNodes [expr {2 * $j - 1}]] [lindex $::girderEndNodes [expr {2 * $j}]] [pierX [expr {$j + 1}]] $zG
     }
   }
 
@@ -639,8 +663,6 @@ proc buildModel {case} {
   set ::endEles {}   ;# every element beyond the end piers (energy.tcl's group "ends")
   set ::deadLoadHolds {}
   if {$endCondition ne "free"} {
-    set hw [expr {0.5 * $girderWidth}]; set hd [expr {0.5 * $girderDepth}]
-    set iw [expr {$hw - $contactInset}]; set id [expr {$hd - $contactInset}]
     foreach e {0 1} {
       set nb [endBase $e]
       set dir [expr {$e == 0 ? -1.0 : 1.0}]
@@ -721,15 +743,7 @@ proc buildModel {case} {
       }
       # the other side's face across the joint gap: a left neighbour's end face (70s) meets the
       # first girder's start face (60s), a right one's start face (60s) the last girder's end face
-      set tagBase [expr {$e == 0 ? 70 : 60}]
-      set k 0
-      foreach {dy dz cy cz} [list -$hw -$hd -$iw -$id $hw -$hd $iw -$id $hw $hd $iw $id -$hw $hd -$iw $id] {
-        incr k
-        node [expr {$nb + $tagBase + $k}] $xFace $dy [expr {$zG + $dz}]
-        rigidLink beam $other [expr {$nb + $tagBase + $k}]
-        node [expr {$nb + $tagBase + 4 + $k}] $xFace $cy [expr {$zG + $cz}]
-        rigidLink beam $other [expr {$nb + $tagBase + 4 + $k}]
-      }
+      endFace $nb [expr {$e == 0 ? 70 : 60}] $xFace $other $zG
       if {$e == 0} {
         set left $nb; set right $unitGirder; set mL $otherMass; set mR $spanMass
       } else {
@@ -737,33 +751,12 @@ proc buildModel {case} {
       }
       set list {}
       if {$case ne "nopound"} {
-        set faceL [list [expr {$left + 71}] [expr {$left + 72}] [expr {$left + 73}] [expr {$left + 74}]]
-        set faceR [list [expr {$right + 61}] [expr {$right + 64}] [expr {$right + 63}] [expr {$right + 62}]]
-        set pointsL [list [expr {$left + 75}] [expr {$left + 76}] [expr {$left + 77}] [expr {$left + 78}]]
-        set pointsR [list [expr {$right + 65}] [expr {$right + 66}] [expr {$right + 67}] [expr {$right + 68}]]
-        set list [pounding [expr {$nb + 1000}] -side1 $pointsL $faceL -side2 $pointsR $faceR \
-            -K $K -e $restitution -mu_s $frictionS -mu_k $frictionK -masses $mL $mR -search $contactSearch]
+        set list [jointPounding [expr {$nb + 1000}] $left $right $mL $mR $K]
         lappend ::endEles {*}$list
       }
       if {$case eq "countermeasure" && $endCondition eq "adjacent"} {
-        set mt [expr {$nb + 10}]
-        uniaxialMaterial Restrainer [expr {$mt + 1}] [expr {0.5 * $restrainerK}] $restrainerSlack -Fy [expr {0.5 * $restrainerFy}] -b $restrainerB
-        uniaxialMaterial Bumper [expr {$mt + 2}] [expr {0.5 * $bumperK}] $bumperClearance
-        uniaxialMaterial Parallel [expr {$mt + 3}] [expr {$mt + 1}] [expr {$mt + 2}]
-        uniaxialMaterial Restrainer [expr {$mt + 4}] [expr {0.5 * $restrainerK}] $transverseSlack -Fy [expr {0.5 * $restrainerFy}] -b $restrainerB
-        uniaxialMaterial Bumper [expr {$mt + 5}] [expr {0.5 * $bumperK}] $transverseSlack
-        uniaxialMaterial Parallel [expr {$mt + 6}] [expr {$mt + 4}] [expr {$mt + 5}]
-        set leftNode [expr {$e == 0 ? $other : $unitEnd}]
-        set rightNode [expr {$e == 0 ? $unitEnd : $other}]
-        foreach k {1 2} y [list -$deviceArm $deviceArm] {
-          set nL [expr {$left + 82 + 100 * $k}]; set nR [expr {$right + 81 + 100 * $k}]
-          node $nL $xe $y $zG
-          node $nR $xe $y $zG
-          rigidLink beam $leftNode $nL
-          rigidLink beam $rightNode $nR
-          element zeroLength [expr {$nb + 2000 + $k}] $nL $nR -mat [expr {$mt + 3}] [expr {$mt + 6}] -dir 1 2
-          lappend ::endEles [expr {$nb + 2000 + $k}]
-        }
+        lappend ::endEles {*}[jointDevices [expr {$nb + 10}] [expr {$nb + 2000}] $left $right \
+            [expr {$e == 0 ? $other : $unitEnd}] [expr {$e == 0 ? $unitEnd : $other}] $xe $zG]
       }
       # {left node, right node, contact pairs}: the end joint as a joint (gap = right - left)
       lappend ::endJoints [list [expr {$e == 0 ? $other : $unitEnd}] [expr {$e == 0 ? $unitEnd : $other}] $list]
@@ -894,7 +887,7 @@ proc monitorSetup {} {
   foreach key {open close force pen} { for {set j 1} {$j <= $nJ} {incr j} { dict set peak $key$j 0.0 } }
   for {set s 1} {$s <= $::nSpans} {incr s} { dict set peak rot$s 0.0 }
   for {set p 1} {$p <= $::nSpans + 1} {incr p} { if {![isAbutment $p]} { dict set peak drift$p 0.0 } }
-  foreach e {0 1} { foreach key {endopen endclose endforce} { dict set peak $key$e 0.0 }; dict set peak endimpacts$e 0 }
+  foreach e {0 1} { foreach key {endopen endclose endforce endpen} { dict set peak $key$e 0.0 }; dict set peak endimpacts$e 0 }
   set ::run::endClosed {0 0}
   dict set peak deckx 0.0; dict set peak decky 0.0
   for {set s 1} {$s <= $::nSpans} {incr s} { dict set peak g${s}x 0.0 }
@@ -1013,9 +1006,9 @@ proc monitorStep {} {
     if {[isAbutment $p]} { continue }
     set b [pierBase $p]
     set H [pierHeight $p]
-    set dx [expr {[nodeDisp [expr {$b + 5}] 1] - [nodeDisp [expr {$b + 2}] 1] - [nodeDisp [expr {$b + 2}] 5] * $H}]
-    set dy [expr {[nodeDisp [expr {$b + 5}] 2] - [nodeDisp [expr {$b + 2}] 2] + [nodeDisp [expr {$b + 2}] 4] * $H}]
-    set drift [expr {hypot($dx, $dy) / $H}]
+    set pdx [expr {[nodeDisp [expr {$b + 5}] 1] - [nodeDisp [expr {$b + 2}] 1] - [nodeDisp [expr {$b + 2}] 5] * $H}]
+    set pdy [expr {[nodeDisp [expr {$b + 5}] 2] - [nodeDisp [expr {$b + 2}] 2] + [nodeDisp [expr {$b + 2}] 4] * $H}]
+    set drift [expr {hypot($pdx, $pdy) / $H}]
     if {$drift > [dict get $peak drift$p]} { dict set peak drift$p $drift }
     dict set last drift$p $drift
   }
@@ -1029,8 +1022,14 @@ proc monitorStep {} {
     if {$gx > [dict get $peak endopen$e]} { dict set peak endopen$e $gx }
     if {$gx < [dict get $peak endclose$e]} { dict set peak endclose$e $gx }
     dict set last endgap$e $gx
+    dict set last endgap${e}y [expr {[nodeDisp $b 2] - [nodeDisp $a 2]}]
+    dict set last endgap${e}z [expr {[nodeDisp $b 3] - [nodeDisp $a 3]}]
     set f 0.0
-    foreach c $pairs { set f [expr {$f + [lindex [eleResponse $c contactForce] 0]}] }
+    foreach c $pairs {
+      set f [expr {$f + [lindex [eleResponse $c contactForce] 0]}]
+      set pen [expr {-[lindex [eleResponse $c gap] 0]}]
+      if {$pen > [dict get $peak endpen$e]} { dict set peak endpen$e $pen }
+    }
     if {$f > [dict get $peak endforce$e]} { dict set peak endforce$e $f }
     if {$f > 0.0 && ![lindex $endClosed $e]} { dict incr peak endimpacts$e }
     lset endClosed $e [expr {$f > 0.0}]
@@ -1175,7 +1174,9 @@ proc runCase {case scale dt integrator tol motion {csv ""} {perStep ""}} {
       if {$rc != 0} { incr failed }
     }
   }
-  if {$nTail == 0 || $failed} { set equilibrium [dynamicEquilibrium] }
+  # (a run that failed in the free vibration has it from the end of the motion: the ground's
+  # patterns are gone by then)
+  if {![info exists equilibrium]} { set equilibrium [dynamicEquilibrium] }
   set contactSubsteps [dict get [contactStepping] contactSteps]
   contactStepping -off
   foreach v {peak last impacts} { set $v [set ::run::$v] }

@@ -40,15 +40,15 @@
 #   service-lost the bridge cannot carry traffic: unseating, residual, step or drift (the report's
 #                verdict; the peak opening is damage to the joint, not part of it)
 # and the HAZUS-MH bridge damage states (FEMA, HAZUS-MH MR4 Technical Manual, chapter 7), each
-# mapped by us to these quantities from its description (a state is also exceeded when a higher
-# one is):
-#   slight       "minor spalling and cracks at hinges (joints), minor cracking of the deck":
-#                joint, or bearing-250
-#   moderate     "bearing failure (keeper bars, rockers) without unseating, moderate movement":
+# mapped by us to these quantities from its description (paraphrased here; a state is also
+# exceeded when a higher one is; the column criteria of HAZUS are not mapped):
+#   slight       minor cracking and spalling at hinges, minor cracking of the deck: joint, or
+#                bearing-250
+#   moderate     keeper-bar or rocker-bearing failure without unseating, moderate movement:
 #                bearing-300, or residual
-#   extensive    "significant residual movement at connections, vertical offset, differential
-#                settlement at connections": step, or drift
-#   complete     "connection losing all bearing support, imminent deck collapse": unseating
+#   extensive    significant residual movement at connections, vertical offset, differential
+#                settlement at connections: step, or drift
+#   complete     a connection losing all bearing support, imminent deck collapse: unseating
 # Modelling uncertainty (full study): each motion runs on its own realisation of the bridge, the
 # same at every level of its ladder (Nielson and DesRoches 2007 sample one bridge per motion),
 # drawn with a fixed seed: joint gap uniform 0.03 to 0.07 m (ours: the gap at installation
@@ -71,6 +71,7 @@ source [file join $here bridge.tcl]
 source [file join $here .. ensemble fragility.tcl]
 source [file join $here .. ensemble intensity.tcl]
 source [file join $here tools findings.tcl]
+source [file join $here .. ensemble results.tcl]
 
 set study [expr {$argc > 0 ? [lindex $argv 0] : "smoke"}]
 set outDir [file normalize [expr {$argc > 1 ? [lindex $argv 1] : "ensemble-out"}]]
@@ -212,19 +213,6 @@ puts [format "%s study: %d runs on %d process(es), %.1f s: %s" $study [llength $
 # ---------------------------------------------------------------------------------------------
 # Fragility
 # ---------------------------------------------------------------------------------------------
-proc readCsv {file} {
-  set fh [open $file]; set lines [split [string trimright [read $fh] \n] \n]; close $fh
-  set header [split [lindex $lines 0] ,]
-  set rows {}
-  foreach line [lrange $lines 1 end] {
-    # results.csv quotes only error messages, which completed runs do not have
-    if {[string first \" $line] >= 0} { set line [regsub -all {"[^"]*"} $line {}] }
-    set row {}
-    foreach k $header v [split $line ,] { dict set row $k $v }
-    lappend rows $row
-  }
-  return $rows
-}
 proc exceeds {row ds} {
   set lim $::limits
   switch -- $ds {
@@ -245,7 +233,7 @@ proc exceeds {row ds} {
   }
 }
 
-set rows [readCsv [dict get $summary file]]
+set rows [ensembleResults::read [dict get $summary file]]
 set fits [dict create]
 set failedRuns [dict create]
 set fh [open [file join $outDir fragility.csv] w]
@@ -278,19 +266,23 @@ set idaFits [dict create]
 foreach c $cases {
   foreach ds $damageStates {
     foreach im {pgv sa} {
-      set firsts {}; set never 0
+      # a motion's ladder ends at its first failed run: whether it would have exceeded there is
+      # not known, so such a motion is counted apart, not as one that never exceeds
+      set firsts {}; set never 0; set cut 0
       dict for {name m} $motions {
-        set first ""
+        set first ""; set stopped 0
         foreach level [lsort -real $pgvLadder] {
+          if {$first ne "" || $stopped} { break }
           foreach row $rows {
-            if {[dict get $row case] eq $c && [dict get $row motion] eq $name && [dict get $row level] == $level &&
-                [dict get $row status] eq "ok" && $first eq "" && [exceeds $row $ds]} { set first [dict get $row $im] }
+            if {[dict get $row case] ne $c || [dict get $row motion] ne $name || [dict get $row level] != $level} { continue }
+            if {[dict get $row status] ne "ok"} { set stopped 1 } elseif {[exceeds $row $ds]} { set first [dict get $row $im] }
           }
         }
-        if {$first eq ""} { incr never } else { lappend firsts $first }
+        if {$first ne ""} { lappend firsts $first } elseif {$stopped} { incr cut } else { incr never }
       }
       set f [fragility::idaFit $firsts]
       dict set f never $never
+      dict set f cut $cut
       if {[llength $firsts] >= 2} { set f [dict merge $f [fragility::bootstrap $firsts 1000 [expr {1000 + [llength $firsts]}]]] }
       dict set idaFits $c $ds $im $f
     }
@@ -302,7 +294,8 @@ proc idaText {f unit} {
   if {[dict exists $f thetaLow]} {
     append text [format " (90 %% %.3g-%.3g; beta %.2f)" [dict get $f thetaLow] [dict get $f thetaHigh] [dict get $f beta]]
   }
-  append text [format ", %d of %d motions" [dict get $f n] [expr {[dict get $f n] + [dict get $f never]}]]
+  append text [format ", %d of %d motions" [dict get $f n] [expr {[dict get $f n] + [dict get $f never] + [dict get $f cut]}]]
+  if {[dict get $f cut] > 0} { append text [format " (%d stopped by a failed run)" [dict get $f cut]] }
   return $text
 }
 
@@ -333,6 +326,7 @@ puts $md "\nPGV ladder (m/s): $pgvLadder. Lognormal fits by maximum likelihood (
 puts $md "| damage state (limit) | IM | [join $cases { | }] |"
 puts $md "|---|---|[string repeat ---| [llength $cases]]"
 foreach ds $damageStates {
+  # (joint, unseating and residual follow each run's gap where the gap is sampled: the defaults here)
   set limit [expr {[dict exists $limits $ds] ? [format %.3g [dict get $limits $ds]] : ($ds eq "service-lost" ? "unseating, residual, step or drift" : "HAZUS, mapped")}]
   foreach im {pgv sa} unit {m/s g} {
     set cells {}
@@ -340,7 +334,7 @@ foreach ds $damageStates {
     puts $md "| $ds ($limit) | [string toupper $im] | [join $cells { | }] |"
   }
 }
-puts $md "\nIncremental dynamic analysis (Baker 2015, eqs. 3 and 4): the PGV at which each motion first exceeds the state, lognormal over the motions that reach it (the others counted; the median is then biased low), with the 90 % bootstrap band of the median (1000 resamples of the motions):\n"
+puts $md "\nIncremental dynamic analysis (Baker 2015, eqs. 3 and 4): the PGV at which each motion first exceeds the state, lognormal over the motions that reach it (the others counted; the median is then biased low), with the 90 % bootstrap band of the median (1000 resamples of the motions). The first exceeding level of the ladder is an upper bound of the motion's capacity, by up to one ladder step; a motion's ladder ends at its first failed run:\n"
 puts $md "| damage state | [join $cases { | }] |"
 puts $md "|---|[string repeat ---| [llength $cases]]"
 foreach ds $damageStates {

@@ -27,13 +27,16 @@
 #   motionAngle            0 30 60 deg  the motion's direction against the bridge axis
 #   scale                  1.0 1.5 2.0  the record's amplitude
 # A finding "flips" with a parameter when its verdict at the lower or the higher value differs
-# from the verdict at the defaults. The serviceability limits follow the joint: the residual
+# from the verdict at the defaults. The devices' slack and clearances stay as they are when the
+# gap changes (at a 0.02 m gap the bumpers' 0.03 m clearance lies beyond it, so they never act
+# before the girders pound). The serviceability limits follow the joint: the residual
 # offset a joint accommodates is its gap, and the seat's travel is half the cap less half the gap.
 
 set here [file dirname [file normalize [info script]]]
 set ::bridgeLibraryOnly 1
 source [file join $here bridge.tcl]
 source [file join $here tools findings.tcl]
+source [file join $here .. ensemble results.tcl]
 
 set study [expr {$argc > 0 ? [lindex $argv 0] : "smoke"}]
 set outDir [file normalize [expr {$argc > 1 ? [lindex $argv 1] : "sensitivity-out"}]]
@@ -126,20 +129,8 @@ puts [format "%s sensitivity study: %d settings on %d process(es), %.1f s: %s" $
 # ---------------------------------------------------------------------------------------------
 # What decides each finding
 # ---------------------------------------------------------------------------------------------
-proc readCsv {file} {
-  set fh [open $file]; set lines [split [string trimright [read $fh] \n] \n]; close $fh
-  set header [split [lindex $lines 0] ,]
-  set rows {}
-  foreach line [lrange $lines 1 end] {
-    if {[string first \" $line] >= 0} { set line [regsub -all {"[^"]*"} $line {}] }
-    set row {}
-    foreach k $header v [split $line ,] { dict set row $k $v }
-    lappend rows $row
-  }
-  return $rows
-}
 set byId [dict create]
-foreach row [readCsv [dict get $summary file]] { dict set byId [dict get $row id] $row }
+foreach row [ensembleResults::read [dict get $summary file]] { dict set byId [dict get $row id] $row }
 set statements {
   1 "Pounding greatly reduces the longitudinal displacement (middle span)"
   2 "The countermeasure works longitudinally and in rotation (middle span)"

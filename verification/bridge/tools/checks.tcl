@@ -68,6 +68,14 @@ proc checks::run {r} {
     checkTrue [format "%s: joint %d closes %.4f m <= gap %.3f + penetration %.4f m (+ 0.001)" \
         $name $j $closing $::jointGap $pen] [expr {$closing <= $::jointGap + $pen + 0.001}]
   }
+  # the unit's end joints, against the next unit's girder or the backwall
+  foreach e {0 1} side {PC1 "the last pier"} {
+    if {![dict exists $peak endpen$e] || [dict get $peak endforce$e] == 0.0 && [dict get $peak endclose$e] > -$::jointGap} { continue }
+    set closing [expr {-[dict get $peak endclose$e]}]
+    set pen [dict get $peak endpen$e]
+    checkTrue [format "%s: end joint at %s closes %.4f m <= gap %.3f + penetration %.4f m (+ 0.001)" \
+        $name $side $closing $::jointGap $pen] [expr {$closing <= $::jointGap + $pen + 0.001}]
+  }
 }
 
 # All runs of the study (results, the other motion, the ladder without the runs it reuses);

@@ -30,7 +30,10 @@ proc findings::changeWord {before after {unit ""}} {
   set a [expr {abs($before)}]; set b [expr {abs($after)}]
   set ref [expr {max($a, $b)}]
   set floor [expr {[dict exists $noMotion $unit] ? [dict get $noMotion $unit] : 0.0}]
-  if {$ref == 0.0 || $ref < $floor || abs($b - $a) < $sameFraction * $ref} { return "about the same" }
+  # the floor is judged on the value as the report prints it (to the floor's own digit), so that
+  # "0.001 -> 0.000 m" is a motion that stopped, as a reader of the printed numbers sees it
+  set printed [expr {$floor > 0.0 ? round($ref / $floor) * $floor : $ref}]
+  if {$ref == 0.0 || $printed < $floor || abs($b - $a) < $sameFraction * $ref} { return "about the same" }
   return [expr {$b < $a ? "reduces" : "increases"}]
 }
 
@@ -152,9 +155,13 @@ proc findings::failedCount {r} {
 }
 # Piers 1 ... n+1 of a run, and the largest pier drift ratio (peak or last, i.e. residual).
 proc findings::piersOf {r} {
+  # every pier with a drift (an abutment at an end has none)
   set ps {}
-  for {set p 1} {[dict exists $r peak drift$p]} {incr p} { lappend ps $p }
-  return $ps
+  foreach k [dict keys [dict get $r peak] drift*] {
+    set p [string range $k 5 end]
+    if {[string is integer -strict $p]} { lappend ps $p }
+  }
+  return [lsort -integer $ps]
 }
 proc findings::driftMax {r {which peak}} {
   set m 0.0
@@ -178,6 +185,12 @@ proc findings::residualOpening {r} {
   foreach e {0 1} { if {[dict exists $r last endgap$e]} { set m [expr {max($m, abs([dict get $r last endgap$e]))}] } }
   return $m
 }
+# Largest residual offset over the joints and the unit's end joints in direction y or z, m.
+proc findings::residualGap {r dir} {
+  set m [gapMax $r $dir last]
+  foreach e {0 1} { if {[dict exists $r last endgap$e$dir]} { set m [expr {max($m, abs([dict get $r last endgap$e$dir]))}] } }
+  return $m
+}
 # Largest travel of a girder end towards the edge of its seat (peak over the ends), m.
 proc findings::seatTravel {r} {
   set m 0.0
@@ -189,9 +202,9 @@ proc findings::seatTravel {r} {
 # {passable 0|1 word text} for one run: the residual state (step, offsets, pier drift) and the
 # seat against the limits; the peak opening is damage to the joint, not part of the verdict.
 proc findings::serviceability {r limits} {
-  set checks [list [list "residual vertical step" [gapMax $r z last] [dict get $limits step]] \
+  set checks [list [list "residual vertical step" [residualGap $r z] [dict get $limits step]] \
                   [list "residual longitudinal" [residualOpening $r] [dict get $limits residual]] \
-                  [list "residual transverse" [gapMax $r y last] [dict get $limits residual]]]
+                  [list "residual transverse" [residualGap $r y] [dict get $limits residual]]]
   if {[llength [piersOf $r]] > 0} {
     lappend checks [list "residual pier drift ratio" [driftMax $r last] [dict get $limits drift]]
   }
@@ -325,6 +338,7 @@ proc findings::firstFailureScale {ladder case} {
 
 # Why pounding does not reduce the displacement: the ladder of scales, no pounding against pounding.
 proc findings::whyPounding {ladder} {
+  # the middle span's displacement, as finding 1 is judged
   if {[llength $ladder] == 0} { return "no scale ladder was run (case all with the default motion runs it)" }
   set parts {}
   set reducedFrom ""
@@ -333,16 +347,16 @@ proc findings::whyPounding {ladder} {
     lassign $pp sp lp
     if {$s != $sp} { continue }
     set rn [dict create peak [dict get $ln peak]]; set rp [dict create peak [dict get $lp peak]]
-    set w [changeWord [bearingLong $rn] [bearingLong $rp] m]
+    set w [changeWord [midBearingLong $rn] [midBearingLong $rp] m]
     if {$w eq "reduces" && $reducedFrom eq ""} { set reducedFrom $s }
-    lappend parts "x$s: [compare [bearingLong $rn] [bearingLong $rp] m] at [pct [strainMax $rn]] bearing strain without pounding"
+    lappend parts "x$s: [compare [midBearingLong $rn] [midBearingLong $rp] m] at [pct [strainMax $rn]] bearing strain without pounding"
   }
-  set text "Record scaled, no pounding -> pounding, largest longitudinal bearing displacement: [join $parts {; }]."
+  set text "Record scaled, no pounding -> pounding, the middle span's longitudinal bearing displacement: [join $parts {; }]."
   set fail [firstFailureScale $ladder nopound]
   if {$reducedFrom ne ""} {
-    append text " Pounding reduces it from scale $reducedFrom on"
+    append text " Pounding first reduces it at scale $reducedFrom"
     append text [expr {$fail ne "" ? ", and bearings fail without pounding from scale $fail" : ""}]
-    append text ": the paper's mechanism is there; at the record's own scale our bridge (our dimensions: the paper does not publish its) does not move far enough for it, so the difference is the model."
+    append text [expr {$reducedFrom == 1.0 ? ": at the record's own scale too, so the difference lies in the motion used for the verdict, not in the scale." : ": the paper's mechanism is there; at the record's own scale our bridge (our dimensions: the paper does not publish its) does not move far enough for it, so the difference is the model."}]
   } else {
     append text " Pounding does not reduce it at any scale run, so the level of shaking (our bearings' size against the record) does not explain the difference: in this model the impacts at the joints do not limit the girders' longitudinal displacement at any of these levels."
   }
@@ -408,7 +422,7 @@ proc findings::whereLargest {motions} {
 
 # Why the devices do not reduce a quantity: how far the joints move with pounding alone against
 # the devices' free travel (dir x: restrainer slack and bumper clearance; y: transverse clearance),
-# and for x the rotation about the vertical, which one device on the girder axis cannot resist.
+# and for x the rotation about the vertical.
 proc findings::whyDevices {motions dir} {
   set parts {}
   set engaged 0

@@ -93,10 +93,10 @@ proc bridgeTable {} {
   set Rd [expr {0.5 * [dict get $d spanMass] * $::g}]
   set rows [list \
     [list "spans" "$::nSpans x $::spanLength m, simply supported steel girders" "ours: a typical span of the simply supported steel-girder viaducts of urban expressways (30 to 50 m); the paper does not publish its dimensions"] \
-    [list "beyond the end piers" $::endCondition "ours, see bridge.tcl: the unit stands in an elevated viaduct, its end piers carry the next units' girders"] \
+    [list "beyond the end piers" $::endCondition [dict get {adjacent "the default: the unit stands in an elevated viaduct, its end piers carry the next units' girders (rigid bodies on their bearings, their far piers elastic)" abutment "seat-type abutments with a backwall and backfill (Caltrans SDC 1.7, 7.8.1), no devices there" free "nothing: the end girders' outer ends are free (the former model)"} $::endCondition]] \
     [list "pier heights" "$::pierHeights m" "ours: unequal, so that adjacent spans differ in period, the cause of pounding"] \
     [list "pier section" "circular RC, D $::pierD m, 40 bars of 32 mm, f'c 40 MPa (core)" "ours: a level-2 ductile pier of the 1996 JRA code's time (verification/piers/pier-pushover.tcl)"] \
-    [list "foundation" "footing on 3 x 3 piles of D $::pileD m, k_h $::subgradeKh kN/m3" "JRA pile-group formulas (Chang's beam; a = 0.027 L/D + 0.2)"] \
+    [list "foundation" "footing on 3 x 3 piles of D $::pileD m, k_h $::subgradeKh kN/m3" "JRA pile-group formulas (Chang's beam on elastic foundation; axial spring a Ap Ep / L, a = 0.031 L/D - 0.15 for cast-in-place piles, JRA Part IV 2002 as we read it)"] \
     [list "girder" "$::girderMass t/m, A $::girderA m2, I $::girderIvert m4, $::girderWidth m wide, $::girderDepth m deep" "ours: steel girders, RC slab, pavement and barriers of a 10 m deck"] \
     [list "expansion joint gap" "$::jointGap m" "ours: a finger joint sized for the thermal movement of a 40 m steel span"] \
     [list "bearings" "$::bearingsPerEnd per girder end, [format %.2f [expr {$::bearingArea / $::bearingsPerEnd}]] m2 each, Tr $::bearingTr m, $::girderSpacing m apart" "ours: one high-damping rubber bearing under each main girder"] \
@@ -205,6 +205,20 @@ proc runsTable {md results} {
       }
       row $md "pounding force at PC[expr {$j + 1}], peak" kN $f
       row $md "impacts at PC[expr {$j + 1}]" - $n
+    }
+    # the unit's end joints (endCondition adjacent or abutment)
+    foreach e {0 1} where [list PC1 PC[expr {[llength $girders] + 1}]] {
+      if {![dict exists $r0 peak endforce$e] || $::endCondition eq "free"} { continue }
+      set other [expr {$::endCondition eq "adjacent" ? "the next unit's girder" : "the backwall"}]
+      set v {}; set f {}; set res {}
+      foreach r $results {
+        lappend v "[fmt [dict get $r peak endopen$e]] / [fmt [expr {-[dict get $r peak endclose$e]}]]"
+        lappend f "[format %.0f [dict get $r peak endforce$e]], [dict get $r peak endimpacts$e]"
+        lappend res "[fmt [dict get $r last endgap$e]] / [fmt [dict get $r last endgap${e}y]] / [fmt [dict get $r last endgap${e}z]]"
+      }
+      row $md "end joint at $where (against $other): opening / closing, peak" m $v
+      row $md "end joint at $where: pounding force peak, impacts" "kN, -" $f
+      row $md "end joint at $where: residual long / trans / vertical" m $res
     }
     foreach s $girders {
       set v {}
