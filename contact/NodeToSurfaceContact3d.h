@@ -262,8 +262,9 @@ class NodeToSurfaceContact3d : public elements::FixedSizeElement<5, Ndf, 0u>,
   }
 
   // What a far pair's once-a-step test and its commit touch comes first, next to the start of
-  // the object (the bases hold 176 bytes: the vtable pointers, tag, node list and force vector),
-  // so that a sleeping pair costs a few cache lines of one page per step.
+  // the object (the bases hold about 180 bytes: the vtable pointers of the element and of its two
+  // interfaces, tag, node list and force vector), so that a sleeping pair costs a few cache
+  // lines of one page per step.
   bool forcesZero_ = true;
   bool holding_ = false;           ///< update() evaluates held_ (see holdStatus)
   std::uint8_t switches_ = 0;      ///< switches of the held branches in this step
