@@ -7,6 +7,7 @@
 #include <limits>
 
 #include "contact/ContactGeometry.h"
+#include "elements/FarPair.h"
 
 namespace dabs::contact {
 
@@ -42,12 +43,11 @@ class ContactSearch {
 
   /// Top of the slab the bilinear quad lies in along the unit vector n: its highest corner,
   /// max_i n.x_i. Pairs that share a target face share it, so a broad phase over many contactors
-  /// forms it once per face (AnalysisModel's far test of sleeping pairs).
+  /// forms it once per face (AnalysisModel's far test of sleeping pairs). The arithmetic is
+  /// elements::FarPair's, so the element's test and the analysis' agree to the bit.
   static double slabTop(const std::array<Eigen::Vector3d, 4>& quad,
                         const Eigen::Vector3d& n) noexcept {
-    double top = n.dot(quad[0]);
-    for (std::size_t i = 1; i < 4; ++i) top = std::max(top, n.dot(quad[i]));
-    return top;
+    return elements::FarPair::slabTop(quad, n);
   }
   /// Slab bound of a contactor against a face with slabTop `top`: its height n.x - top above the
   /// face's highest corner. One-sided: only the outward side counts (behind the face is
@@ -55,7 +55,7 @@ class ContactSearch {
   /// so a caller that forms the top once per face gets the same bound to the bit.
   static double slabBound(const Eigen::Vector3d& contactor, const Eigen::Vector3d& n,
                           double top) noexcept {
-    return n.dot(contactor) - top;
+    return elements::FarPair::slabBound(contactor, n, top);
   }
 
   /// True when the pair is farther apart than the search distance (and so may be skipped).

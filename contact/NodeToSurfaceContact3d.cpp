@@ -6,6 +6,8 @@
 #include <Eigen/Dense>
 #include <algorithm>
 #include <cmath>
+#include <limits>
+#include <numbers>
 #include <sstream>
 #include <unsupported/Eigen/AutoDiff>
 
@@ -518,6 +520,20 @@ bool NodeToSurfaceContact3d<Ndf>::setFarTrialFromCommitted(double bound, double 
       committed_.dampingEnergy + 0.5 * dt * (committed_.dashpotPower + t.dashpotPower);
   trial_ = t;
   return true;
+}
+
+template <int Ndf>
+double NodeToSurfaceContact3d<Ndf>::contactDuration(std::span<const double> nodeMasses) const {
+  double m1 = params_.M1, m2 = params_.M2;
+  if (!(m1 > 0.0 && m2 > 0.0)) {
+    m1 = nodeMasses.empty() ? 0.0 : nodeMasses[0];
+    m2 = 0.0;
+    for (std::size_t i = 1; i < nodeMasses.size(); ++i) m2 += nodeMasses[i];
+  }
+  // A face without mass is fixed (the contactor's mass alone); no contactor mass: no limit.
+  if (!(m1 > 0.0)) return std::numeric_limits<double>::infinity();
+  const double m = m2 > 0.0 ? m1 * m2 / (m1 + m2) : m1;
+  return std::numbers::pi * std::sqrt(m / params_.K);
 }
 
 template class NodeToSurfaceContact3d<3>;

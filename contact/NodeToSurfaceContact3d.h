@@ -11,6 +11,8 @@
 #include "contact/ContactSearch.h"
 #include "contact/CoulombFriction.h"
 #include "contact/NormalLaw.h"
+#include "elements/ContactPredictor.h"
+#include "elements/FarPair.h"
 #include "elements/FixedSizeElement.h"
 
 namespace dabs::contact {
@@ -113,7 +115,9 @@ struct FarTest {
 /// load point and the return map); it is non-symmetric when friction or a dashpot is on.
 /// dampingTangent() holds d(force)/d(velocity) of the dashpots and of the velocity-dependent N.
 template <int Ndf>
-class NodeToSurfaceContact3d : public elements::FixedSizeElement<5, Ndf, 0u> {
+class NodeToSurfaceContact3d : public elements::FixedSizeElement<5, Ndf, 0u>,
+                               public elements::FarPair,
+                               public elements::ContactPredictor {
   static_assert(Ndf >= 3, "contact needs three translational dofs per node");
   // No mass, no initial or committed tangent (they read as zero); the tangent and the damping
   // tangent are the pair's own, allocated at its first contact (see tangents_).
@@ -183,12 +187,30 @@ class NodeToSurfaceContact3d : public elements::FixedSizeElement<5, Ndf, 0u> {
   /// update() would set (open, no force, the bound as gap) without the rest of update()'s work and
   /// returns true; otherwise changes nothing and returns false (then call update()).
   bool updateIfFar(const std::array<Eigen::Vector3d, 5>& u, double dt);
+
+  /// The far-pair interface (elements::FarPair) while the pair has a search distance: only then
+  /// may it sleep.
+  elements::FarPair* farPair() noexcept override { return search_.enabled() ? this : nullptr; }
+  /// Every pair predicts its contact for contact stepping.
+  const elements::ContactPredictor* contactPredictor() const noexcept override { return this; }
+  elements::FarPair::Geometry farGeometry() const override {
+    return elements::FarPair::Geometry{X_, frame_.n, search_.distance()};
+  }
+  /// farTest().isFar: the test updateIfFar makes.
+  bool isFarAt(const std::array<Eigen::Vector3d, 5>& u, double& bound) const override {
+    return farTest().isFar(u, bound);
+  }
+  double committedGap() const override { return committed_.gap; }
+  bool committedClosed() const override { return committed_.status != ContactStatus::Open; }
+  /// m from -masses M1 M2 when both are given, else the contactor node's mass and the sum of the
+  /// four face nodes' masses (a face without mass is fixed: m = M1).
+  double contactDuration(std::span<const double> nodeMasses) const override;
   /// The second half of updateIfFar, for a pair whose far test (farTest()) the caller made: sets
   /// the trial state of a far pair with distance bound `bound` and returns true, or changes
   /// nothing and returns false when the step must be evaluated (a release step). Without a
   /// search distance: false. Inline for the step of a settled far pair (the gap alone changes),
   /// which is what every sleeping pair's step takes.
-  bool setFarTrial(double bound, double dt) {
+  bool setFarTrial(double bound, double dt) override {
     if (settledFar_ && search_.enabled()) {
       trial_.gap = bound;
       return true;
@@ -198,22 +220,22 @@ class NodeToSurfaceContact3d : public elements::FixedSizeElement<5, Ndf, 0u> {
   /// The data of the far test (a copy, for the analysis' own arrays).
   FarTest farTest() const { return FarTest{X_, frame_.n, search_}; }
   /// True when the pair was far (beyond its search distance) in the last committed state.
-  bool committedFar() const noexcept {
+  bool committedFar() const noexcept override {
     return search_.enabled() && committed_.status == ContactStatus::Open && !committed_.projValid &&
            committed_.gap > search_.distance();
   }
   /// True when the trial state is farther than `factor` x the search distance.
-  bool trialFarBeyond(double factor) const noexcept {
+  bool trialFarBeyond(double factor) const noexcept override {
     return search_.enabled() && trial_.status == ContactStatus::Open && !trial_.projValid &&
            trial_.gap > factor * search_.distance();
   }
   bool hasSearch() const noexcept { return search_.enabled(); }
   /// True while the pair is settled far: its trial and committed states are far, quiet and equal
   /// but for the gap (see settledFar_).
-  bool settledFar() const noexcept { return settledFar_; }
+  bool settledFar() const noexcept override { return settledFar_; }
   /// Sets the gap of a settled far pair in both states to `bound` (the analysis forms it anew
   /// for a pair it left alone for some steps); false, changing nothing, when not settled far.
-  bool setSettledGap(double bound) noexcept {
+  bool setSettledGap(double bound) noexcept override {
     if (!settledFar_) return false;
     trial_.gap = committed_.gap = bound;
     return true;
@@ -240,8 +262,9 @@ class NodeToSurfaceContact3d : public elements::FixedSizeElement<5, Ndf, 0u> {
   }
 
   // What a far pair's once-a-step test and its commit touch comes first, next to the start of
-  // the object (the base holds 160 bytes: the vtable pointer, tag, node list and force vector),
-  // so that a sleeping pair costs a few cache lines of one page per step.
+  // the object (the bases hold about 180 bytes: the vtable pointers of the element and of its two
+  // interfaces, tag, node list and force vector), so that a sleeping pair costs a few cache
+  // lines of one page per step.
   bool forcesZero_ = true;
   bool holding_ = false;           ///< update() evaluates held_ (see holdStatus)
   std::uint8_t switches_ = 0;      ///< switches of the held branches in this step

@@ -13,6 +13,9 @@
 
 namespace dabs::elements {
 
+class FarPair;
+class ContactPredictor;
+
 /// Coordinates of an element's nodes in node order, each padded to 3D with zeros (a 2D model's
 /// node (x, y) is (x, y, 0)).
 using NodalCoordinates = std::vector<Eigen::Vector3d>;
@@ -106,6 +109,14 @@ class Element {
   virtual void holdStatus() {}
   /// See HeldStatus; call after an update.
   virtual HeldStatus checkHeldStatus() { return HeldStatus::Agrees; }
+
+  /// The element's far-pair interface when it may sleep while far from contact (a contact pair
+  /// with a search distance), else null. The analysis reaches such elements through it alone, so
+  /// a new contact element needs no change to the solver.
+  virtual FarPair* farPair() noexcept { return nullptr; }
+  /// The element's contact prediction for contact stepping when it makes and breaks contact,
+  /// else null.
+  virtual const ContactPredictor* contactPredictor() const noexcept { return nullptr; }
 
   /// True when the element takes member loads (addLoad).
   virtual bool acceptsBeamLoads() const { return false; }

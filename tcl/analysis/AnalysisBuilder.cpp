@@ -6,7 +6,6 @@
 #include <cmath>
 #include <cstdio>
 
-#include "elements/link/YoshidaBearing3d.h"
 #include "materials/InputError.h"
 #include "tcl/analysis/GeneralizedAlpha.h"
 #include "tcl/analysis/LoadControl.h"
@@ -89,7 +88,6 @@ void AnalysisBuilder::wipe() {
   stats_ = {};
   contactStepping_.reset();
   afterStep = nullptr;
-  bearingsOf_ = nullptr;
 }
 
 void AnalysisBuilder::setContactStepping(const std::optional<ContactSteppingParams>& params) {
@@ -111,7 +109,6 @@ void AnalysisBuilder::ensureModel() {
     model->build();  // throws InputError for constraints it cannot enforce; nothing changed yet
     model->setThreads(threads_);
     model_ = std::move(model);
-    bearingsOf_ = nullptr;  // a new model may sit where the old one was
     system_ = std::make_unique<LinearSystem>(*model_, solver_);
     system_->patternChanged();
     integratorSeeded_ = false;
@@ -263,7 +260,7 @@ int AnalysisBuilder::advance(double dt, long factorizationsBefore) {
     ++stats_.failedSteps;
   }
   if (!ok(s)) return code(s);
-  if (noteBearingFailures()) return kBearingFailureStop;
+  if (const int stop = notifyObservers(); stop != 0) return stop;
   if (auto error = domain_.takeRecorderError()) {
     stats_.factorizations += factorizationsSoFar() - factorizationsBefore;
     char when[64];
@@ -293,43 +290,17 @@ long AnalysisBuilder::factorizationsSoFar() const {
   return factorizationsCarried_ + (system_ ? system_->factorizations() : 0);
 }
 
-bool AnalysisBuilder::noteBearingFailures() {
-  using elements::YoshidaBearing3d;
-  bool stop = false;
-  // The bearings of the model, found once per model (a string test per element per step costs
-  // as much as a far contact pair's check).
-  if (bearingsOf_ != model_.get()) {
-    bearings_.clear();
-    for (const auto& [tag, e] : domain_.elements())
-      if (e->typeName() == "yoshidaBearing") bearings_.emplace_back(tag, e.get());
-    bearingsOf_ = model_.get();
-  }
-  for (const auto& [tag, e] : bearings_) {
-    const auto& b = static_cast<const YoshidaBearing3d&>(*e);
-    if (!b.committedState().failed) {
-      failedBearings_.erase(tag);  // back to start (reset): a new failure is reported again
-      continue;
-    }
-    if (failedBearings_.count(tag) != 0) continue;
-    failedBearings_.insert(tag);
-    ++stats_.failedBearings;
-    const auto mode = b.params().afterFailure;
-    if (log) {
-      char text[256];
-      std::snprintf(
-          text, sizeof text,
-          "yoshidaBearing %d reached its failure shear strain %g at time %g; -afterFailure %s: %s",
-          tag, b.params().failureLimit, b.committedState().failureTime,
-          YoshidaBearing3d::afterFailureName(mode),
-          mode == YoshidaBearing3d::AfterFailure::Keep
-              ? "it goes on carrying load as if intact (the rubber has ruptured in reality)"
-          : mode == YoshidaBearing3d::AfterFailure::Release ? "it carries no shear from now on"
-          : mode == YoshidaBearing3d::AfterFailure::Drop
-              ? "the rubber carries nothing from now on; the girder end comes down onto its seat"
-              : "the analysis stops here with code -5");
-      log(text);
-    }
-    stop = stop || mode == YoshidaBearing3d::AfterFailure::Stop;
+StepObserver& AnalysisBuilder::addStepObserver(std::unique_ptr<StepObserver> observer) {
+  observers_.push_back(std::move(observer));
+  return *observers_.back();
+}
+
+int AnalysisBuilder::notifyObservers() {
+  int stop = 0;
+  StepContext context{stats_, log};
+  for (const auto& o : observers_) {
+    const int code = o->afterCommit(domain_, context);
+    if (stop == 0) stop = code;
   }
   return stop;
 }

@@ -3,9 +3,7 @@
 
 #include <functional>
 #include <memory>
-#include <set>
 #include <string>
-#include <utility>
 #include <vector>
 
 #include "tcl/analysis/AnalysisModel.h"
@@ -15,6 +13,7 @@
 #include "tcl/analysis/Integrator.h"
 #include "tcl/analysis/LinearSystem.h"
 #include "tcl/analysis/SolutionAlgorithm.h"
+#include "tcl/analysis/StepObserver.h"
 #include "tcl/domain/Domain.h"
 
 namespace dabs::analysis {
@@ -29,7 +28,8 @@ struct AnalysisStatistics {
   long equations = 0;        ///< equations of the last committed step (free dofs after constraints)
   long elementUpdates = 0;   ///< element state determinations
   long materialUpdates = 0;  ///< section material (fiber) state determinations
-  long failedBearings = 0;   ///< yoshidaBearing elements that reached their failure shear strain
+  long failedBearings = 0;   ///< bearings that reached their failure shear strain (their
+                             ///< StepObserver counts them)
   long contactSteps = 0;     ///< steps shortened by contact stepping (shorter than analyze's dt)
   long patternChanges = 0;   ///< matrix patterns rebuilt as contact pairs woke or fell asleep
   long redoneSteps = 0;      ///< steps redone because a sleeping contact pair would carry force
@@ -37,7 +37,8 @@ struct AnalysisStatistics {
 };
 
 /// Code `analyze` returns when a bearing with `-afterFailure stop` reached its failure strain: the
-/// step in which it did is committed and recorded, and the analysis stops there.
+/// step in which it did is committed and recorded, and the analysis stops there (the bearing's
+/// StepObserver returns it).
 inline constexpr int kBearingFailureStop = -5;
 
 /// The analysis strategy of one interpreter (style.md section 4: one per Runtime, no globals):
@@ -88,6 +89,10 @@ class AnalysisBuilder {
   /// recovered by sub-stepping once, after its sub-steps); a non-zero
   /// return stops the analysis with that code. Thrown exceptions leave analyze.
   std::function<int()> afterStep;
+  /// Adds an observer called after every committed step (StepObserver::afterCommit), after those
+  /// added before it. Observers outlive wipe(): they belong with the model's elements, which
+  /// wipeAnalysis keeps.
+  StepObserver& addStepObserver(std::unique_ptr<StepObserver> observer);
   /// Called after each output step of `analyze` with the steps done and asked for (progress
   /// reports; nothing it does changes the analysis).
   std::function<void(int done, int total)> progress;
@@ -115,9 +120,9 @@ class AnalysisBuilder {
   void rebuildPattern();
   /// Factorisations of this model's systems, across pattern changes.
   long factorizationsSoFar() const;
-  /// Notes bearings that failed in the step just committed (statistics, one log line each); true
-  /// when one of them asks to stop the analysis.
-  bool noteBearingFailures();
+  /// Calls every step observer after a committed step; 0 or the first non-zero code one returned
+  /// (every observer is called, so each notes the step).
+  int notifyObservers();
 
   domain::Domain& domain_;
   ConstraintKind constraints_ = ConstraintKind::Plain;
@@ -139,12 +144,10 @@ class AnalysisBuilder {
   std::unique_ptr<LinearSystem> system_;
   bool integratorSeeded_ = false;
   AnalysisStatistics stats_;
-  std::set<int> failedBearings_;  ///< bearings already reported
   std::unique_ptr<ContactStepping> contactStepping_;
   bool inAfterStep_ = false;
   long factorizationsCarried_ = 0;
-  std::vector<std::pair<int, const elements::Element*>> bearings_;  ///< yoshidaBearing elements
-  const AnalysisModel* bearingsOf_ = nullptr;                       ///< the model bearings_ is of
+  std::vector<std::unique_ptr<StepObserver>> observers_;
 };
 
 }  // namespace dabs::analysis

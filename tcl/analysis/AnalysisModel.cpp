@@ -115,12 +115,7 @@ void AnalysisModel::buildScatter() {
     link.rayleigh = domain_.elementRayleigh(etag);
     link.rayleighOn = link.rayleigh.any();
     const int n = e->numDof();
-    if (e->typeName() == "nodeToSurface") {
-      link.pair3 = dynamic_cast<contact::NodeToSurfaceContact3d<3>*>(e.get());
-      link.pair6 = dynamic_cast<contact::NodeToSurfaceContact3d<6>*>(e.get());
-      if ((link.pair3 && !link.pair3->hasSearch()) || (link.pair6 && !link.pair6->hasSearch()))
-        link.pair3 = nullptr, link.pair6 = nullptr;
-    }
+    link.far = e->farPair();
     link.asleep = wantsSleep(link);
     if (link.asleep) ++sleeping_;
     // A sleeper gets its buffers when it wakes (they would spread the awake links' data).
@@ -203,7 +198,7 @@ void AnalysisModel::buildScatter() {
   // same order as with every link in place); the pairs that may sleep with their far-test data.
   std::map<const elements::Element*, std::size_t> pairOrder;  // domain order of each pair
   for (const ElementLink& l : elements_)
-    if (l.pair3 || l.pair6) pairOrder.emplace(l.element, pairOrder.size());
+    if (l.far) pairOrder.emplace(l.element, pairOrder.size());
   std::stable_partition(elements_.begin(), elements_.end(),
                         [](const ElementLink& l) { return !l.asleep; });
   awake_ = elements_.size() - static_cast<std::size_t>(sleeping_);
@@ -211,16 +206,15 @@ void AnalysisModel::buildScatter() {
   std::vector<FarFace> faceOf(pairOrder.size());
   for (std::size_t k = 0; k < elements_.size(); ++k) {
     const ElementLink& l = elements_[k];
-    if (!l.pair3 && !l.pair6) continue;
+    if (!l.far) continue;
     const std::size_t i = pairOrder.at(l.element);
     PairLink& p = pairLinks_[i];
-    const contact::FarTest test = l.pair3 ? l.pair3->farTest() : l.pair6->farTest();
+    const elements::FarPair::Geometry test = l.far->farGeometry();
     p.link = k;
     p.contactor = l.nodes[0];
     p.X = test.X[0];
-    p.distance = test.search.distance();
-    p.pair3 = l.pair3;
-    p.pair6 = l.pair6;
+    p.distance = test.distance;
+    p.far = l.far;
     p.asleep = l.asleep;
     FarFace& f = faceOf[i];
     for (std::size_t j = 0; j < 4; ++j) {
@@ -278,35 +272,34 @@ void AnalysisModel::allocateBuffers(ElementLink& l, int n) {
 }
 
 bool AnalysisModel::wantsSleep(const ElementLink& l) const {
-  if (!l.pair3 && !l.pair6) return false;
+  if (!l.far) return false;
   const auto it = sleepWanted_.find(l.element);
   if (it != sleepWanted_.end()) return it->second;
-  return l.pair3 ? l.pair3->committedFar() : l.pair6->committedFar();
+  return l.far->committedFar();
 }
 
 double AnalysisModel::slabTopAt(const FarFace& f, bool committed) {
   std::array<Eigen::Vector3d, 4> quad;
   for (std::size_t j = 0; j < 4; ++j) quad[j] = f.X[j] + translation(*f.nodes[j], committed);
-  return contact::ContactSearch::slabTop(quad, f.n);
+  return elements::FarPair::slabTop(quad, f.n);
 }
 
 bool AnalysisModel::sleeperBound(const PairLink& p, const FarFace& f, double top, bool committed,
                                  double& bound) {
-  // The same arithmetic as the pair's own test (ContactSearch::isFar takes the slab first), so
+  // The same arithmetic as the pair's own test (which takes the slab first), so
   // the bound, and with it the gap the pair reports, is the same to the bit; when the slab does
   // not show the pair far, the pair's whole test decides. A finite slab bound needs a finite
   // position (a non-finite coordinate makes n.x non-finite), which the pair's test asks for.
   const Eigen::Vector3d x = p.X + translation(*p.contactor, committed);
-  const double slab = contact::ContactSearch::slabBound(x, f.n, top);
+  const double slab = elements::FarPair::slabBound(x, f.n, top);
   if (slab > p.distance && slab < kInfinity) {
     bound = slab;
     return true;
   }
-  const contact::FarTest test = p.pair3 ? p.pair3->farTest() : p.pair6->farTest();
   std::array<Eigen::Vector3d, 5> u;
   u[0] = translation(*p.contactor, committed);
   for (std::size_t j = 0; j < 4; ++j) u[j + 1] = translation(*f.nodes[j], committed);
-  return test.isFar(u, bound);
+  return p.far->isFarAt(u, bound);
 }
 
 void AnalysisModel::buildWatch() {
@@ -371,10 +364,7 @@ void AnalysisModel::wakeFace(std::size_t r) {
     const PairLink& p = pairLinks_[i];
     double bound = 0.0;
     sleeperBound(p, f, top, true, bound);
-    if (p.pair3)
-      p.pair3->setSettledGap(bound);
-    else
-      p.pair6->setSettledGap(bound);
+    p.far->setSettledGap(bound);
     domain_.setDormant(p.domainIndex, false);
   }
   faceHorizon_[r] = -kInfinity;
@@ -401,7 +391,7 @@ void AnalysisModel::endSteps() {
 void AnalysisModel::markObserved() {
   mayRest_ = false;
   for (PairLink& p : pairLinks_) {
-    const int tag = p.pair3 ? p.pair3->tag() : p.pair6->tag();
+    const int tag = elements_[p.link].element->tag();
     p.observed = observeAll_ || std::binary_search(observedTags_.begin(), observedTags_.end(), tag);
     mayRest_ = mayRest_ || !p.observed;
   }
@@ -451,10 +441,9 @@ AnalysisModel::SleepCheck AnalysisModel::checkSleepingPairs() {
         }
         double bound = 0.0;
         ++farTests_;
-        if (sleeperBound(p, f, top, false, bound) &&
-            (p.pair3 ? p.pair3->setFarTrial(bound, dt) : p.pair6->setFarTrial(bound, dt))) {
+        if (sleeperBound(p, f, top, false, bound) && p.far->setFarTrial(bound, dt)) {
           if (mayRest) {
-            mayRest = !p.observed && (p.pair3 ? p.pair3->settledFar() : p.pair6->settledFar());
+            mayRest = !p.observed && p.far->settledFar();
             slack = std::min(slack, restSlack(bound, p.distance, p.X));
           }
           continue;
@@ -470,7 +459,7 @@ AnalysisModel::SleepCheck AnalysisModel::checkSleepingPairs() {
         sleepWanted_[l.element] = false;
         if (!ok(st) || l.element->isActive()) return SleepCheck::RedoStep;
         result = SleepCheck::PatternChange;
-      } else if (l.pair3 ? l.pair3->trialFarBeyond(2.0) : l.pair6->trialFarBeyond(2.0)) {
+      } else if (l.far->trialFarBeyond(2.0)) {
         sleepWanted_[l.element] = true;
         if (result == SleepCheck::Unchanged) result = SleepCheck::PatternChange;
       }
@@ -483,7 +472,7 @@ AnalysisModel::SleepCheck AnalysisModel::checkSleepingPairs() {
 void AnalysisModel::applySleepChanges() {
   const Eigen::VectorXd P = P_;           // the external load of the current time stays
   for (const ElementLink& l : elements_)  // pairs without a change keep their state
-    if (l.pair3 || l.pair6) sleepWanted_.emplace(l.element, l.asleep);
+    if (l.far) sleepWanted_.emplace(l.element, l.asleep);
   // Resting faces rest on (a new pattern moves no node): their pairs' gaps are formed now, and
   // a face with the same pairs, all still asleep, watching the same equations, rests again with
   // its motion bound and horizon.

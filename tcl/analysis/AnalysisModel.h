@@ -12,7 +12,7 @@
 #include <string>
 #include <vector>
 
-#include "contact/NodeToSurfaceContact3d.h"
+#include "elements/FarPair.h"
 #include "materials/Status.h"
 #include "tcl/analysis/ConstraintHandler.h"
 #include "tcl/analysis/DofNumberer.h"
@@ -117,7 +117,8 @@ class AnalysisModel {
   domain::Domain& domain() noexcept { return domain_; }
 
   // --- sleeping contact pairs -------------------------------------------------------------
-  // A nodeToSurface pair with a search distance that is far apart "sleeps": it is left out of the
+  // An element that offers Element::farPair() (a contact pair with a search distance; the names
+  // are elements::FarPair's glossary) and is far apart "sleeps": it is left out of the
   // matrix pattern (no fill in the factorisation) and out of the iterations' element updates, and
   // is checked once per converged step by its distance bound alone (a few flops on its nodes'
   // displacements). A sleeper found near is woken: the pattern is rebuilt before the next step,
@@ -186,9 +187,8 @@ class AnalysisModel {
     // A nonlinear element's constant matrix terms (mass, initial-stiffness Rayleigh damping) are
     // in the tangent's constant part: was it active when that part was formed?
     bool constantActive = false;
-    contact::NodeToSurfaceContact3d<3>* pair3 = nullptr;  // a contact pair that may sleep
-    contact::NodeToSurfaceContact3d<6>* pair6 = nullptr;
-    bool asleep = false;     // left out of the pattern and the iterations
+    elements::FarPair* far = nullptr;  // a contact pair that may sleep (Element::farPair)
+    bool asleep = false;               // left out of the pattern and the iterations
     bool switching = false;  // the element's force switches between laws (Element::HeldStatus)
   };
   // The pairs that may sleep, in the domain's order, with what a sleeper's once-a-step test reads
@@ -199,8 +199,7 @@ class AnalysisModel {
     const domain::Node* contactor = nullptr;
     Eigen::Vector3d X = Eigen::Vector3d::Zero();  // the contactor's reference coordinates
     double distance = 0.0;                        // search distance
-    contact::NodeToSurfaceContact3d<3>* pair3 = nullptr;
-    contact::NodeToSurfaceContact3d<6>* pair6 = nullptr;
+    elements::FarPair* far = nullptr;
     std::uint32_t domainIndex = 0;  // the element's position in the domain's tag order
     bool asleep = false;
     bool observed = false;  // read at every step (beginSteps)
@@ -230,13 +229,13 @@ class AnalysisModel {
   bool wantsSleep(const ElementLink& l) const;
   /// Gather and work buffers of a link for n dofs (once).
   static void allocateBuffers(ElementLink& l, int n);
-  /// The face's slab top (ContactSearch::slabTop) on its nodes' trial (or committed)
+  /// The face's slab top (FarPair::slabTop) on its nodes' trial (or committed)
   /// translations.
   static double slabTopAt(const FarFace& f, bool committed);
   /// The far test's verdict and bound on the nodes' trial (or committed) translations, without
   /// writing the pair: the height above the face's slab top `top`, and the pair's whole test
-  /// (slab and bounding sphere, FarTest) when that does not show it far. The arithmetic of the
-  /// pair's own test, so the bound is the gap the pair reports, to the bit.
+  /// (slab and bounding sphere, FarPair::isFarAt) when that does not show it far. The arithmetic of
+  /// the pair's own test, so the bound is the gap the pair reports, to the bit.
   static bool sleeperBound(const PairLink& p, const FarFace& f, double top, bool committed,
                            double& bound);
   /// A resting face's bound on how far its nodes moved since its last exact test (infinity

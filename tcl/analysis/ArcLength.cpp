@@ -3,10 +3,27 @@
 
 #include <cmath>
 
+#include "materials/InputError.h"
+
 namespace dabs::analysis {
 
-ArcLength::ArcLength(double arcLength, double wU, double wF, bool loadScaled)
-    : StaticIntegrator(1), arcLength_(arcLength), wU_(wU), wF_(wF), loadScaled_(loadScaled) {}
+void ArcLength::Params::validate() const {
+  if (!(arcLength > 0.0) || !std::isfinite(arcLength))
+    throw InputError("arcLength", "must be positive");
+  // A negative or infinite weight (uRef = 0 in HSConstraint) makes the constraint meaningless.
+  if (!(wU >= 0.0) || !std::isfinite(wU)) throw InputError("wU", "must be finite and >= 0");
+  if (!(wF >= 0.0) || !std::isfinite(wF)) throw InputError("wF", "must be finite and >= 0");
+  if (wU == 0.0 && wF == 0.0) throw InputError("", "wU and wF must not both be zero");
+}
+
+ArcLength::ArcLength(const Params& params)
+    : StaticIntegrator(1),
+      arcLength_(params.arcLength),
+      wU_(params.wU),
+      wF_(params.wF),
+      loadScaled_(params.loadScaled) {
+  params.validate();
+}
 
 void ArcLength::domainChanged(LinearSystem& system) {
   StaticIntegrator::domainChanged(system);

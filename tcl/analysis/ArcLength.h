@@ -19,8 +19,20 @@ namespace dabs::analysis {
 ///   (SRC/analysis/integrator/HSConstraint.cpp).
 class ArcLength final : public StaticIntegrator {
  public:
+  struct Params {
+    double arcLength = 1.0;   ///< s, the length of a step along the path
+    double wU = 1.0;          ///< weight of the displacements
+    double wF = 1.0;          ///< weight of the load factor
+    bool loadScaled = false;  ///< wF times phat.phat (HSConstraint)
+    /// Throws InputError{field, reason} (fields arcLength, wU, wF; empty when both weights are
+    /// zero).
+    void validate() const;
+  };
+  /// Throws InputError when Params::validate() does.
+  explicit ArcLength(const Params& params);
   /// wU and wF as above; `loadScaled` multiplies wF by phat.phat (HSConstraint).
-  ArcLength(double arcLength, double wU, double wF, bool loadScaled);
+  ArcLength(double arcLength, double wU, double wF, bool loadScaled)
+      : ArcLength(Params{arcLength, wU, wF, loadScaled}) {}
   void domainChanged(LinearSystem& system) override;
   Status newStep(LinearSystem& system, double dt) override;
   Status update(LinearSystem& system, const Eigen::VectorXd& dx) override;

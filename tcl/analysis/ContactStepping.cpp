@@ -4,8 +4,9 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <numbers>
+#include <vector>
 
+#include "elements/ContactPredictor.h"
 #include "materials/InputError.h"
 
 namespace dabs::analysis {
@@ -24,54 +25,40 @@ void ContactSteppingParams::validate() const {
 namespace {
 
 // T_c / perContact of a pair (infinity when perContact is 0 or the pair has no mass).
-template <int Ndf>
-double contactStep(const contact::NodeToSurfaceContact3d<Ndf>& pair, const domain::Domain& domain,
-                   int perContact) {
+double contactStep(const elements::Element& e, const elements::ContactPredictor& pair,
+                   const domain::Domain& domain, int perContact) {
   if (perContact <= 0) return std::numeric_limits<double>::infinity();
-  const contact::NodeToSurfaceParams& p = pair.params();
-  double m1 = p.M1, m2 = p.M2;
-  if (!(m1 > 0.0 && m2 > 0.0)) {
-    // Translational masses of the nodes (the largest of a node's three): the contactor's, and
-    // the face's four summed.
-    const auto& tags = pair.nodeTags();
-    auto nodeMass = [&](int tag) {
-      const domain::Node* n = domain.findNode(tag);
-      if (n == nullptr) return 0.0;
+  // Translational masses of the element's nodes (the largest of a node's three), for a pair
+  // that takes its bodies' masses from its nodes.
+  std::vector<double> masses;
+  for (int tag : e.nodeTags()) {
+    const domain::Node* n = domain.findNode(tag);
+    double largest = 0.0;
+    if (n != nullptr) {
       const Eigen::MatrixXd& m = n->mass();
-      double largest = 0.0;
       for (int d = 0; d < 3 && d < m.rows(); ++d) largest = std::max(largest, m(d, d));
-      return largest;
-    };
-    m1 = nodeMass(tags[0]);
-    m2 = 0.0;
-    for (std::size_t i = 1; i < tags.size(); ++i) m2 += nodeMass(tags[i]);
+    }
+    masses.push_back(largest);
   }
-  // A face without mass is fixed (the contactor's mass alone); no contactor mass: no limit.
-  if (!(m1 > 0.0)) return std::numeric_limits<double>::infinity();
-  const double m = m2 > 0.0 ? m1 * m2 / (m1 + m2) : m1;
-  return std::numbers::pi * std::sqrt(m / p.K) / perContact;
+  return pair.contactDuration(masses) / perContact;
 }
 
 }  // namespace
 
 void ContactStepping::attach(const domain::Domain& domain) {
-  states_.clear();
+  pairs_.clear();
   contactStep_.clear();
   for (const auto& [tag, e] : domain.elements()) {
-    if (e->typeName() != "nodeToSurface") continue;
-    if (const auto* c3 = dynamic_cast<const contact::NodeToSurfaceContact3d<3>*>(e.get())) {
-      states_.push_back(&c3->committedState());
-      contactStep_.push_back(contactStep(*c3, domain, params_.perContact));
-    } else if (const auto* c6 = dynamic_cast<const contact::NodeToSurfaceContact3d<6>*>(e.get())) {
-      states_.push_back(&c6->committedState());
-      contactStep_.push_back(contactStep(*c6, domain, params_.perContact));
-    }
+    const elements::ContactPredictor* pair = e->contactPredictor();
+    if (pair == nullptr) continue;
+    pairs_.push_back(pair);
+    contactStep_.push_back(contactStep(*e, *pair, domain, params_.perContact));
   }
   reset();
 }
 
 void ContactStepping::reset() {
-  lastGap_.assign(states_.size(), std::numeric_limits<double>::quiet_NaN());
+  lastGap_.assign(pairs_.size(), std::numeric_limits<double>::quiet_NaN());
   lastStep_ = 0.0;
 }
 
@@ -79,10 +66,10 @@ double ContactStepping::nextStep(double remaining, double dt) {
   double h = remaining;
   bool near = false;
   const double hMin = 0.01 * params_.maxStep;
-  for (std::size_t i = 0; i < states_.size(); ++i) {
-    const contact::NodeToSurfaceState& s = *states_[i];
-    const double gap = s.gap;
-    bool pairNear = gap < 0.0 || s.status != contact::ContactStatus::Open;
+  for (std::size_t i = 0; i < pairs_.size(); ++i) {
+    const elements::ContactPredictor& pair = *pairs_[i];
+    const double gap = pair.committedGap();
+    bool pairNear = gap < 0.0 || pair.committedClosed();
     const double last = lastGap_[i];  // NaN before the first step: no prediction
     if (lastStep_ > 0.0 && gap > 0.0 && gap < last) {
       const double tClose = gap * lastStep_ / (last - gap);

@@ -4,7 +4,7 @@
 #include <limits>
 #include <vector>
 
-#include "contact/NodeToSurfaceContact3d.h"
+#include "elements/ContactPredictor.h"
 #include "tcl/domain/Domain.h"
 
 namespace dabs::analysis {
@@ -25,7 +25,8 @@ struct ContactSteppingParams {
   void validate() const;
 };
 
-/// Length of the next transient step for models with nodeToSurface pairs. Impacts last a few
+/// Length of the next transient step for models with contact pairs (elements that offer
+/// Element::contactPredictor, such as nodeToSurface). Impacts last a few
 /// hundredths of a second and start with a jump of the dashpot force, so:
 /// - while a pair is closed (or open but predicted, from its gap and gap rate over the last
 ///   step, to close within lookAhead x the rest of the output step) the step is at most maxStep;
@@ -46,12 +47,12 @@ class ContactStepping {
   explicit ContactStepping(const ContactSteppingParams& params) : params_(params) {}
 
   const ContactSteppingParams& params() const noexcept { return params_; }
-  /// Finds the domain's nodeToSurface pairs and forgets the gap history (a new model or a new
-  /// analysis).
+  /// Finds the domain's contact pairs (Element::contactPredictor) and forgets the gap history (a
+  /// new model or a new analysis).
   void attach(const domain::Domain& domain);
   /// Forgets the gap history (the next step predicts nothing).
   void reset();
-  std::size_t pairs() const noexcept { return states_.size(); }
+  std::size_t pairs() const noexcept { return pairs_.size(); }
 
   /// Length of the next step, at most `remaining` (the rest of the output step) unless a cut at a
   /// predicted contact ends just past it; `dt` is the output step, to count contact steps.
@@ -61,7 +62,7 @@ class ContactStepping {
 
  private:
   ContactSteppingParams params_;
-  std::vector<const contact::NodeToSurfaceState*> states_;  ///< committed states of the pairs
+  std::vector<const elements::ContactPredictor*> pairs_;  ///< the pairs (Element::contactPredictor)
   std::vector<double> lastGap_;
   std::vector<double> contactStep_;  ///< per pair: T_c / perContact (infinity: no limit)
   double lastStep_ = 0.0;

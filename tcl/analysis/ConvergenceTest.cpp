@@ -4,10 +4,24 @@
 #include <cmath>
 #include <sstream>
 
+#include "materials/InputError.h"
+
 namespace dabs::analysis {
 
-ConvergenceTest::ConvergenceTest(Kind kind, double tol, int maxIter, int printFlag, int normType)
-    : kind_(kind), tol_(tol), maxIter_(maxIter), printFlag_(printFlag), normType_(normType) {}
+void ConvergenceTest::Params::validate() const {
+  if (!(tol > 0.0)) throw InputError("tol", "must be positive");
+  if (maxIter < 1) throw InputError("maxIter", "must be at least 1");
+  if (normType < 0) throw InputError("nType", "must be 0 (max norm) or a positive p");
+}
+
+ConvergenceTest::ConvergenceTest(const Params& params)
+    : kind_(params.kind),
+      tol_(params.tol),
+      maxIter_(params.maxIter),
+      printFlag_(params.printFlag),
+      normType_(params.normType) {
+  params.validate();
+}
 
 double ConvergenceTest::norm(const Eigen::VectorXd& v) const {
   // OpenSees Vector::pNorm: p = 0 is the max norm, otherwise the p-norm.

@@ -17,7 +17,19 @@ class ConvergenceTest {
   /// Result of one test: converged, keep iterating, or failed (maxIter reached).
   enum class Result { Converged, Continue, Failed };
 
-  ConvergenceTest(Kind kind, double tol, int maxIter, int printFlag = 0, int normType = 2);
+  struct Params {
+    Kind kind = Kind::NormUnbalance;
+    double tol = 1e-6;  ///< tolerance of the norm (> 0)
+    int maxIter = 25;   ///< iterations before the step fails (>= 1)
+    int printFlag = 0;  ///< OpenSees' pFlag (what to print per iteration)
+    int normType = 2;   ///< p of the norm, 0 the max norm
+    /// Throws InputError{field, reason} (fields tol, maxIter, nType as in the Tcl command).
+    void validate() const;
+  };
+  /// Throws InputError when Params::validate() does.
+  explicit ConvergenceTest(const Params& params);
+  ConvergenceTest(Kind kind, double tol, int maxIter, int printFlag = 0, int normType = 2)
+      : ConvergenceTest(Params{kind, tol, maxIter, printFlag, normType}) {}
 
   /// Starts the iterations of a step.
   void start() noexcept { iteration_ = 0; }

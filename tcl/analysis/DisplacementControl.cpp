@@ -4,17 +4,28 @@
 #include <algorithm>
 #include <cmath>
 
+#include "materials/InputError.h"
+
 namespace dabs::analysis {
 
-DisplacementControl::DisplacementControl(int node, int dof, double incr, int Jd, double dUmin,
-                                         double dUmax, bool initialTangent)
-    : StaticIntegrator(Jd),
-      node_(node),
-      dof_(dof),
-      incr_(incr),
-      dUmin_(dUmin),
-      dUmax_(dUmax),
-      initialTangent_(initialTangent) {}
+void DisplacementControl::Params::validate() const {
+  if (dof < 0) throw InputError("dof", "must be 1 or more");
+  if (!std::isfinite(incr)) throw InputError("incr", "must be a finite number");
+  if (Jd < 1) throw InputError("Jd", "must be at least 1");
+  if (!std::isfinite(dUmin)) throw InputError("dUmin", "must be a finite number");
+  if (!std::isfinite(dUmax)) throw InputError("dUmax", "must be a finite number");
+}
+
+DisplacementControl::DisplacementControl(const Params& params)
+    : StaticIntegrator(params.Jd),
+      node_(params.node),
+      dof_(params.dof),
+      incr_(params.incr),
+      dUmin_(params.dUmin),
+      dUmax_(params.dUmax),
+      initialTangent_(params.initialTangent) {
+  params.validate();
+}
 
 void DisplacementControl::domainChanged(LinearSystem& system) {
   StaticIntegrator::domainChanged(system);

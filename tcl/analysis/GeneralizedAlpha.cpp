@@ -1,10 +1,48 @@
 // SPDX-License-Identifier: MIT
 #include "tcl/analysis/GeneralizedAlpha.h"
 
+#include <cmath>
+#include <string>
+#include <utility>
+
+#include "materials/InputError.h"
+
 namespace dabs::analysis {
 
-GeneralizedAlpha::GeneralizedAlpha(double alphaM, double alphaF, double gamma, double beta)
-    : alphaM_(alphaM), alphaF_(alphaF), gamma_(gamma), beta_(beta) {}
+void GeneralizedAlpha::Params::validate() const {
+  for (const auto& [name, value] :
+       {std::pair{"alphaM", alphaM}, {"alphaF", alphaF}, {"gamma", gamma}, {"beta", beta}})
+    if (!std::isfinite(value)) throw InputError(name, "must be a finite number");
+  if (!(gamma > 0.0)) throw InputError("gamma", "must be positive");
+  if (!(beta > 0.0)) throw InputError("beta", "must be positive");
+  // The Tcl parser allows the same round-off below the bounds (values typed with few digits).
+  constexpr double kRoundOff = 1e-12;
+  if (alphaM == 1.0 && alphaF == 1.0) {
+    // Newmark's amplification matrix has a root above 1 for every step when gamma < 1/2.
+    if (gamma < 0.5 - kRoundOff)
+      throw InputError("gamma", "must be at least 1/2 (below it Newmark's step is unstable)");
+    return;
+  }
+  // Chung & Hulbert (1993) eq. 25 with alpha_m = 1 - alphaM, alpha_f = 1 - alphaF.
+  if (!(alphaF >= 0.5 && alphaF <= 1.0 && alphaM >= alphaF && alphaM <= 2.0))
+    throw InputError("alphaF",
+                     "and alphaM must satisfy 1/2 <= alphaF <= alphaM <= 2 and alphaF <= 1 for "
+                     "unconditional stability (Chung & Hulbert 1993)");
+  const double d = alphaM - alphaF;
+  if (gamma < 0.5 + d - kRoundOff)
+    throw InputError("gamma",
+                     "must be at least 1/2 + alphaM - alphaF = " + std::to_string(0.5 + d) +
+                         " for unconditional stability (Chung & Hulbert 1993)");
+  if (beta < 0.25 + 0.5 * d - kRoundOff)
+    throw InputError(
+        "beta", "must be at least 1/4 + (alphaM - alphaF)/2 = " + std::to_string(0.25 + 0.5 * d) +
+                    " for unconditional stability (Chung & Hulbert 1993)");
+}
+
+GeneralizedAlpha::GeneralizedAlpha(const Params& params)
+    : alphaM_(params.alphaM), alphaF_(params.alphaF), gamma_(params.gamma), beta_(params.beta) {
+  params.validate();
+}
 
 void GeneralizedAlpha::domainChanged(LinearSystem& system) {
   Integrator::domainChanged(system);

@@ -12,7 +12,22 @@ namespace dabs::analysis {
 /// Newmark.cpp, HHT.cpp, GeneralizedAlpha.cpp). The unknown is the displacement increment.
 class GeneralizedAlpha final : public Integrator {
  public:
-  GeneralizedAlpha(double alphaM, double alphaF, double gamma, double beta);
+  /// Parameters in OpenSees' convention (Newmark: alphaM = alphaF = 1).
+  struct Params {
+    double alphaM = 1.0;  ///< weight of the new state in the inertia term
+    double alphaF = 1.0;  ///< weight of the new state in the other terms
+    double gamma = 0.5;   ///< Newmark's gamma
+    double beta = 0.25;   ///< Newmark's beta
+    /// Throws InputError{field, reason} (fields alphaM, alphaF, gamma, beta): finite values,
+    /// gamma and beta positive; Newmark needs gamma >= 1/2 (below it every mode grows; the
+    /// conditionally stable choices, such as linear acceleration, are the caller's); otherwise
+    /// the unconditional stability conditions of Chung and Hulbert (1993, eq. 25).
+    void validate() const;
+  };
+  /// Throws InputError when Params::validate() does.
+  explicit GeneralizedAlpha(const Params& params);
+  GeneralizedAlpha(double alphaM, double alphaF, double gamma, double beta)
+      : GeneralizedAlpha(Params{alphaM, alphaF, gamma, beta}) {}
 
   bool transient() const override { return true; }
   void domainChanged(LinearSystem& system) override;

@@ -3,7 +3,18 @@
 
 #include <Eigen/QR>
 
+#include "materials/InputError.h"
+
 namespace dabs::analysis {
+
+void KrylovNewton::Params::validate() const {
+  if (maxDim < 1) throw InputError("-maxDim", "must be at least 1");
+}
+
+KrylovNewton::KrylovNewton(const Params& params)
+    : initial_(params.initial), maxDim_(params.maxDim) {
+  params.validate();
+}
 
 Status KrylovNewton::solveCurrentStep(LinearSystem& system, Integrator& integrator,
                                       ConvergenceTest* test) {

@@ -14,7 +14,15 @@ namespace dabs::analysis {
 /// once per step and again after every m + 1 iterations.
 class KrylovNewton final : public SolutionAlgorithm {
  public:
-  KrylovNewton(bool initial, int maxDim) : initial_(initial), maxDim_(maxDim) {}
+  struct Params {
+    bool initial = false;  ///< the initial stiffness instead of the tangent
+    int maxDim = 3;        ///< corrections kept for the acceleration (>= 1)
+    /// Throws InputError{field, reason} (field -maxDim as in the Tcl command).
+    void validate() const;
+  };
+  /// Throws InputError when Params::validate() does.
+  explicit KrylovNewton(const Params& params);
+  KrylovNewton(bool initial, int maxDim) : KrylovNewton(Params{initial, maxDim}) {}
   Status solveCurrentStep(LinearSystem& system, Integrator& integrator,
                           ConvergenceTest* test) override;
 

@@ -1,10 +1,26 @@
 // SPDX-License-Identifier: MIT
 #include "tcl/analysis/LoadControl.h"
 
+#include <cmath>
+
+#include "materials/InputError.h"
+
 namespace dabs::analysis {
 
-LoadControl::LoadControl(double dLambda, int Jd, double minLambda, double maxLambda)
-    : StaticIntegrator(Jd), dLambda_(dLambda), minLambda_(minLambda), maxLambda_(maxLambda) {}
+void LoadControl::Params::validate() const {
+  if (!std::isfinite(dLambda)) throw InputError("dLambda", "must be a finite number");
+  if (Jd < 1) throw InputError("Jd", "must be at least 1");
+  if (!std::isfinite(minLambda)) throw InputError("minLambda", "must be a finite number");
+  if (!std::isfinite(maxLambda)) throw InputError("maxLambda", "must be a finite number");
+}
+
+LoadControl::LoadControl(const Params& params)
+    : StaticIntegrator(params.Jd),
+      dLambda_(params.dLambda),
+      minLambda_(params.minLambda),
+      maxLambda_(params.maxLambda) {
+  params.validate();
+}
 
 Status LoadControl::newStep(LinearSystem& system, double /*dt*/) {
   dLambda_ = adaptStep(dLambda_, minLambda_, maxLambda_);

@@ -4,7 +4,25 @@
 #include <algorithm>
 #include <cmath>
 
+#include "materials/InputError.h"
+
 namespace dabs::analysis {
+
+void NewtonLineSearch::Params::validate() const {
+  if (!(tol > 0.0)) throw InputError("-tol", "must be positive");
+  if (maxIter < 1) throw InputError("-maxIter", "must be at least 1");
+  if (!(minEta > 0.0 && minEta <= 1.0)) throw InputError("-minEta", "must be in (0, 1]");
+  if (!(maxEta >= 1.0) || !std::isfinite(maxEta)) throw InputError("-maxEta", "must be at least 1");
+}
+
+NewtonLineSearch::NewtonLineSearch(const Params& params)
+    : search_(params.search),
+      tol_(params.tol),
+      maxIter_(params.maxIter),
+      minEta_(params.minEta),
+      maxEta_(params.maxEta) {
+  params.validate();
+}
 
 Status NewtonLineSearch::solveCurrentStep(LinearSystem& system, Integrator& integrator,
                                           ConvergenceTest* test) {

@@ -13,8 +13,20 @@ namespace dabs::analysis {
 class NewtonLineSearch final : public SolutionAlgorithm {
  public:
   enum class Search { InitialInterpolated, Bisection, Secant, RegulaFalsi };
+  struct Params {
+    Search search = Search::InitialInterpolated;
+    double tol = 0.8;      ///< |s(eta)/s(0)| at which the search stops (> 0)
+    int maxIter = 10;      ///< search iterations per Newton iteration (>= 1)
+    double minEta = 0.1;   ///< smallest step factor, in (0, 1]
+    double maxEta = 10.0;  ///< largest step factor (>= 1)
+    /// Throws InputError{field, reason} (fields -tol, -maxIter, -minEta, -maxEta as in the Tcl
+    /// command).
+    void validate() const;
+  };
+  /// Throws InputError when Params::validate() does.
+  explicit NewtonLineSearch(const Params& params);
   NewtonLineSearch(Search search, double tol, int maxIter, double minEta, double maxEta)
-      : search_(search), tol_(tol), maxIter_(maxIter), minEta_(minEta), maxEta_(maxEta) {}
+      : NewtonLineSearch(Params{search, tol, maxIter, minEta, maxEta}) {}
   Status solveCurrentStep(LinearSystem& system, Integrator& integrator,
                           ConvergenceTest* test) override;
 

@@ -10,6 +10,8 @@
 #include "elements/link/YoshidaBearing3d.h"
 #include "materials/InputError.h"
 #include "materials/bearing/YoshidaBearingMaterial.h"
+#include "tcl/analysis/AnalysisBuilder.h"
+#include "tcl/commands/BearingFailureReport.h"
 #include "tcl/commands/Registry.h"
 
 namespace dabs::tcl {
@@ -205,7 +207,13 @@ std::unique_ptr<elements::Element> parseYoshidaBearing(Runtime& rt, ArgReader& a
     throw;
   }
   const materials::BiaxialMaterial& material = rt.builder.biaxialMaterial(matTag);
-  return std::make_unique<YoshidaBearing3d>(tag, iNode, jNode, material, p);
+  auto bearing = std::make_unique<YoshidaBearing3d>(tag, iNode, jNode, material, p);
+  // The analysis knows no bearing: the rupture report is a step observer, one per interpreter
+  // (it finds every bearing of the domain), kept through wipe like the analysis' observers.
+  if (rt.bearingFailureReport == nullptr)
+    rt.bearingFailureReport =
+        &rt.analysis->addStepObserver(std::make_unique<BearingFailureReport>());
+  return bearing;
 }
 
 constexpr std::array kBearingCommands{

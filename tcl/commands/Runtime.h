@@ -12,7 +12,8 @@
 
 namespace dabs::analysis {
 class AnalysisBuilder;
-}
+class StepObserver;
+}  // namespace dabs::analysis
 
 namespace dabs::tcl {
 
@@ -38,6 +39,9 @@ struct Runtime {
   /// Pattern that `load`, `sp`, `groundMotion` and `imposedMotion` add to (the last one defined,
   /// as in OpenSees); -1 when none.
   int currentPattern = -1;
+  /// The yoshidaBearing rupture report, registered with the analysis by the first `element
+  /// yoshidaBearing` command (owned by the analysis); null before.
+  analysis::StepObserver* bearingFailureReport = nullptr;
   /// Bindings handed to Tcl as ClientData, owned here.
   std::vector<std::unique_ptr<struct CommandBinding>> bindings;
 

@@ -69,6 +69,10 @@ constexpr KindEntry<analysis::ConvergenceTest::Kind> kTests[] = {
     {"EnergyIncr", analysis::ConvergenceTest::Kind::EnergyIncr},
 };
 
+// The parsers check their arguments first, with messages that name them as the user typed them,
+// then call the parameters' validate(), which holds the same rules for C++ callers (an
+// InputError from it is reported at the argument its field names).
+
 // --- algorithm TYPE ?options? ---------------------------------------------------------------
 
 using AlgorithmPtr = std::unique_ptr<analysis::SolutionAlgorithm>;
@@ -142,7 +146,9 @@ AlgorithmPtr parseNewtonLineSearch(ArgReader& a) {
   if (maxIter < 1) a.failArgument("-maxIter", "must be at least 1");
   if (!(minEta > 0.0 && minEta <= 1.0)) a.failArgument("-minEta", "must be in (0, 1]");
   if (!(maxEta >= 1.0)) a.failArgument("-maxEta", "must be at least 1");
-  return std::make_unique<analysis::NewtonLineSearch>(search, tol, maxIter, minEta, maxEta);
+  const analysis::NewtonLineSearch::Params p{search, tol, maxIter, minEta, maxEta};
+  p.validate();
+  return std::make_unique<analysis::NewtonLineSearch>(p);
 }
 
 AlgorithmPtr parseKrylovNewton(ArgReader& a) {
@@ -150,7 +156,9 @@ AlgorithmPtr parseKrylovNewton(ArgReader& a) {
   const bool initial = a.flag("-initial");
   const int maxDim = a.option("-maxDim", 3);
   if (maxDim < 1) a.failArgument("-maxDim", "must be at least 1");
-  return std::make_unique<analysis::KrylovNewton>(initial, maxDim);
+  const analysis::KrylovNewton::Params p{initial, maxDim};
+  p.validate();
+  return std::make_unique<analysis::KrylovNewton>(p);
 }
 
 constexpr TypeEntry<AlgorithmParser> kAlgorithms[] = {
@@ -180,7 +188,9 @@ IntegratorPtr parseLoadControl(Runtime& /*rt*/, ArgReader& a) {
   }
   a.finish();
   if (Jd < 1) a.failArgument("Jd", "must be at least 1");
-  return std::make_unique<analysis::LoadControl>(dLambda, Jd, minL, maxL);
+  const analysis::LoadControl::Params p{dLambda, Jd, minL, maxL};
+  p.validate();
+  return std::make_unique<analysis::LoadControl>(p);
 }
 
 IntegratorPtr parseDisplacementControl(Runtime& rt, ArgReader& a) {
@@ -199,8 +209,9 @@ IntegratorPtr parseDisplacementControl(Runtime& rt, ArgReader& a) {
   const domain::Node& n = rt.domain.node(node);
   if (dof < 1 || dof > n.ndf()) a.failArgument("dof", "must be 1.." + std::to_string(n.ndf()));
   if (Jd < 1) a.failArgument("Jd", "must be at least 1");
-  return std::make_unique<analysis::DisplacementControl>(node, dof - 1, incr, Jd, dUmin, dUmax,
-                                                         initial);
+  const analysis::DisplacementControl::Params p{node, dof - 1, incr, Jd, dUmin, dUmax, initial};
+  p.validate();
+  return std::make_unique<analysis::DisplacementControl>(p);
 }
 
 IntegratorPtr parseNewmark(Runtime& /*rt*/, ArgReader& a) {
@@ -212,7 +223,9 @@ IntegratorPtr parseNewmark(Runtime& /*rt*/, ArgReader& a) {
   a.finish();
   if (!(gamma > 0.0)) a.failArgument("gamma", "must be positive");
   if (!(beta > 0.0)) a.failArgument("beta", "must be positive");
-  return std::make_unique<analysis::GeneralizedAlpha>(1.0, 1.0, gamma, beta);
+  const analysis::GeneralizedAlpha::Params p{1.0, 1.0, gamma, beta};
+  p.validate();
+  return std::make_unique<analysis::GeneralizedAlpha>(p);
 }
 
 IntegratorPtr parseHHT(Runtime& /*rt*/, ArgReader& a) {
@@ -238,7 +251,9 @@ IntegratorPtr parseHHT(Runtime& /*rt*/, ArgReader& a) {
          "unconditionally stable (generalized alpha with alpha_m = 1) but its high-frequency "
          "dissipation is no longer the one HHT designed\n");
   checkAlphaStability(a, 1.0, alpha, gamma, beta);
-  return std::make_unique<analysis::GeneralizedAlpha>(1.0, alpha, gamma, beta);
+  const analysis::GeneralizedAlpha::Params p{1.0, alpha, gamma, beta};
+  p.validate();
+  return std::make_unique<analysis::GeneralizedAlpha>(p);
 }
 
 IntegratorPtr parseGeneralizedAlpha(Runtime& /*rt*/, ArgReader& a) {
@@ -252,7 +267,9 @@ IntegratorPtr parseGeneralizedAlpha(Runtime& /*rt*/, ArgReader& a) {
   }
   a.finish();
   checkAlphaStability(a, alphaM, alphaF, gamma, beta);
-  return std::make_unique<analysis::GeneralizedAlpha>(alphaM, alphaF, gamma, beta);
+  const analysis::GeneralizedAlpha::Params p{alphaM, alphaF, gamma, beta};
+  p.validate();
+  return std::make_unique<analysis::GeneralizedAlpha>(p);
 }
 
 IntegratorPtr parseCentralDifference(Runtime& /*rt*/, ArgReader& a) {
@@ -270,7 +287,9 @@ IntegratorPtr parseArcLength(Runtime& /*rt*/, ArgReader& a) {
   const double alpha = a.real("alpha");
   a.finish();
   if (!(s > 0.0)) a.failArgument("arcLength", "must be positive");
-  return std::make_unique<analysis::ArcLength>(s, 1.0, alpha * alpha, false);
+  const analysis::ArcLength::Params p{s, 1.0, alpha * alpha, false};
+  p.validate();
+  return std::make_unique<analysis::ArcLength>(p);
 }
 
 IntegratorPtr parseHSConstraint(Runtime& /*rt*/, ArgReader& a) {
@@ -282,7 +301,9 @@ IntegratorPtr parseHSConstraint(Runtime& /*rt*/, ArgReader& a) {
   if (!(s > 0.0)) a.failArgument("arcLength", "must be positive");
   if (uRef == 0.0) a.failArgument("uRef", "must not be zero");
   if (psiU == 0.0 && psiF == 0.0) a.fail("psiU and psiF must not both be zero");
-  return std::make_unique<analysis::ArcLength>(s, psiU * psiU / (uRef * uRef), psiF * psiF, true);
+  const analysis::ArcLength::Params p{s, psiU * psiU / (uRef * uRef), psiF * psiF, true};
+  p.validate();
+  return std::make_unique<analysis::ArcLength>(p);
 }
 
 constexpr TypeEntry<IntegratorParser> kIntegrators[] = {
@@ -357,7 +378,9 @@ void testCommand(Runtime& rt, ArgReader& a) {
   if (!(tol > 0.0)) a.failArgument("tol", "must be positive");
   if (maxIter < 1) a.failArgument("maxIter", "must be at least 1");
   if (nType < 0) a.failArgument("nType", "must be 0 (max norm) or a positive p");
-  auto test = std::make_unique<analysis::ConvergenceTest>(kind, tol, maxIter, pFlag, nType);
+  const analysis::ConvergenceTest::Params p{kind, tol, maxIter, pFlag, nType};
+  p.validate();
+  auto test = std::make_unique<analysis::ConvergenceTest>(p);
   test->log = rt.analysis->log;
   rt.analysis->setTest(std::move(test));
 }

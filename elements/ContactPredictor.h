@@ -1,0 +1,32 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include <span>
+
+namespace dabs::elements {
+
+/// What contact stepping (the analysis' event-located step length, ContactStepping) reads of an
+/// element that makes and breaks contact (Element::contactPredictor): its committed gap, from
+/// which the analysis predicts the instant of the next contact, and the duration of a contact,
+/// which bounds the step while the pair is closed. Read between steps, from committed states only.
+class ContactPredictor {
+ public:
+  /// Gap of the last committed state (length; > 0 open, < 0 penetration).
+  virtual double committedGap() const = 0;
+  /// True when the last committed state is in contact (sticking or sliding), whatever its gap.
+  virtual bool committedClosed() const = 0;
+  /// Half period pi sqrt(m / K) of the pair's undamped contact (time), with K its contact
+  /// stiffness and m the reduced mass of the two bodies; `nodeMasses` holds each element node's
+  /// translational mass, in element node order, for a pair that takes its bodies' masses from its
+  /// nodes. Infinity when the contactor has no mass (nothing bounds the step).
+  virtual double contactDuration(std::span<const double> nodeMasses) const = 0;
+
+ protected:
+  ContactPredictor() = default;
+  ContactPredictor(const ContactPredictor&) = default;
+  ContactPredictor& operator=(const ContactPredictor&) = default;
+  /// Not deleted through this interface: the domain owns the element.
+  ~ContactPredictor() = default;
+};
+
+}  // namespace dabs::elements

@@ -1,0 +1,30 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include <set>
+#include <utility>
+#include <vector>
+
+#include "elements/link/YoshidaBearing3d.h"
+#include "tcl/analysis/StepObserver.h"
+
+namespace dabs::tcl {
+
+/// The rupture report of `yoshidaBearing` elements, a step observer the `element yoshidaBearing`
+/// command registers once per interpreter: after each committed step, each bearing that reached
+/// its failure shear strain in it is counted in analysisStatistics' failedBearings and said once
+/// on the analysis' log (stderr), and a bearing with `-afterFailure stop` stops `analyze` with
+/// kBearingFailureStop. A bearing back at its start (reset) that fails again is reported again.
+class BearingFailureReport final : public analysis::StepObserver {
+ public:
+  int afterCommit(const domain::Domain& domain, analysis::StepContext& context) override;
+
+ private:
+  std::set<int> reported_;  ///< tags of the failed bearings already reported
+  /// The domain's bearings in tag order, found once per model version (a test per element per
+  /// step costs as much as a far contact pair's check).
+  std::vector<std::pair<int, const elements::YoshidaBearing3d*>> bearings_;
+  long bearingsOf_ = -1;  ///< the domain's modelVersion bearings_ is of
+};
+
+}  // namespace dabs::tcl
