@@ -3,7 +3,6 @@
 # face (nodeToSurface, Kelvin law with restitution, Coulomb friction), so that it strikes, slides,
 # bounces and comes back. contact.tcl is its Tcl twin. run(ops) returns the printed rows.
 # Units kN, m, s, t.
-import sys
 
 
 def run(ops):
@@ -44,12 +43,6 @@ def run(ops):
     return rows
 
 
-def show(rows):
-    for row in rows:
-        print(' '.join(repr(v) if isinstance(v, float) else str(v) for v in row))
-
-
 if __name__ == '__main__':
-    import dabs
-    show(run(dabs))
-    sys.stdout.flush()
+    from twin import main
+    main(run)

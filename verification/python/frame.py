@@ -4,7 +4,6 @@
 # Rayleigh damping). frame.tcl is its Tcl twin, word for word. Units kN, m, s, t.
 # run(ops) takes the module (dabs, or OpenSeesPy's opensees for the reference numbers) and returns
 # the rows printed: a label and numbers.
-import sys
 
 
 def run(ops):
@@ -81,12 +80,6 @@ def run(ops):
     return rows
 
 
-def show(rows):
-    for row in rows:
-        print(' '.join(repr(v) if isinstance(v, float) else str(v) for v in row))
-
-
 if __name__ == '__main__':
-    import dabs
-    show(run(dabs))
-    sys.stdout.flush()
+    from twin import main
+    main(run)

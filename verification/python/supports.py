@@ -4,7 +4,6 @@
 # support (sp, the support's only restraint), then a spring chain whose two supports move by a MultipleSupport pattern
 # (one Path record given as words, one as a list). supports.tcl is its Tcl twin. run(ops) returns
 # the printed rows. Units kN, m, s, t.
-import sys
 
 
 def run(ops):
@@ -81,12 +80,6 @@ def run(ops):
     return rows
 
 
-def show(rows):
-    for row in rows:
-        print(' '.join(repr(v) if isinstance(v, float) else str(v) for v in row))
-
-
 if __name__ == '__main__':
-    import dabs
-    show(run(dabs))
-    sys.stdout.flush()
+    from twin import main
+    main(run)

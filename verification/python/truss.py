@@ -3,7 +3,6 @@
 # load, then load cycles past yield of an yielding (Steel01) spring (displacement control).
 # truss.tcl is its Tcl twin. run(ops) takes dabs (or OpenSeesPy's opensees for the reference
 # numbers) and returns the printed rows. Units kN, m.
-import sys
 
 
 def run(ops):
@@ -58,12 +57,6 @@ def run(ops):
     return rows
 
 
-def show(rows):
-    for row in rows:
-        print(' '.join(repr(v) if isinstance(v, float) else str(v) for v in row))
-
-
 if __name__ == '__main__':
-    import dabs
-    show(run(dabs))
-    sys.stdout.flush()
+    from twin import main
+    main(run)

@@ -4,7 +4,6 @@
 # figure-of-eight orbit by imposed displacements (Path series). yoshida.tcl is its Tcl twin.
 # run(ops) returns the printed rows. Units kN, m.
 import math
-import sys
 
 
 def run(ops):
@@ -52,12 +51,6 @@ def run(ops):
     return rows
 
 
-def show(rows):
-    for row in rows:
-        print(' '.join(repr(v) if isinstance(v, float) else str(v) for v in row))
-
-
 if __name__ == '__main__':
-    import dabs
-    show(run(dabs))
-    sys.stdout.flush()
+    from twin import main
+    main(run)
