@@ -897,6 +897,10 @@ proc monitorSetup {} {
   variable ::run::seatSign
   array unset seatSign
   foreach bt $allBearings { set seatSign($bt) [expr {[lindex [bearingPlace $bt] 1] == 12 ? 1.0 : -1.0}] }
+  # each girder end's bearing elements, once per run (monitorStep reads them every step)
+  variable ::run::endElements
+  array unset endElements
+  foreach bt $allBearings { set endElements($bt) [endBearings $bt] }
   set last [dict create]
   set impacts [lrepeat $nJ 0]
   set closed [lrepeat $nJ 0]
@@ -947,7 +951,7 @@ proc monitorStep {} {
     # a girder end: the largest shear strain of its bearings (the outer ones under yaw) and the
     # mean of their displacements (the end's displacement at the girder axis)
     set e 0.0; set d1 0.0; set d2 0.0
-    set ends [endBearings $bt]
+    set ends $::run::endElements($bt)
     foreach et $ends {
       # the element's shearStrain, |u| / Tr, from the same response (one call a bearing)
       lassign [eleResponse $et deformation] d0 u1 u2
