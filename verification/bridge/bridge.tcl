@@ -114,6 +114,15 @@ set bearingRollArm 3.0      ;# m, with bearingsPerEnd 1: transverse spacing / 2 
 # there with Coulomb friction (yoshidaBearing -afterFailure drop; the seat's stiffness is the
 # bearing's own Kv, whose settlement under the weight, about 1 mm, is small against the drop)
 set seatFriction {0.5 0.4}  ;# mu_s mu_k, steel plate on steel plate after rupture
+# The bearings' vertical law: linear (default: Kv = Ec A / Tr, whatever the shear) or kumar
+# (yoshidaBearing -vertical kumar -pDelta, README "Bearing vertical behaviour": Kv falling with
+# the shear offset, cavitation at 3 G A, buckling at the offset's critical load, and the axial
+# force's P-Delta moments). For kumar each square pad is the circle of the same area (Do), its
+# rubber layer tr = Do / (4 S) rounded to a whole number of layers in bearingTr
+set bearingVertical linear
+set rubberKbulk 2.0e6       ;# kPa, bulk modulus of rubber (2000 MPa, as Kumar et al. 2014 take it)
+set shimThickness 0.0045    ;# m, steel shim between layers (ours: it sets only the height
+                            ;# Tr + (n - 1) ts of the buckling load and the P-Delta lever)
 # HDR set (a) of verification/bearing/fitted-parameters.md, fitted by `yoshida_calibration fit` to
 # Bridgestone's X0.6 design curves (Geq within 2.0 % rms, Heq within 2.3 % rms from 10 % to 300 %
 # shear strain): Y0 [MPa] U0 [strain] n alpha0 beta q gamma, per unit area and unit Tr
@@ -144,9 +153,23 @@ set abutmentKi 28700.0      ;# kN/m per m of backwall width, for a 1.7 m (5.5 ft
 set abutmentPressure 239.0  ;# kPa, passive pressure for a 1.7 m high backwall (5.0 ksf)
 
 # Pounding (Zhu, Abe and Fujino 2002): penalty K = EA/L of the girder, shared by the 8 pairs
-# (times impactStiffnessFactor, 1 but for the sensitivity study)
+# (times impactStiffnessFactor, 1 but for the sensitivity study); each pair takes its share of
+# the two bodies' masses too (1/8), so that a flat impact of the whole face damps as one
+# spring-dashpot EA/L with restitution e (with the whole masses on every pair the dashpots of
+# the 8 pairs would add up to sqrt(8) times the damping: a restitution of 0.38 for e = 0.65,
+# joint-restitution.tcl)
 set impactStiffnessFactor 1.0
 set restitution 0.65
+# The impact law (nodeToSurface -law; README "Impact laws"): kelvin (the paper's) by default;
+# for the power laws hertz, hertzdamp (Muthukumar and DesRoches 2006) and jankowski (2005) the
+# coefficient k_h of the joint's flat impact (N = k_h delta^1.5) is the one that stores the same
+# energy at the same peak penetration as the Kelvin spring EA/L at the impact speed
+# impactSpeedRef: k_h = 1.25 K / sqrt(delta*), delta* = v sqrt(m / K), m = M1 M2 / (M1 + M2) of
+# two spans; shared by the 8 pairs as K is. impactSpeedRef is the case study's largest relative
+# speed at impact (0.24 m/s at 1.0 times the record, 0.34 m/s at 1.5: measured on the pound case),
+# also hertzdamp's v0, the speed its damping is tuned to
+set impactLaw kelvin
+set impactSpeedRef 0.3      ;# m/s
 set frictionS 0.5
 set frictionK 0.4
 set contactSearch 0.5       ;# m, pairs further apart cost one bounding-sphere test
@@ -381,13 +404,42 @@ proc endFace {base tagBase x center zG} {
 # the start face (60s) of the one numbered from right, masses mL and mR; returns the pair tags
 # (from tag). The left end face has outward normal +X and the right start face -X: corner order
 # gives (b - a) x (d - a) pointing towards the other girder.
+# The axial arguments of a bearing of rubber area `area` whose linear vertical stiffness is Kv.
+proc bearingAxialArgs {area Kv} {
+  switch -- $::bearingVertical {
+    linear { return [list -Tr $::bearingTr -Kv $Kv] }
+    kumar {
+      set Do [expr {sqrt(4.0 * $area / $::pi)}]
+      set n [expr {max(1, round($::bearingTr / ($Do / (4.0 * $::shapeFactor))))}]
+      return [list -vertical kumar $::rubberG $::rubberKbulk 0.0 $Do $::shimThickness \
+          [expr {$::bearingTr / $n}] $n -pDelta]
+    }
+  }
+  error "bearingVertical must be linear or kumar, got \"$::bearingVertical\""
+}
+
 proc jointPounding {tag left right mL mR K} {
   set faceL [list [expr {$left + 71}] [expr {$left + 72}] [expr {$left + 73}] [expr {$left + 74}]]
   set faceR [list [expr {$right + 61}] [expr {$right + 64}] [expr {$right + 63}] [expr {$right + 62}]]
   set pointsL [list [expr {$left + 75}] [expr {$left + 76}] [expr {$left + 77}] [expr {$left + 78}]]
   set pointsR [list [expr {$right + 65}] [expr {$right + 66}] [expr {$right + 67}] [expr {$right + 68}]]
-  return [pounding $tag -side1 $pointsL $faceL -side2 $pointsR $faceR \
-      -K $K -e $::restitution -mu_s $::frictionS -mu_k $::frictionK -masses $mL $mR -search $::contactSearch]
+  return [pounding $tag -side1 $pointsL $faceL -side2 $pointsR $faceR {*}[impactLawArgs $K] \
+      -mu_s $::frictionS -mu_k $::frictionK -masses [expr {$mL / 8.0}] [expr {$mR / 8.0}] -search $::contactSearch]
+}
+
+# The normal law's arguments of one pair with the Kelvin stiffness K (EA/L / 8, see impactLaw).
+# The power laws keep K as the friction's stiffness (-Kt).
+proc impactLawArgs {K} {
+  if {$::impactLaw eq "kelvin"} { return [list -K $K -e $::restitution] }
+  set m [expr {0.5 * $::girderMass * $::spanLength}]
+  set delta [expr {$::impactSpeedRef * sqrt($m / (8.0 * $K))}]
+  set kh [expr {1.25 * $K / sqrt($delta)}]
+  switch -- $::impactLaw {
+    hertz { return [list -law hertz -K $kh -n 1.5 -Kt $K] }
+    hertzdamp { return [list -law hertzdamp -K $kh -n 1.5 -e $::restitution -v0 $::impactSpeedRef -Kt $K] }
+    jankowski { return [list -law jankowski -K $kh -e $::restitution -Kt $K] }
+  }
+  error "impactLaw must be kelvin, hertz, hertzdamp or jankowski, got \"$::impactLaw\""
 }
 
 # The countermeasure across a joint at x = xj: devices on both sides of the girders (at
@@ -630,9 +682,9 @@ proc buildModel {case} {
         node $tn $xb $y [expr {$zTop + $bearingHeight}]
         rigidLink beam $axis $tn
         if {$nB == 1} {
-          element yoshidaBearing $bn $bn $tn 1 -Tr $bearingTr -Kv $bearingKv -Kt $bearingKt -Kr $bearingKroll $bearingKbend {*}$drop
+          element yoshidaBearing $bn $bn $tn 1 {*}[bearingAxialArgs $bearingArea $bearingKv] -Kt $bearingKt -Kr $bearingKroll $bearingKbend {*}$drop
         } else {
-          element yoshidaBearing $bn $bn $tn 1 -Tr $bearingTr -Kv $padKv -Kt $padKt -Kr $padKr {*}$drop
+          element yoshidaBearing $bn $bn $tn 1 {*}[bearingAxialArgs $padA $padKv] -Kt $padKt -Kr $padKr {*}$drop
         }
       }
     }
@@ -715,9 +767,9 @@ proc buildModel {case} {
           foreach ele [list $bn $farEle] i [list $bn $farBottom] j [list $nearTop $farTop] {
             lappend ::endEles $ele
             if {$nB == 1} {
-              element yoshidaBearing $ele $i $j 1 -Tr $bearingTr -Kv $bearingKv -Kt $bearingKt -Kr $bearingKroll $bearingKbend {*}$drop
+              element yoshidaBearing $ele $i $j 1 {*}[bearingAxialArgs $bearingArea $bearingKv] -Kt $bearingKt -Kr $bearingKroll $bearingKbend {*}$drop
             } else {
-              element yoshidaBearing $ele $i $j 1 -Tr $bearingTr -Kv $padKv -Kt $padKt -Kr $padKr {*}$drop
+              element yoshidaBearing $ele $i $j 1 {*}[bearingAxialArgs $padA $padKv] -Kt $padKt -Kr $padKr {*}$drop
             }
           }
         }

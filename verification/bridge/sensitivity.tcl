@@ -9,7 +9,7 @@
 #
 #   study   smoke (default: two settings, 8 s of motion: the test suite's run, as ctest runs every
 #           script here without arguments) | full (every parameter below at three values,
-#           23 settings x 3 cases)
+#           27 settings x 3 cases)
 #   outDir  default ./sensitivity-out: sensitivity.md, sensitivity.png, the runs' results.csv
 #
 # The parameters, with the three values (the default in the middle, or the default and two others)
@@ -24,10 +24,14 @@
 #   restrainerK            2e4 4e4 8e4 kN/m   how hard they pull
 #   impactStiffnessFactor  0.1 1 10     the contact's penalty stiffness against EA/L
 #   restitution            0.4 0.65 0.9 how much energy an impact takes
+#   impactLaw              kelvin hertz hertzdamp jankowski   the contact's force law (kelvin the
+#                                       paper's; the power laws' k_h as bridge.tcl sets it)
+#   bearingVertical        linear kumar the bearings' vertical law (kumar: Kv falling with the
+#                                       offset, cavitation, buckling, P-Delta)
 #   motionAngle            0 30 60 deg  the motion's direction against the bridge axis
 #   scale                  1.0 1.5 2.0  the record's amplitude
-# A finding "flips" with a parameter when its verdict at the lower or the higher value differs
-# from the verdict at the defaults. The devices' slack and clearances stay as they are when the
+# A finding "flips" with a parameter when its verdict at any other value differs from the
+# verdict at the defaults. The devices' slack and clearances stay as they are when the
 # gap changes (at a 0.02 m gap the bumpers' 0.03 m clearance lies beyond it, so they never act
 # before the girders pound). The serviceability limits follow the joint: the residual
 # offset a joint accommodates is its gap, and the seat's travel is half the cap less half the gap.
@@ -52,6 +56,8 @@ set parameters {
   restrainerK {2e4 4e4 8e4}
   impactStiffnessFactor {0.1 1 10}
   restitution {0.4 0.65 0.9}
+  impactLaw {kelvin hertz hertzdamp jankowski}
+  bearingVertical {linear kumar}
   motionAngle {0 30 60}
   scale {1.0 1.5 2.0}
 }
@@ -160,7 +166,7 @@ foreach {n text} $statements {
   puts $md "## $n. $text\n"
   puts $md "At the defaults: **[word $d]**.\n"
   set flips {}
-  set table "| parameter | [join {lower default higher} { | }] |\n|---|---|---|---|\n"
+  set table "| parameter | values |\n|---|---|\n"
   foreach {name values} $parameters {
     set cells {}
     set flipped {}
@@ -169,7 +175,7 @@ foreach {n text} $statements {
       lappend cells "$v: [word $w]"
       if {$w ne "" && $d ne "" && $w != $d} { lappend flipped $v }
     }
-    append table "| $name | [join $cells { | }] |\n"
+    append table "| $name | [join $cells {; }] |\n"
     if {[llength $flipped] > 0} { lappend flips "$name at [join $flipped { and }]" }
   }
   if {[llength $flips] == 0} {
@@ -193,8 +199,9 @@ foreach job $jobs {
 }
 close $md
 
-# The figure: per finding, a grid of the parameters (rows) against lower / default / higher
-# (columns), green where the finding agrees with the paper, red where it differs.
+# The figure: per finding, a grid of the parameters (rows) against their values in the order of
+# the table (columns, each cell labelled with its value), green where the finding agrees with
+# the paper, red where it differs.
 set dat [file join $outDir sensitivity.dat]
 set fh [open $dat w]
 set names [dict keys $parameters]
@@ -204,7 +211,7 @@ foreach {n text} $statements {
     set k 0
     foreach v $values {
       set w [verdictOf [idOf $name $v] $n]
-      puts $fh "$k $i [expr {$w eq "" ? 0.5 : $w}]"
+      puts $fh "$k $i [expr {$w eq "" ? 0.5 : $w}] $v"
       incr k
     }
     incr i
@@ -215,12 +222,12 @@ close $fh
 if {[auto_execok gnuplot] ne ""} {
   set ytics [join [lmap name $names {format "'%s' %d" $name [lsearch $names $name]}] ", "]
   set gp "set terminal pngcairo size 1800,700 font ',10'\nset output '[file join $outDir sensitivity.png]'\n"
-  append gp "set multiplot layout 1,5 title 'What decides each finding: green agrees with the paper, red differs (one parameter at a time; columns lower, default, higher)'\n"
+  append gp "set multiplot layout 1,5 title 'What decides each finding: green agrees with the paper, red differs (one parameter at a time, each cell labelled with its value)'\n"
   append gp "set palette defined (0 '#d62728', 0.5 '#bbbbbb', 1 '#2ca02c')\nset cbrange \[0:1\]\nunset colorbox\n"
-  append gp "set xrange \[-0.5:2.5\]\nset yrange \[-0.5:[expr {[llength $names] - 0.5}]\]\nset xtics ('lower' 0, 'default' 1, 'higher' 2)\nset ytics ($ytics)\n"
+  append gp "set xrange \[-0.5:3.5\]\nset yrange \[-0.5:[expr {[llength $names] - 0.5}]\]\nunset xtics\nset ytics ($ytics)\n"
   set block 0
   foreach {n text} $statements {
-    append gp "set title 'finding $n'\nplot '$dat' index $block using 1:2:3 with image notitle\n"
+    append gp "set title 'finding $n'\nplot '$dat' index $block using 1:2:(0.48):(0.48):3 with boxxyerror fs solid lc palette notitle, '' index $block using 1:2:4 with labels font ',8' notitle\n"
     incr block
   }
   append gp "unset multiplot\n"
