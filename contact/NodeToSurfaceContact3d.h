@@ -204,7 +204,7 @@ class NodeToSurfaceContact3d : public elements::FixedSizeElement<5, Ndf, 0u>,
   bool committedClosed() const override { return committed_.status != ContactStatus::Open; }
   /// m from -masses M1 M2 when both are given, else the contactor node's mass and the sum of the
   /// four face nodes' masses (a face without mass is fixed: m = M1).
-  double contactDuration(std::span<const double> nodeMasses) const override;
+  double contactDuration(std::span<const double> nodeMasses, double gapRate) const override;
   /// The second half of updateIfFar, for a pair whose far test (farTest()) the caller made: sets
   /// the trial state of a far pair with distance bound `bound` and returns true, or changes
   /// nothing and returns false when the step must be evaluated (a release step). Without a

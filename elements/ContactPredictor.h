@@ -15,11 +15,14 @@ class ContactPredictor {
   virtual double committedGap() const = 0;
   /// True when the last committed state is in contact (sticking or sliding), whatever its gap.
   virtual bool committedClosed() const = 0;
-  /// Half period pi sqrt(m / K) of the pair's undamped contact (time), with K its contact
-  /// stiffness and m the reduced mass of the two bodies; `nodeMasses` holds each element node's
-  /// translational mass, in element node order, for a pair that takes its bodies' masses from its
-  /// nodes. Infinity when the contactor has no mass (nothing bounds the step).
-  virtual double contactDuration(std::span<const double> nodeMasses) const = 0;
+  /// Duration of the pair's undamped contact (time), m the reduced mass of the two bodies: for a
+  /// linear spring K the half period pi sqrt(m / K), whatever the speed; for a power law
+  /// N = k delta^n it depends on the impact speed, which the pair takes from its committed
+  /// penetration and `gapRate`, the rate of its gap over the last step (length/time).
+  /// `nodeMasses` holds each element node's translational mass, in element node order, for a pair
+  /// that takes its bodies' masses from its nodes. Infinity when the contactor has no mass or a
+  /// power-law pair neither moves nor penetrates (nothing bounds the step).
+  virtual double contactDuration(std::span<const double> nodeMasses, double gapRate) const = 0;
 
  protected:
   ContactPredictor() = default;

@@ -7,6 +7,8 @@
 
 #include <cmath>
 #include <memory>
+#include <numbers>
+#include <algorithm>
 
 #include "contact/NodeToSurfaceContact3d.h"
 #include "elements/tests/ElementChecks.h"
@@ -200,6 +202,94 @@ TEST(NodeToSurfaceContact3dTest, LawHeldClosedBranchEvaluatesTheLawUnclipped) {
   ASSERT_TRUE(ok(e->update(s.kinematics())));
   EXPECT_NEAR(e->trialState().force(0), -kK * std::pow(0.01, 1.5), kTol * kK);
   EXPECT_EQ(e->checkHeldStatus(), elements::Element::HeldStatus::Switched);
+}
+
+TEST(NodeToSurfaceContact3dTest, LawClosedAndOpenCyclingHoldsTheLawsSpringAlone) {
+  // A step much longer than the impact: held closed, the end state lies outside the face; held
+  // open, inside it. hertzdamp and jankowski have a rate term, so the cycle holds the law's
+  // spring alone, k delta^n (no damping), while the pair penetrates and approaches.
+  for (ImpactLaw law : {ImpactLaw::HertzDamp, ImpactLaw::Jankowski}) {
+    auto e = make(lawParams(law));
+    const double n = law == ImpactLaw::HertzDamp ? 1.3 : 1.5;
+    TrialState s = zeroState(15);
+    s.u(2) = -0.1001;  // g = -1e-4
+    s.v(2) = -1.0;
+    ASSERT_TRUE(ok(e->update(s.kinematics())));
+    e->holdStatus();   // closed
+    s.u(2) = -0.0999;  // g = +1e-4, still approaching
+    ASSERT_TRUE(ok(e->update(s.kinematics())));
+    EXPECT_EQ(e->checkHeldStatus(), elements::Element::HeldStatus::Switched)
+        << NormalLaw::name(law);
+    s.u(2) = -0.1001;
+    ASSERT_TRUE(ok(e->update(s.kinematics())));
+    EXPECT_EQ(e->resistingForce().norm(), 0.0);                                // held open
+    EXPECT_EQ(e->checkHeldStatus(), elements::Element::HeldStatus::Switched);  // the cycle
+    ASSERT_TRUE(ok(e->update(s.kinematics())));
+    EXPECT_NEAR(e->trialState().force(0), kK * std::pow(1e-4, n), kTol * kK * std::pow(1e-4, n))
+        << NormalLaw::name(law);
+    EXPECT_LT(relativeDifference(e->tangentStiff(), numericalStiffness(*e, s, kFdStep)), kFdTol);
+    EXPECT_EQ(e->dampingTangent()(2, 2), 0.0);  // no rate term in the spring branch
+    EXPECT_EQ(e->checkHeldStatus(), elements::Element::HeldStatus::Agrees);
+  }
+}
+
+// Duration of an undamped impact m x'' = -k x^n from touch at speed v to separation, by RK4 with
+// 20000 steps over an estimate of it (an independent calculation of contactDuration).
+double integratedContactDuration(double m, double k, double n, double v) {
+  const double h =
+      4.0 * std::pow(m / k, 1.0 / (n + 1.0)) * std::pow(v, (1.0 - n) / (n + 1.0)) / 20000.0;
+  auto acc = [&](double x) { return -k * std::pow(std::max(x, 0.0), n) / m; };
+  double x = 0.0, xd = v, t = 0.0;
+  for (int i = 0; i < 1000000; ++i) {
+    const double a1 = acc(x), x2 = x + 0.5 * h * xd, v2 = xd + 0.5 * h * a1;
+    const double a2 = acc(x2), x3 = x + 0.5 * h * v2, v3 = xd + 0.5 * h * a2;
+    const double a3 = acc(x3), x4 = x + h * v3, v4 = xd + h * a3;
+    const double a4 = acc(x4);
+    const double xn = x + h / 6.0 * (xd + 2.0 * v2 + 2.0 * v3 + v4);
+    const double vn = xd + h / 6.0 * (a1 + 2.0 * a2 + 2.0 * a3 + a4);
+    if (xn < 0.0) return t + h * x / (x - xn);  // back through the touch point
+    x = xn;
+    xd = vn;
+    t += h;
+  }
+  return -1.0;
+}
+
+TEST(NodeToSurfaceContact3dTest, LawContactDurationFollowsTheImpactSpeed) {
+  // -masses 3 and 5: m = 15/8. Kelvin: pi sqrt(m/K) whatever the rate. Power laws: the duration
+  // of the undamped impact at the speed the gap rate and the penetration give (energy), checked
+  // against an RK4 integration; a pair at rest, open, bounds nothing.
+  const double m = 3.0 * 5.0 / 8.0;
+  auto kelvin = make(lawParams(ImpactLaw::Kelvin));
+  EXPECT_NEAR(kelvin->contactDuration({}, -2.0), std::numbers::pi * std::sqrt(m / kK), 1e-12);
+  for (ImpactLaw law : {ImpactLaw::Hertz, ImpactLaw::Jankowski}) {
+    NodeToSurfaceParams p = lawParams(law);
+    p.M1 = 3.0;
+    p.M2 = 5.0;
+    auto e = make(p);
+    EXPECT_TRUE(std::isinf(e->contactDuration({}, 0.0)));  // open, still: no contact to resolve
+    for (double v : {0.1, 1.0, 3.0}) {
+      const double expected = integratedContactDuration(m, kK, 1.5, v);
+      EXPECT_NEAR(e->contactDuration({}, -v), expected, 1e-6 * expected)
+          << NormalLaw::name(law) << " v " << v;
+    }
+    // In contact: penetration 0.03 and a rate; the same energy as a touch at speed w.
+    TrialState s = zeroState(15);
+    s.u(2) = -0.13;
+    ASSERT_TRUE(ok(e->update(s.kinematics())));
+    e->commitState();
+    const double delta = -e->committedGap();
+    ASSERT_GT(delta, 0.0);
+    const double rate = 0.4;
+    const double w = std::sqrt(rate * rate + 2.0 * kK * std::pow(delta, 2.5) / (2.5 * m));
+    const double expected = integratedContactDuration(m, kK, 1.5, w);
+    EXPECT_NEAR(e->contactDuration({}, rate), expected, 1e-6 * expected) << NormalLaw::name(law);
+  }
+  // hertzdamp with its own exponent 1.3, masses from the nodes (contactor 2, face 4 x 1.5 = 6)
+  auto hd = make(lawParams(ImpactLaw::HertzDamp));
+  const double nodes[5] = {2.0, 1.5, 1.5, 1.5, 1.5};
+  const double expected = integratedContactDuration(1.5, kK, 1.3, 0.7);
+  EXPECT_NEAR(hd->contactDuration(nodes, -0.7), expected, 1e-6 * expected);
 }
 
 TEST(NodeToSurfaceContact3dTest, LawDescribeNamesTheLaw) {

@@ -24,12 +24,9 @@ void ContactSteppingParams::validate() const {
 
 namespace {
 
-// T_c / perContact of a pair (infinity when perContact is 0 or the pair has no mass).
-double contactStep(const elements::Element& e, const elements::ContactPredictor& pair,
-                   const domain::Domain& domain, int perContact) {
-  if (perContact <= 0) return std::numeric_limits<double>::infinity();
-  // Translational masses of the element's nodes (the largest of a node's three), for a pair
-  // that takes its bodies' masses from its nodes.
+// Translational masses of an element's nodes (the largest of a node's three), for a pair that
+// takes its bodies' masses from its nodes.
+std::vector<double> nodeMasses(const elements::Element& e, const domain::Domain& domain) {
   std::vector<double> masses;
   for (int tag : e.nodeTags()) {
     const domain::Node* n = domain.findNode(tag);
@@ -40,19 +37,19 @@ double contactStep(const elements::Element& e, const elements::ContactPredictor&
     }
     masses.push_back(largest);
   }
-  return pair.contactDuration(masses) / perContact;
+  return masses;
 }
 
 }  // namespace
 
 void ContactStepping::attach(const domain::Domain& domain) {
   pairs_.clear();
-  contactStep_.clear();
+  nodeMasses_.clear();
   for (const auto& [tag, e] : domain.elements()) {
     const elements::ContactPredictor* pair = e->contactPredictor();
     if (pair == nullptr) continue;
     pairs_.push_back(pair);
-    contactStep_.push_back(contactStep(*e, *pair, domain, params_.perContact));
+    if (params_.perContact > 0) nodeMasses_.push_back(nodeMasses(*e, domain));
   }
   reset();
 }
@@ -81,7 +78,14 @@ double ContactStepping::nextStep(double remaining, double dt) {
     lastGap_[i] = gap;
     if (pairNear) {
       near = true;
-      h = std::min(h, contactStep_[i]);
+      if (params_.perContact > 0) {
+        // the gap rate over the last step (none before the first: a power law's pair then takes
+        // its speed from its penetration alone)
+        const double rate = lastStep_ > 0.0 && std::isfinite(last) && std::isfinite(gap)
+                                ? (gap - last) / lastStep_
+                                : 0.0;
+        h = std::min(h, pair.contactDuration(nodeMasses_[i], rate) / params_.perContact);
+      }
     }
   }
   if (near) h = std::min(h, params_.maxStep);

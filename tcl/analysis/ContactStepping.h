@@ -17,9 +17,11 @@ struct ContactSteppingParams {
   double overshoot =
       1.2;  ///< a step cut at a predicted first contact ends at overshoot x that time (>= 1)
   /// Steps per contact duration while a pair is closed or about to close (0: no such limit): the
-  /// step is at most T_c / perContact, T_c = pi sqrt(m / K) the half period of the pair's
-  /// undamped contact, m = M1 M2 / (M1 + M2) from its -masses (pairs without masses: the
-  /// translational masses of its contactor node and of its four face nodes).
+  /// step is at most T_c / perContact, T_c the duration of the pair's undamped contact
+  /// (ContactPredictor::contactDuration: pi sqrt(m / K) for kelvin; for a power law from the
+  /// impact speed, which the pair takes from its penetration and its gap rate over the last
+  /// step), m = M1 M2 / (M1 + M2) from its -masses (pairs without masses: the translational
+  /// masses of its contactor node and of its four face nodes).
   int perContact = 0;
   /// Throws InputError{field, reason} (fields maxStep, lookAhead, overshoot, perContact).
   void validate() const;
@@ -64,7 +66,7 @@ class ContactStepping {
   ContactSteppingParams params_;
   std::vector<const elements::ContactPredictor*> pairs_;  ///< the pairs (Element::contactPredictor)
   std::vector<double> lastGap_;
-  std::vector<double> contactStep_;  ///< per pair: T_c / perContact (infinity: no limit)
+  std::vector<std::vector<double>> nodeMasses_;  ///< per pair (perContact > 0): its nodes' masses
   double lastStep_ = 0.0;
   long contactSteps_ = 0;
 };

@@ -83,7 +83,7 @@ class FakePair final : public elements::Element,
 
   double committedGap() const override { return committedGap_; }
   bool committedClosed() const override { return committedGap_ <= 0.0; }
-  double contactDuration(std::span<const double> nodeMasses) const override {
+  double contactDuration(std::span<const double> nodeMasses, double /*gapRate*/) const override {
     return std::numbers::pi * std::sqrt(nodeMasses[0] / kStiffness);
   }
 
