@@ -158,7 +158,7 @@ proc idOf {name v} {
 
 set md [open [file join $outDir sensitivity.md] w]
 puts $md "# What decides each finding\n"
-puts $md [format "Sensitivity study of the case study (%s): the three cases under the Takatori record for %d settings, one parameter at a time at a lower and a higher value with the others at their defaults; %d runs, of which this call ran %d settings on %d process(es) in %.0f s%s. Command: \`dabs verification/bridge/sensitivity.tcl %s\` (or under \`mpirun -n 2 --bind-to none dabs-mp\`). Each finding judged as in the report (verification/bridge/tools/findings.tcl); a finding flips with a parameter when its verdict at another value differs from the one at the defaults.\n" \
+puts $md [format "Sensitivity study of the case study (%s): the three cases under the Takatori record for %d settings, one parameter at a time at its other values with the others at their defaults; %d runs, of which this call ran %d settings on %d process(es) in %.0f s%s. Command: \`dabs verification/bridge/sensitivity.tcl %s\` (or under \`mpirun -n 2 --bind-to none dabs-mp\`). Each finding judged as in the report (verification/bridge/tools/findings.tcl); a finding flips with a parameter when its verdict at another value differs from the one at the defaults.\n" \
     $study [llength $jobs] [expr {3 * [llength $jobs]}] [dict get $summary ran] [getNP] $wall \
     [expr {[dict get $summary ran] < [llength $jobs] ? " (the others' results were already in the output folder)" : ""}] $study]
 foreach {n text} $statements {
