@@ -7,7 +7,9 @@
 # pairs with a search distance of 0.01 m (asleep while apart); run 2: no search distance. The
 # displacements and contact forces must agree at every step to round-off (the two runs order the
 # factorisation differently while the pairs sleep), and the sleeping run must have changed its
-# matrix pattern (pairs fell asleep and woke).
+# matrix pattern (pairs fell asleep and woke). For each impact law: kelvin (K 1e4 kN/m), hertz and
+# jankowski (k_h 1.8e5 kN/m^1.5, about 1e4 kN/m over the few millimetres the faces close, jankowski
+# with e 0.5 and masses 1 t and 16 t), so that a power law's pair sleeps and wakes alike.
 set failures 0
 proc check {name ok {detail ""}} {
   if {$ok} { puts "PASSED $name" } else { puts "FAILED $name $detail"; incr ::failures }
@@ -32,7 +34,7 @@ proc build {search} {
       element zeroLength [incr ele] [expr {$n + 50}] $n -mat 1 1 1 -dir 1 2 3
     }
   }
-  set opts [list -K 1.0e4]
+  set opts $::lawOptions
   if {$search > 0} { lappend opts -search $search }
   set ::pairs [pounding 1000 -side1 {1 2 3 4} {1 2 3 4} -side2 {101 102 103 104} {101 104 103 102} {*}$opts]
   timeSeries Trig 1 0.0 100.0 0.8 -factor 3.0
@@ -53,14 +55,20 @@ proc run {search} {
   set ::redone [dict get [contactStepping] redoneSteps]
   return [list $rows [dict get [contactStepping] patternChanges]]
 }
+foreach {law ::lawOptions} {
+  kelvin {-K 1.0e4}
+  hertz {-law hertz -K 1.8e5 -Kt 1.0e4}
+  jankowski {-law jankowski -K 1.8e5 -e 0.5 -masses 1.0 16.0 -Kt 1.0e4}
+} {
+puts "--- $law"
 lassign [run 0] allRows none
-check "the run without search completes and never changes its pattern" [expr {$none == 0}] $none
+check "$law: the run without search completes and never changes its pattern" [expr {$none == 0}] $none
 # 0.01 m: pairs wake as they come within it, before touching; 0.001 m: less than the faces close
 # in one step (about 6 mm), so a sleeper can be found in contact after a step, which is redone.
 foreach search {0.01 0.001} {
   lassign [run $search] sleepRows changes
   set redone $::redone
-  check "search $search: the run completes" [expr {$changes ne "fail"}]
+  check "$law, search $search: the run completes" [expr {$changes ne "fail"}]
   set worstU 0.0; set worstF 0.0; set peakU 0.0; set peakF 0.0; set impacts 0; set closed 0
   foreach a $sleepRows b $allRows {
     lassign $a u1 u2 f; lassign $b v1 v2 g
@@ -71,12 +79,15 @@ foreach search {0.01 0.001} {
     if {$g > 0.0 && !$closed} { incr impacts }
     set closed [expr {$g > 0.0}]
   }
-  puts "search $search: impacts $impacts, peak force $peakF, peak displacement $peakU, pattern changes $changes, steps redone $redone"
-  puts "search $search: largest differences: displacement $worstU, force $worstF"
-  check "search $search: the faces pound several times" [expr {$impacts >= 3}] $impacts
-  check "search $search: the pattern was rebuilt as pairs fell asleep and woke" [expr {$changes >= 2 * $impacts}] $changes
-  if {$search < 0.005} { check "search $search: steps were redone for sleepers found in contact" [expr {$redone > 0}] $redone }
-  check "search $search: same displacements (within 1e-9 of the peak)" [expr {$worstU <= 1e-9 * $peakU}] $worstU
-  check "search $search: same contact forces (within 1e-9 of the peak)" [expr {$worstF <= 1e-9 * $peakF}] $worstF
+  puts "$law, search $search: impacts $impacts, peak force $peakF, peak displacement $peakU, pattern changes $changes, steps redone $redone"
+  puts "$law, search $search: largest differences: displacement $worstU, force $worstF"
+  check "$law, search $search: the faces pound several times" [expr {$impacts >= 3}] $impacts
+  # a sleep and a wake between consecutive impacts (the most damped, jankowski's, may stay within
+  # the search distance between two of them)
+  check "$law, search $search: the pattern was rebuilt as pairs fell asleep and woke" [expr {$changes >= 2 * ($impacts - 1)}] $changes
+  if {$search < 0.005} { check "$law, search $search: steps were redone for sleepers found in contact" [expr {$redone > 0}] $redone }
+  check "$law, search $search: same displacements (within 1e-9 of the peak)" [expr {$worstU <= 1e-9 * $peakU}] $worstU
+  check "$law, search $search: same contact forces (within 1e-9 of the peak)" [expr {$worstF <= 1e-9 * $peakF}] $worstF
+}
 }
 if {$failures > 0} { exit 1 }
