@@ -31,10 +31,12 @@
 #   motionAngle            0 30 60 deg  the motion's direction against the bridge axis
 #   scale                  1.0 1.5 2.0  the record's amplitude
 # A finding "flips" with a parameter when its verdict at any other value differs from the
-# verdict at the defaults. The devices' slack and clearances stay as they are when the
-# gap changes (at a 0.02 m gap the bumpers' 0.03 m clearance lies beyond it, so they never act
-# before the girders pound). The serviceability limits follow the joint: the residual
-# offset a joint accommodates is its gap, and the seat's travel is half the cap less half the gap.
+# verdict at the defaults. The countermeasure is designed for its joint, so with the gap its
+# longitudinal devices follow it as at the defaults: the restrainers' slack equal to the gap (0.05
+# m at 0.05 m) and the bumpers' clearance 0.6 times it (0.03 m), so that the bumpers still close
+# before the girders touch at a 0.02 m gap (the transverse devices' 0.05 m stays). The
+# serviceability limits follow the joint too: the residual offset a joint accommodates is its
+# gap, and the seat's travel is half the cap less half the gap.
 
 set here [file dirname [file normalize [info script]]]
 set ::bridgeLibraryOnly 1
@@ -74,6 +76,7 @@ foreach {name values} $parameters {
 }
 set defaultHeights $pierHeights
 dict set defaults pierHeights $defaultHeights
+dict set defaults bumperClearance $bumperClearance
 
 # One job per setting: the defaults, then each parameter at each of its values that is not its
 # default (a value equal to the default is the defaults' job).
@@ -97,6 +100,11 @@ proc sensitivityRun {job} {
     pierContrast {
       set mean [expr {[tcl::mathop::+ {*}$::defaultHeights] / [llength $::defaultHeights]}]
       set ::pierHeights [lmap h $::defaultHeights { expr {$mean + $value * ($h - $mean)} }]
+    }
+    jointGap {
+      set ::jointGap $value
+      set ::restrainerSlack [expr {$value * $::restrainerSlack / [dict get $::defaults jointGap]}]
+      set ::bumperClearance [expr {$value * $::bumperClearance / [dict get $::defaults jointGap]}]
     }
     default { set ::$parameter $value }
   }
