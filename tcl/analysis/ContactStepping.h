@@ -36,7 +36,12 @@ struct ContactSteppingParams {
 ///   the jump falls on a step boundary (event location: without it the impact's error is of the
 ///   order of the step whatever the step).
 /// The prediction is linear in time: t_close = g h_last / (g_last - g) for a gap g that shrank
-/// from g_last over the last step h_last. Every pair's cut counts (the shortest wins).
+/// from g_last over the last step h_last. Where it predicts no closing within the rest of the
+/// output step, a quadratic one from the last three gaps (their rate and its change) may: a pair
+/// near the top of a bounce, whose gap hardly changed over the last step, closes again within
+/// the step when it decelerates towards the face (the smallest positive root of
+/// g + v t + a t^2 / 2, v the rate at the end of the last step). Every pair's cut counts (the
+/// shortest wins).
 /// - with perContact n, a pair closed or about to close makes the step at most T_c / n, so that
 ///   the impact is resolved whatever its stiffness (a step longer than the impact integrates it
 ///   in one or two steps of the trapezoid rule, whose release force then acts through the next
@@ -66,6 +71,8 @@ class ContactStepping {
   ContactSteppingParams params_;
   std::vector<const elements::ContactPredictor*> pairs_;  ///< the pairs (Element::contactPredictor)
   std::vector<double> lastGap_;
+  std::vector<double> lastRate_;  ///< per pair: the gap's rate over the step before the last
+  double previousStep_ = 0.0;     ///< the step before the last
   std::vector<std::vector<double>> nodeMasses_;  ///< per pair (perContact > 0): its nodes' masses
   double lastStep_ = 0.0;
   long contactSteps_ = 0;

@@ -596,15 +596,17 @@ proc powerLawLimit {law name K dt e algorithm stepping TcOverH} {
   if {$name eq "repeated impacts, F 10 kN" && $dt == 1e-2 && $stepping == 2} {
     if {$K >= 1e9} {
       return [list all "a 0.1 ms contact bouncing under a 10 ms output step with -perContact 20:\
- Newton needs 11 to 12 iterations (hertz, hertzdamp), jankowski stops with code -3; not investigated"]
+ hertz and hertzdamp e 3 to 32 % low (Newton up to 9 iterations), jankowski stops with code -3;\
+ not investigated"]
     }
-    return [list accuracy "a touch at the top of a bounce is missed by the closing prediction\
- (as for kelvin, hard-impacts.md item 5): e 1.7 to 2.3 % low"]
+    return [list accuracy "bouncing under a 10 ms output step with -perContact 20: hertz and\
+ hertzdamp e 1.6 to 2.3 % low, jankowski within 1 %; not investigated (not the touch at the top\
+ of a bounce, which contact stepping now predicts)"]
   }
   if {$K >= 1e12 && $dt == 1e-2 && $stepping == 2} {
     return [list all "k_h 1.3e15 (2.2 us contacts) under a 10 ms output step with -perContact 20:\
- Newton needs 14 to 15 iterations (hertz, hertzdamp), jankowski and ModifiedNewton stop with\
- code -3 at t = 0.0587 s; not investigated"]
+ Newton needs 14 to 15 iterations (hertz, hertzdamp); jankowski's Newton and NewtonLineSearch\
+ and the others' ModifiedNewton stop with code -3 at t = 0.0587 s; not investigated"]
   }
   if {$TcOverH < 20 - 1e-9} {
     return [list all "the step does not resolve the contact (Tc / h below 20): Newton's\

@@ -101,6 +101,32 @@ TEST(ContactSteppingTest, StepIsCutAtThePredictedContactTimesTheOvershoot) {
   EXPECT_NEAR(stepping.nextStep(0.05, 0.05), 0.018, 1e-15);
 }
 
+TEST(ContactSteppingTest, APairAtTheTopOfABounceIsPredictedToCloseAgain) {
+  // A contactor thrown up from the face: g(t) = 0.02 + 1.5 t - 50 t^2 (a free flight under a
+  // constant force), committed at t = 0, 0.01, 0.02: 0.02, 0.03, 0.03. Over the last step the gap
+  // did not change, so the linear prediction sees nothing; the parabola through the three gaps
+  // closes at t = 0.04, 0.02 s after the last commit (the root of 50 t^2 - 1.5 t - 0.02).
+  OnePair model;
+  ContactStepping stepping(params(0.1));  // a long maxStep, so the cut decides
+  stepping.attach(model.domain());
+  model.commitGap(0.02);
+  ASSERT_DOUBLE_EQ(stepping.nextStep(0.01, 0.01), 0.01);
+  model.commitGap(0.03);
+  ASSERT_DOUBLE_EQ(stepping.nextStep(0.01, 0.01), 0.01);  // opening: no prediction
+  model.commitGap(0.03);
+  EXPECT_NEAR(stepping.nextStep(0.05, 0.05), 1.2 * 0.02, 1e-12);
+  // Rising and slowing but far from the face: the parabola closes after the output step.
+  OnePair far;
+  ContactStepping farStepping(params(0.1));
+  farStepping.attach(far.domain());
+  far.commitGap(0.5);
+  ASSERT_DOUBLE_EQ(farStepping.nextStep(0.01, 0.01), 0.01);
+  far.commitGap(0.51);
+  ASSERT_DOUBLE_EQ(farStepping.nextStep(0.01, 0.01), 0.01);
+  far.commitGap(0.51);
+  EXPECT_DOUBLE_EQ(farStepping.nextStep(0.01, 0.01), 0.01);
+}
+
 TEST(ContactSteppingTest, ClosedPairTakesTheContactStepAndResetForgetsTheHistory) {
   OnePair model;
   ContactStepping stepping(params(0.0005));
