@@ -144,8 +144,9 @@ int printHelp() {
       "\nEnvironment:\n"
       "  DABS_THREADS=n                 threads that update elements (as the `threads n`\n"
       "                                 command; default 1)\n"
-      "\nDocumentation: README.md at the top of the source tree (%s):\n"
-      "the command table, the case study, contact stepping, where dabs differs from OpenSees.\n",
+      "\nDocumentation: README.md at the top of the source tree (%s): the command table,\n"
+      "speed against OpenSees, where dabs differs from OpenSees; docs/ beside it: the case\n"
+      "study, contact (impact laws, contact stepping), bearings, ensembles and MPI.\n",
       DABS_SOURCE_DIR);
   return 0;
 }

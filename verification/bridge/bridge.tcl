@@ -21,7 +21,7 @@
 #
 # Units: kN, m, s, t (tonne = kN s^2/m), kPa. Axes: X along the bridge, Y transverse, Z up.
 #
-# The model (see README "The bridge case study" and report.md for the results):
+# The model (see docs/case-study.md and report.md for the results):
 #   PC1 ... PC4  (PC(n+1) for n spans) RC piers on pile-group foundations (springs + dashpots derived below), a fiber
 #                forceBeamColumn plastic-hinge segment at the base, elastic segments above, a cap
 #   G1 G2 G3     (G1 ... Gn) simply supported steel girders, elastic 3D beams with mass, each end on
@@ -115,7 +115,7 @@ set bearingRollArm 3.0      ;# m, with bearingsPerEnd 1: transverse spacing / 2 
 # bearing's own Kv, whose settlement under the weight, about 1 mm, is small against the drop)
 set seatFriction {0.5 0.4}  ;# mu_s mu_k, steel plate on steel plate after rupture
 # The bearings' vertical law: linear (default: Kv = Ec A / Tr, whatever the shear) or kumar
-# (yoshidaBearing -vertical kumar -pDelta, README "Bearing vertical behaviour": Kv falling with
+# (yoshidaBearing -vertical kumar -pDelta, docs/bearings.md: Kv falling with
 # the shear offset, cavitation at 3 G A, buckling at the offset's critical load, and the axial
 # force's P-Delta moments). For kumar each square pad is the circle of the same area (Do), its
 # rubber layer tr = Do / (4 S) rounded to a whole number of layers in bearingTr
@@ -160,7 +160,7 @@ set abutmentPressure 239.0  ;# kPa, passive pressure for a 1.7 m high backwall (
 # joint-restitution.tcl)
 set impactStiffnessFactor 1.0
 set restitution 0.65
-# The impact law (nodeToSurface -law; README "Impact laws"): kelvin (the paper's) by default;
+# The impact law (nodeToSurface -law; docs/contact.md, "Impact laws"): kelvin (the paper's) by default;
 # for the power laws hertz, hertzdamp (Muthukumar and DesRoches 2006) and jankowski (2005) the
 # coefficient k_h of the joint's flat impact (N = k_h delta^1.5) is the one that stores the same
 # energy at the same peak penetration as the Kelvin spring EA/L at the impact speed
@@ -1195,7 +1195,7 @@ proc runCase {case scale dt integrator tol motion {csv ""} {perStep ""}} {
   set failed 0
   set loosened 0
   # Event-located contact steps by the driver: at most contactDt while a joint is closed or
-  # closing, a step cut at each predicted first contact (README "Contact stepping"); every
+  # closing, a step cut at each predicted first contact (docs/contact.md, "Contact stepping"); every
   # converged step, output step or shorter, goes through run::afterStep.
   set ::run::fh $fh; set ::run::dt $dt; set ::run::perStep $perStep; set ::run::tEnd 0.0
   contactStepping -maxStep $::contactDt -lookAhead $::contactLookahead -overshoot $::contactOvershoot \

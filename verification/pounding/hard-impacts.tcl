@@ -32,7 +32,7 @@
 # other cases are reported in the table, not checked. Algorithms other than Newton are
 # reported, not checked for completion or iterations.
 #
-# The power laws (hertz, hertzdamp, jankowski: README "Impact laws") run the same cases with
+# The power laws (hertz, hertzdamp, jankowski: docs/contact.md, "Impact laws") run the same cases with
 # -law: each case's K becomes the k_h whose undamped contact at the approach speed v0 lasts as
 # long as the Kelvin spring's, pi sqrt(m_red / K), so that the same steps resolve it alike; the
 # reference integrates the law's own force (hertz has no damping, so its cases of other
@@ -62,7 +62,7 @@ set testCommand {NormDispIncr 1e-8 25}
 set maxNewtonIterations 10
 set tolerance 0.02          ;# restitution and energy ratio against the reference (resolved cases)
 set resolvedSteps 20        ;# a step resolves the contact when it is at most Tc / 20
-set maxStepDefault 0.0005   ;# contactStepping's default -maxStep (README)
+set maxStepDefault 0.0005   ;# contactStepping's default -maxStep (docs/contact.md)
 set perContact 20           ;# the third stepping mode: contactStepping -perContact 20
 set refStepsPerTc 4000      ;# RK4 steps per contact duration pi sqrt(m_red / K)
 set energyGainTol 1e-9      ;# relative: kinetic (+ spring) energy after <= before (1 + tol)
