@@ -273,29 +273,50 @@ std::vector<int> Domain::recordedElements() const {
 }
 
 void Domain::setTime(double t) {
+  applyElementLoads(t);  // first: a refused load leaves the time as it was
   time_ = t;
-  applyElementLoads(t);
 }
 
 void Domain::setCommittedTime(double t) {
-  time_ = committedTime_ = t;
   applyElementLoads(t);
+  time_ = committedTime_ = t;
 }
 
 void Domain::applyElementLoads(double t) {
   bool any = false;
   for (const auto& [ptag, p] : patterns_) any = any || !p->elementLoads().empty();
   if (!any && !elementLoadsApplied_) return;
-  for (auto& [tag, e] : elements_) e->zeroLoad();
-  for (const auto& [ptag, p] : patterns_) {
-    if (p->elementLoads().empty()) continue;
-    const double f = p->factor(t);
-    for (const ElementLoad& l : p->elementLoads()) {
-      // The eleLoad command checked the element and the load; removeElement keeps them.
-      elements::Element* e = findElement(l.element);
-      if (e != nullptr) e->addLoad(l.load, f);
+  const auto apply = [&](double at, bool skipRefused) {
+    for (auto& [tag, e] : elements_) e->zeroLoad();
+    for (const auto& [ptag, p] : patterns_) {
+      if (p->elementLoads().empty()) continue;
+      const double f = p->factor(at);
+      for (const ElementLoad& l : p->elementLoads()) {
+        // The eleLoad command checked the element and the load; removeElement keeps them.
+        elements::Element* e = findElement(l.element);
+        if (e == nullptr) continue;
+        if (!skipRefused) {
+          e->addLoad(l.load, f);
+          continue;
+        }
+        try {
+          e->addLoad(l.load, f);
+        } catch (const InputError&) {
+          // refused now as when it was applied last (the restore below): it was not held then
+        }
+      }
     }
+  };
+  try {
+    apply(t, false);
+  } catch (...) {
+    // An element refused its load (only C++ code that fills a pattern itself can build this):
+    // the loads go back to what they were, applied at the time they last were, and the caller
+    // keeps its time.
+    apply(elementLoadsTime_, true);
+    throw;
   }
+  elementLoadsTime_ = t;
   elementLoadsApplied_ = any;
 }
 

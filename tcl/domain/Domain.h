@@ -195,6 +195,7 @@ class Domain {
   /// Member loads at time t on the elements (see setTime).
   void applyElementLoads(double t);
   bool elementLoadsApplied_ = false;  ///< some element holds member loads
+  double elementLoadsTime_ = 0.0;     ///< the time the member loads were last applied at
 };
 
 }  // namespace dabs::domain
