@@ -30,6 +30,8 @@ struct AnalysisStatistics {
   long materialUpdates = 0;  ///< section material (fiber) state determinations
   long failedBearings = 0;   ///< bearings that reached their failure shear strain (their
                              ///< StepObserver counts them)
+  long buckledBearings = 0;  ///< bearings whose axial compression reached their critical load
+                             ///< (yoshidaBearing -vertical kumar; the same StepObserver)
   long contactSteps = 0;     ///< steps shortened by contact stepping (shorter than analyze's dt)
   long patternChanges = 0;   ///< matrix patterns rebuilt as contact pairs woke or fell asleep
   long redoneSteps = 0;      ///< steps redone because a sleeping contact pair would carry force

@@ -209,7 +209,8 @@ void analysisStatisticsCmd(Runtime& rt, ArgReader& a) {
       std::to_string(s.iterations) + " factorizations " + std::to_string(s.factorizations) +
       " equations " + std::to_string(s.equations) + " elementUpdates " +
       std::to_string(s.elementUpdates) + " materialUpdates " + std::to_string(s.materialUpdates) +
-      " failedBearings " + std::to_string(s.failedBearings);
+      " failedBearings " + std::to_string(s.failedBearings) + " buckledBearings " +
+      std::to_string(s.buckledBearings);
   setResult(rt, text);
 }
 

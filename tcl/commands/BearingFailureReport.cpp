@@ -1,7 +1,10 @@
 // SPDX-License-Identifier: MIT
 #include "tcl/commands/BearingFailureReport.h"
 
+#include <cmath>
 #include <cstdio>
+#include <string>
+#include <vector>
 
 #include "tcl/analysis/AnalysisBuilder.h"
 
@@ -19,6 +22,7 @@ int BearingFailureReport::afterCommit(const domain::Domain& domain,
   }
   bool stop = false;
   for (const auto& [tag, b] : bearings_) {
+    reportBuckling(tag, *b, domain.committedTime(), context);
     if (!b->committedState().failed) {
       reported_.erase(tag);  // back to start (reset): a new failure is reported again
       continue;
@@ -45,6 +49,30 @@ int BearingFailureReport::afterCommit(const domain::Domain& domain,
     stop = stop || mode == YoshidaBearing3d::AfterFailure::Stop;
   }
   return stop ? analysis::kBearingFailureStop : 0;
+}
+
+void BearingFailureReport::reportBuckling(int tag, const elements::YoshidaBearing3d& b, double time,
+                                          analysis::StepContext& context) {
+  constexpr int kBuckledBranch = 3;  // KumarVertical::State::branch
+  const elements::KumarVertical* law = b.verticalLaw();
+  if (law == nullptr) return;
+  if (b.committedState().vertical.branch != kBuckledBranch) {
+    buckled_.erase(tag);
+    return;
+  }
+  if (!buckled_.insert(tag).second) return;
+  ++context.statistics.buckledBearings;
+  if (!context.log) return;
+  // The element's local basic deformation: axial first, then the two shear offsets.
+  const auto d = b.response(std::vector<std::string>{"basicDeformation"});
+  const auto q = b.response(std::vector<std::string>{"basicForce"});
+  const double uh = d ? std::hypot((*d)(1), (*d)(2)) : 0.0;
+  char text[256];
+  std::snprintf(text, sizeof text,
+                "yoshidaBearing %d buckled at time %g: axial compression %g reached its critical "
+                "load %g at a shear offset of %g",
+                tag, time, q ? -(*q)(0) : 0.0, law->criticalLoad(uh), uh);
+  context.log(text);
 }
 
 }  // namespace dabs::tcl
