@@ -162,6 +162,7 @@ class NodeToSurfaceContact3d : public elements::FixedSizeElement<5, Ndf, 0u>,
   elements::Element::HeldStatus checkHeldStatus() override;
   /// Open contacts carry nothing, so the assembly skips them.
   bool isActive() const override { return !forcesZero_; }
+  bool mayTurnInactive() const override { return true; }
   Eigen::Ref<const Eigen::MatrixXd> tangentStiff() const override {
     if (tangents_) return tangents_->k;
     return Base::zero();

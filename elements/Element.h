@@ -87,6 +87,10 @@ class Element {
   /// False while the element's force, stiffness, damping and mass are all zero (an open contact):
   /// the assembly then skips it, though its place in the sparse pattern stays reserved.
   virtual bool isActive() const { return true; }
+  /// True for an element that may turn inactive during an analysis (isActive false): the
+  /// analysis then keeps its mass and Rayleigh damping out of the matrices it forms once and
+  /// adds its inertia and damping forces itself while it is active.
+  virtual bool mayTurnInactive() const { return false; }
   /// Material updates (setTrialStrain calls of section materials) since construction: a work count
   /// for benchmarks, not part of the state.
   virtual long materialUpdates() const { return 0; }

@@ -149,7 +149,8 @@ void AnalysisModel::buildScatter() {
             link.mat.push_back(MatEntry{j * n + i, -1, ca * cb});  // value fixed below
             link.rowCol.emplace_back(ea, eb);
           }
-    link.rates = !e->isLinear() || imposedMotion_ || !e->dampingTangent().isZero(0.0);
+    link.rates = !e->isLinear() || imposedMotion_ || e->mayTurnInactive() ||
+                 !e->dampingTangent().isZero(0.0);
     link.switching = e->switchesStatus();
     elements_.push_back(std::move(link));
   }
@@ -725,9 +726,11 @@ void AnalysisModel::buildConstantDynamics() {
   std::vector<double> mass(nnz, 0.0), damping(nnz, 0.0);
   rayleighLeft_.assign(elements_.size(), 0);
   for (std::size_t k = 0; k < elements_.size(); ++k) {
-    const ElementLink& l = elements_[k];
+    ElementLink& l = elements_[k];
     const elements::Element& e = *l.element;
     const Eigen::MatrixXd m = e.mass();
+    l.ownDynamics = e.mayTurnInactive() && (l.rayleighOn || !m.isZero(0.0));
+    if (l.ownDynamics) continue;
     addElementMatrix(mass.data(), l, m);
     if (!l.rayleighOn) continue;
     const auto& r = l.rayleigh;
@@ -776,7 +779,7 @@ void AnalysisModel::formResidual(const AssemblyCoefficients& c, Eigen::VectorXd&
     const ElementLink& l = elements_[k];
     const elements::Element& e = *l.element;
     if (!e.isActive()) continue;
-    if (global) {
+    if (global && !l.ownDynamics) {
       if (rayleighLeft_[k] == 0) {
         subtractForce(l, e.resistingForce(), B);
         continue;
@@ -788,6 +791,8 @@ void AnalysisModel::formResidual(const AssemblyCoefficients& c, Eigen::VectorXd&
       if (r.betaKc != 0.0) f.noalias() += r.betaKc * (e.committedStiff() * l.v);
       subtractForce(l, f, B);
     } else if (c.dynamic) {
+      // (also an element with its own dynamics under the global matrices: its rates are
+      // gathered, as for every nonlinear element or one with a damping tangent)
       Eigen::VectorXd& f = l.force;
       f = e.resistingForce();
       const auto m = e.mass();

@@ -187,6 +187,10 @@ class AnalysisModel {
     // A nonlinear element's constant matrix terms (mass, initial-stiffness Rayleigh damping) are
     // in the tangent's constant part: was it active when that part was formed?
     bool constantActive = false;
+    // An element that may turn inactive (Element::mayTurnInactive) with mass or Rayleigh damping:
+    // left out of massGlobal_ and dampingGlobal_; the residual adds its inertia and damping
+    // forces itself while it is active.
+    bool ownDynamics = false;
     elements::FarPair* far = nullptr;  // a contact pair that may sleep (Element::farPair)
     bool asleep = false;               // left out of the pattern and the iterations
     bool switching = false;  // the element's force switches between laws (Element::HeldStatus)
