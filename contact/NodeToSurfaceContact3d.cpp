@@ -155,8 +155,10 @@ elements::Element::HeldStatus NodeToSurfaceContact3d<Ndf>::checkHeldStatus() {
   if (normalAgrees) {
     next.normal = held_.normal;
   } else if (normalCycles && normal_.velocityDependent()) {
-    // Kelvin inside the face against no force (open) or the release force (which is zero at the
-    // face) outside it: the jump of the dashpot force at g = 0.
+    // Closed inside the face against no force (open) or the release force (which is zero at the
+    // face) outside it: for kelvin the jump of the dashpot force at g = 0; for a power law with a
+    // rate term (hertzdamp, jankowski), no jump, but in a step much longer than the impact no
+    // end state lies on either branch. Either way the spring alone is held while approaching.
     const auto free = [](NormalBranch b) {
       return b == NormalBranch::Open || b == NormalBranch::Release;
     };

@@ -298,9 +298,9 @@ class NodeToSurfaceContact3d : public elements::FixedSizeElement<5, Ndf, 0u>,
   std::unique_ptr<Tangents> tangents_;
 
   /// Branch of the normal law: no force; the law's closed force unclipped (Kelvin: -K g - C gdot;
-  /// the name stays for every law); the spring alone -K g (the set-valued selection at first
-  /// touch, see checkHeldStatus; only for kelvin with a dashpot, NormalLaw::jumpsAtTouch: the
-  /// power laws are continuous at the touch); the release force.
+  /// the name stays for every law); the law's spring alone, without its rate term (-K g for
+  /// kelvin, k delta^n for a power law: the selection when closed and open cycle while the pair
+  /// approaches, see checkHeldStatus; only for laws with a rate term); the release force.
   enum class NormalBranch : std::uint8_t { Open, Kelvin, Spring, Release };
   struct Branches {
     NormalBranch normal = NormalBranch::Open;

@@ -80,9 +80,6 @@ class NormalLaw {
   double damping() const noexcept { return C_; }
   /// True when N depends on the gap rate (the damping tangent is then nonzero).
   bool velocityDependent() const noexcept { return C_ > 0.0; }
-  /// True when N jumps at the touch (kelvin with a dashpot: C |gdot| at g = 0); the power laws
-  /// are continuous there.
-  bool jumpsAtTouch() const noexcept { return law_ == ImpactLaw::Kelvin && C_ > 0.0; }
 
   /// Elastic part of N at gap g: K delta^n for delta > 0, else 0.
   double elasticForce(double g) const {

@@ -295,14 +295,11 @@ void Domain::applyElementLoads(double t) {
         // The eleLoad command checked the element and the load; removeElement keeps them.
         elements::Element* e = findElement(l.element);
         if (e == nullptr) continue;
-        if (!skipRefused) {
-          e->addLoad(l.load, f);
-          continue;
-        }
         try {
           e->addLoad(l.load, f);
         } catch (const InputError&) {
-          // refused now as when it was applied last (the restore below): it was not held then
+          // in the restore below a refused load was not held before either
+          if (!skipRefused) throw;
         }
       }
     }

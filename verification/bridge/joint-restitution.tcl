@@ -75,6 +75,12 @@ proc referenceImpact {law} {
   error "referenceImpact $law: no separation"
 }
 
+# The largest penetration over the pairs so far, in ::peakNow (runUntil's test after each step).
+proc track {pairs} {
+  foreach p $pairs { set ::peakNow [expr {max($::peakNow, -[lindex [eleResponse $p gap] 0])}] }
+  return 0
+}
+
 # The joint through the program: two span bodies (a node each, free along X only) with the
 # case study's end faces and pounding; returns {exit ratio, peak penetration, failed steps}.
 proc programImpact {law} {
@@ -103,11 +109,6 @@ proc programImpact {law} {
   remove loadPattern 1
   incr failed [runUntil $dt [expr {$tp + $dt}]]
   set approach [expr {[nodeVel $left 1] - [nodeVel $right 1]}]
-  set peak 0.0
-  proc ::track {pairs} {
-    foreach p $pairs { set ::peakNow [expr {max($::peakNow, -[lindex [eleResponse $p gap] 0])}] }
-    return 0
-  }
   set ::peakNow 0.0
   incr failed [runUntil $dt 0.2 [list track $pairs]]
   set ratio [expr {-([nodeVel $left 1] - [nodeVel $right 1]) / $approach}]

@@ -6,7 +6,8 @@
   web address resolves to a file or folder inside the repository;
 - every repository path they name in backticks (verification/..., tcl/..., docs/..., and the
   other source folders) exists, so a renamed script leaves no dangling mention;
-- none names ../shared (the project's tests, docs and main job must not need it);
+- none names a path above the repository (`../something` that resolves outside it: the
+  project's tests, docs and main job must stand on a clone alone);
 - every command the program registers has a row in the README's command tables (the rows whose
   first cell names commands in backticks), and no command (or `command type` pair, such as
   `element yoshidaBearing`) has two.
@@ -40,8 +41,9 @@ for page in pages:
         continue
     text = page.read_text()
     name = page.relative_to(src)
-    if "../shared" in text:
-        fail(f"{name} names ../shared")
+    for outside in re.findall(r"(?<![\w./])((?:\.\./)+[\w.-]+)", text):
+        if not (page.parent / outside).resolve().is_relative_to(src):
+            fail(f"{name} names {outside}, outside the repository")
     for target in link.findall(text):
         if re.match(r"[a-z]+://", target) or target.startswith("#") or target.startswith("mailto:"):
             continue

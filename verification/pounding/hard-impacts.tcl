@@ -88,6 +88,7 @@ proc contactDuration {K M1 M2} {
 # I(n) = int_0^1 dx / sqrt(1 - x^(n + 1)), by Simpson's rule on x = 1 - y^2 (which removes the
 # end's singularity: dx / sqrt(1 - x^(n+1)) = 2 y dy / sqrt(1 - (1 - y^2)^(n+1))).
 proc powerIntegral {n} {
+  if {[info exists ::powerIntegralOf($n)]} { return $::powerIntegralOf($n) }
   set steps 2000
   set sum 0.0
   for {set i 0} {$i <= $steps} {incr i} {
@@ -96,7 +97,7 @@ proc powerIntegral {n} {
     set w [expr {$i == 0 || $i == $steps ? 1 : ($i % 2 ? 4 : 2)}]
     set sum [expr {$sum + $w*$f}]
   }
-  return [expr {$sum/(3.0*$steps)}]
+  return [set ::powerIntegralOf($n) [expr {$sum/(3.0*$steps)}]]
 }
 # k_h of a power law whose undamped contact at speed v lasts Tc: dmax = v Tc / (2 I(n)).
 proc equivalentPowerK {Tc n m v} {
