@@ -330,16 +330,18 @@ proc blockInertia {m sides} {
                [expr {$m * ($a * $a + $b * $b) / 12.0}]]
 }
 
-# Effective shear modulus Geq (MPa) of an HDR set (Y0 [MPa] U0 [strain] n alpha0 beta q gamma, per
-# unit area and unit rubber thickness) at shear strain X, from the material's own response on the
-# test of verification/bearing/fitted-parameters.md (the calibration's cyclicTest): six triangular
-# cycles of amplitude X along one axis, 40 steps per quarter, Geq = (F(+X) - F(-X)) / 2X on the
-# last cycle. Runs on a bearing of unit area and unit rubber thickness (force = stress, displacement
-# = strain) in a model of its own, so call it before building the model; remembered per set.
-proc hdrEffectiveModulus {set strain} {
-  if {[info exists ::hdrGeq([list $set $strain])]} { return $::hdrGeq([list $set $strain]) }
+# Effective shear modulus Geq (MPa) and equivalent damping ratio Heq of an HDR set (Y0 [MPa] U0
+# [strain] n alpha0 beta q gamma, per unit area and unit rubber thickness) at shear strain X, from
+# the material's own response on the test of verification/bearing/fitted-parameters.md (the
+# calibration's cyclicTest): six triangular cycles of amplitude X along one axis, 40 steps per
+# quarter, on the last cycle Geq = (F(+X) - F(-X)) / 2X and Heq = dW / (2 pi Geq X^2), dW its area
+# (trapezoids). Runs on a bearing of unit area and unit rubber thickness (force = stress,
+# displacement = strain) in a model of its own, so call it before building the model; remembered
+# per set. Returns {Geq Heq}.
+proc hdrLoop {set strain {perQuarter 40}} {
+  set key [list $set $strain $perQuarter]
+  if {[info exists ::hdrLoops($key)]} { return $::hdrLoops($key) }
   lassign $set y0 u0 n a0 b q gm
-  set perQuarter 40
   set path {0.0}
   set u 0.0
   set du [expr {double($strain) / $perQuarter}]
@@ -370,14 +372,53 @@ proc hdrEffectiveModulus {set strain} {
   analysis Static
   # the last cycle starts at the second-last quarter (+X to -X), ends at the last (-X to +X)
   set last [expr {[llength $path] - 1}]
+  set work 0.0
+  set fPrev 0.0
   for {set i 1} {$i <= $last} {incr i} {
-    if {[analyze 1] != 0} { error "hdrEffectiveModulus: the cyclic test of {$set} failed at step $i" }
-    if {$i == $last - 2 * $perQuarter} { set fNeg [lindex [eleResponse 1 basicForce] 1] }
+    if {[analyze 1] != 0} { error "hdrLoop: the cyclic test of {$set} failed at step $i" }
+    set f [lindex [eleResponse 1 basicForce] 1]
+    if {$i > $last - 4 * $perQuarter} {
+      set work [expr {$work + 0.5 * ($f + $fPrev) * ([lindex $path $i] - [lindex $path $i-1])}]
+    }
+    if {$i == $last - 2 * $perQuarter} { set fNeg $f }
+    set fPrev $f
   }
-  set fPos [lindex [eleResponse 1 basicForce] 1]
   wipe
-  set ::hdrGeq([list $set $strain]) [expr {($fPos - $fNeg) / (2.0 * $strain)}]
-  return $::hdrGeq([list $set $strain])
+  set geq [expr {($f - $fNeg) / (2.0 * $strain)}]
+  set ::hdrLoops($key) [list $geq [expr {$work / (2.0 * acos(-1.0) * $geq * $strain * $strain)}]]
+  return $::hdrLoops($key)
+}
+proc hdrEffectiveModulus {set strain} { return [lindex [hdrLoop $set $strain] 0] }
+
+# An HDR set whose Geq and Heq at shear strain X are stiffnessFactor and dampingFactor times those
+# of `set` (a production bearing's scatter, sampled in the fragility study). The Yoshida set has no
+# single damping parameter, so the damping moves with the yield deformation: U0 -> c U0 with
+# gamma -> c^2 gamma and beta -> c^q beta, which leaves the hardening Y0 gamma (U/U0)^2 and the
+# back-force factor alpha0 - beta (Umax/U0)^q as they were at every deformation and changes only
+# how soon the rubber yields (a larger U0, a softer start: a fuller loop). Heq rises monotonically
+# with c (0.10 at c = 0.5, 0.17 at 1, 0.24 at 2 for set (a) at 250 %); c is found by the secant
+# method on ln Heq against ln c. The force is homogeneous of degree one in Y0 (no Maxwell part), so
+# Y0 then scales Geq exactly and leaves Heq. In a model of its own, like hdrLoop.
+proc hdrScaled {set stiffnessFactor dampingFactor strain} {
+  lassign $set y0 u0 n a0 b q gm
+  lassign [hdrLoop $set $strain] geq0 heq0
+  set target [expr {log($dampingFactor * $heq0)}]
+  set variant {{c} {
+    upvar 1 y0 y0 u0 u0 n n a0 a0 b b q q gm gm
+    return [list $y0 [expr {$c * $u0}] $n $a0 [expr {$b * pow($c, $q)}] $q [expr {$gm * $c * $c}]]
+  }}
+  set x0 0.0; set r0 [expr {log($heq0) - $target}]
+  set x1 [expr {0.5 * log($dampingFactor)}]   ;# ln Heq rises about half as fast as ln c
+  for {set it 0} {$it < 30 && abs($r0) > 1e-6} {incr it} {
+    set r1 [expr {log([lindex [hdrLoop [apply $variant [expr {exp($x1)}]] $strain] 1]) - $target}]
+    if {$r1 == $r0} { break }
+    set x2 [expr {$x1 - $r1 * ($x1 - $x0) / ($r1 - $r0)}]
+    set x0 $x1; set r0 $r1; set x1 $x2
+  }
+  if {abs($r0) > 1e-6} { error "hdrScaled: no yield deformation gives $dampingFactor times the damping of {$set}" }
+  set scaled [apply $variant [expr {exp($x0)}]]
+  set geq [lindex [hdrLoop $scaled $strain] 0]
+  return [lreplace $scaled 0 0 [expr {$y0 * $stiffnessFactor * $geq0 / $geq}]]
 }
 
 # The end face of a girder (or of what faces it across a joint) at x, rigidly tied to node center:
@@ -810,8 +851,14 @@ proc buildModel {case} {
         lappend ::endEles {*}[jointDevices [expr {$nb + 10}] [expr {$nb + 2000}] $left $right \
             [expr {$e == 0 ? $other : $unitEnd}] [expr {$e == 0 ? $unitEnd : $other}] $xe $zG]
       }
-      # {left node, right node, contact pairs}: the end joint as a joint (gap = right - left)
-      lappend ::endJoints [list [expr {$e == 0 ? $other : $unitEnd}] [expr {$e == 0 ? $unitEnd : $other}] $list]
+      # {left node, right node, contact pairs, lever}: the end joint as a joint (gap = right -
+      # left). The other side's node is the neighbour's centre (adjacent) or the backwall's node
+      # on the face (abutment); lever is the face's offset from it along X, so that its face moves
+      # as u + theta x (lever, 0, 0): the neighbour's yaw and pitch move its end transversely and
+      # vertically by 20 m times the rotation, which its centre does not show
+      set lever [expr {$xFace - [nodeCoord $other 1]}]
+      lappend ::endJoints [list [expr {$e == 0 ? $other : $unitEnd}] [expr {$e == 0 ? $unitEnd : $other}] $list \
+          [expr {$e == 0 ? $lever : 0.0}] [expr {$e == 0 ? 0.0 : $lever}]]
     }
   }
 
@@ -1073,13 +1120,14 @@ proc monitorStep {} {
   variable ::run::endClosed
   set e 0
   foreach joint $::endJoints {
-    lassign $joint a b pairs
+    lassign $joint a b pairs leverA leverB
     set gx [expr {[nodeDisp $b 1] - [nodeDisp $a 1]}]
     if {$gx > [dict get $peak endopen$e]} { dict set peak endopen$e $gx }
     if {$gx < [dict get $peak endclose$e]} { dict set peak endclose$e $gx }
     dict set last endgap$e $gx
-    dict set last endgap${e}y [expr {[nodeDisp $b 2] - [nodeDisp $a 2]}]
-    dict set last endgap${e}z [expr {[nodeDisp $b 3] - [nodeDisp $a 3]}]
+    # the faces' transverse and vertical offsets: u_y + theta_z lever, u_z - theta_y lever
+    dict set last endgap${e}y [expr {[nodeDisp $b 2] + [nodeDisp $b 6] * $leverB - [nodeDisp $a 2] - [nodeDisp $a 6] * $leverA}]
+    dict set last endgap${e}z [expr {[nodeDisp $b 3] - [nodeDisp $b 5] * $leverB - [nodeDisp $a 3] + [nodeDisp $a 5] * $leverA}]
     set f 0.0
     foreach c $pairs {
       set f [expr {$f + [lindex [eleResponse $c contactForce] 0]}]

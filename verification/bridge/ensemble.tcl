@@ -31,7 +31,8 @@
 #                Highway Bridges, Part V, 2002), the design limit of bridge.tcl's report
 #   bearing-300  >= 300 %: bearing failure (the failure strain of bridge.tcl's report)
 #   joint        peak longitudinal opening of a joint > its gap: damage to the expansion joint's
-#                fingers (ours: the joint accommodates +- its gap)
+#                fingers (ours: the joint accommodates +- its gap); the unit's end joints, against
+#                the next unit or the backwall, count as joints here, in residual and in step
 #   unseating    a girder end's travel towards the edge of its seat > its seat (bridge.tcl seatEdge:
 #                half the cap length less half the gap; JRA's minimum S_EM = 0.7 + 0.005 L is 0.9 m)
 #   residual     residual longitudinal or transverse offset of a joint > the gap (ours)
@@ -55,9 +56,13 @@
 # depends on the temperature then); the rubber's force (Y0: stiffness and strength together)
 # lognormal with median 1 and dispersion 0.1 (ours: production bearings scatter by about 10 % in
 # shear stiffness); contact friction mu_k uniform 0.3 to 0.5 with mu_s = mu_k + 0.1 (ours, about
-# the default 0.4 / 0.5); restitution uniform 0.5 to 0.8 (ours, about Zhu et al.'s 0.65). The
-# rubber's damping is not sampled apart from its stiffness (the Yoshida set has no single
-# damping parameter).
+# the default 0.4 / 0.5); restitution uniform 0.5 to 0.8 (ours, about Zhu et al.'s 0.65); the
+# rubber's equivalent damping ratio Heq at the design strain lognormal with median 1 and
+# dispersion 0.1 apart from its force (ours, as for the force; bridge.tcl's hdrScaled moves the
+# set's yield deformation, verification/bridge/bearing-scatter.tcl checks it). The devices follow
+# the sampled gap as in the sensitivity study: the restrainers' slack and the bumpers' clearance
+# keep their ratios to the gap (1 and 0.6), so that a narrow gap does not leave slack cables and a
+# wide one bumpers that close long before the girders would touch.
 # Fits, against PGV and Sa(T_iso): the maximum-likelihood fit of every run (Baker 2015, eq. 11),
 # and the incremental-dynamic-analysis fit (Baker 2015, eqs. 3 and 4: the PGV at which each motion
 # first exceeds the state; motions that never do are counted and left out) with bootstrap 90 %
@@ -151,13 +156,14 @@ dict for {name m} $motions {
     set muK [uniform rng 0.3 0.5]
     dict set realisations $name [dict create jointGap [uniform rng 0.03 0.07] \
         rubberFactor [expr {exp(0.1 * [standardNormal rng])}] frictionK $muK frictionS [expr {$muK + 0.1}] \
-        restitution [uniform rng 0.5 0.8]]
+        restitution [uniform rng 0.5 0.8] dampingFactor [expr {exp(0.1 * [standardNormal rng])}]]
   } else {
     dict set realisations $name [dict create jointGap $jointGap rubberFactor 1.0 frictionK $frictionK \
-        frictionS $frictionS restitution $restitution]
+        frictionS $frictionS restitution $restitution dampingFactor 1.0]
   }
 }
 set defaultHdr $hdr
+set defaultDevices [dict create jointGap $jointGap restrainerSlack $restrainerSlack bumperClearance $bumperClearance]
 
 # One job per case, motion and PGV level; the strongest first, so that the long runs start early
 # and the short ones fill the end (the farm hands jobs out in this order).
@@ -180,7 +186,11 @@ proc bridgeRun {job} {
   # this motion's realisation of the bridge
   set real [dict get $::realisations $motion]
   foreach key {jointGap frictionK frictionS restitution} { set ::$key [dict get $real $key] }
-  set ::hdr [lreplace $::defaultHdr 0 0 [expr {[lindex $::defaultHdr 0] * [dict get $real rubberFactor]}]]
+  foreach key {restrainerSlack bumperClearance} {
+    set ::$key [expr {[dict get $::defaultDevices $key] * $::jointGap / [dict get $::defaultDevices jointGap]}]
+  }
+  # the bearings' scatter (their own small model: before runCase builds the bridge)
+  set ::hdr [hdrScaled $::defaultHdr [dict get $real rubberFactor] [dict get $real dampingFactor] $::bearingDesignStrain]
   if {[dict get $m kind] eq "pulse"} {
     set ::pulseTp [dict get $m Tp]; set ::pulseVp 1.0; set ::pulseT0 [dict get $m t0]
     set input pulse
@@ -189,15 +199,14 @@ proc bridgeRun {job} {
   }
   set r [runCase $case $scale $::defaultDt $::defaultIntegrator $::defaultTol $input]
   set ::hdr $::defaultHdr
-  # the quantities of the damage states, as the report reads them (tools/findings.tcl)
-  set peak [dict get $r peak]
-  set opening 0.0
-  foreach j [findings::jointsOf $r] { set opening [expr {max($opening, [dict get $peak open$j])}] }
-  set residual [expr {max([findings::residualOpening $r], [findings::gapMax $r y last])}]
+  dict for {key value} $::defaultDevices { set ::$key $value }
+  # the quantities of the damage states, as the report reads them (tools/findings.tcl), over the
+  # joints and the unit's end joints
+  set residual [expr {max([findings::residualOpening $r], [findings::residualGap $r y])}]
   return [list code [expr {[dict get $r completed] ? 0 : -1}] \
       pgv [expr {$scale * [dict get $m pgv]}] sa [expr {$scale * [dict get $m sa]}] \
-      strain [findings::strainMax $r] opening $opening residual $residual \
-      step [findings::gapMax $r z last] seat [findings::seatTravel $r] drift [findings::driftMax $r last] \
+      strain [findings::strainMax $r] opening [findings::openingMax $r] residual $residual \
+      step [findings::residualGap $r z] seat [findings::seatTravel $r] drift [findings::driftMax $r last] \
       gap [dict get $real jointGap] wall [format %.3f [dict get $r wall]]]
 }
 

@@ -127,7 +127,7 @@ proc sensitivityRun {job} {
       midRotPound [findings::midRot $rp] midRotCounter [findings::midRot $rc] \
       transPound [findings::gapMax $rp y] transCounter [findings::gapMax $rc y] \
       failed [tcl::mathfunc::max {*}[lmap r $runs {findings::failedCount $r}]] \
-      step [tcl::mathfunc::max {*}[lmap r $runs {findings::gapMax $r z last}]] \
+      step [tcl::mathfunc::max {*}[lmap r $runs {findings::residualGap $r z}]] \
       wall [format %.2f $wall]
   return $out
 }

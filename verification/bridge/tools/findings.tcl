@@ -103,15 +103,17 @@ proc findings::gapMax {r dir {which peak}} {
   }
   return $m
 }
-# Largest opening (positive longitudinal gap) of the two joints during the motion, m. The peak
-# dict holds the gap of largest magnitude, so an opening smaller than the closing is not there;
-# the residual opening is used too.
+# Largest opening (positive longitudinal gap) during the motion over the joints and, where the run
+# has them, the unit's end joints (against the next unit or the backwall), m. The peak dict holds
+# the gap of largest magnitude, so an opening smaller than the closing is not there; the residual
+# opening is used too.
 proc findings::openingMax {r} {
   set m 0.0
   foreach which {peak last} {
     foreach j [jointsOf $r] { set m [expr {max($m, [dict get $r $which gap${j}x])}] }
   }
   foreach j [jointsOf $r] { if {[dict exists $r peak open$j]} { set m [expr {max($m, [dict get $r peak open$j])}] } }
+  foreach e {0 1} { if {[dict exists $r peak endopen$e]} { set m [expr {max($m, [dict get $r peak endopen$e])}] } }
   return $m
 }
 # Largest closing (magnitude of the most negative longitudinal gap) of the two joints, m.
