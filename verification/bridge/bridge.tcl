@@ -857,8 +857,9 @@ proc buildModel {case} {
       # as u + theta x (lever, 0, 0): the neighbour's yaw and pitch move its end transversely and
       # vertically by 20 m times the rotation, which its centre does not show
       set lever [expr {$xFace - [nodeCoord $other 1]}]
+      set corners [lmap k {1 2 3 4} {expr {$nb + ($e == 0 ? 70 : 60) + $k}}]
       lappend ::endJoints [list [expr {$e == 0 ? $other : $unitEnd}] [expr {$e == 0 ? $unitEnd : $other}] $list \
-          [expr {$e == 0 ? $lever : 0.0}] [expr {$e == 0 ? 0.0 : $lever}]]
+          [expr {$e == 0 ? $lever : 0.0}] [expr {$e == 0 ? 0.0 : $lever}] $other $lever $corners]
     }
   }
 
@@ -1283,6 +1284,17 @@ proc runCase {case scale dt integrator tol motion {csv ""} {perStep ""}} {
   if {![info exists equilibrium]} { set equilibrium [dynamicEquilibrium] }
   set contactSubsteps [dict get [contactStepping] contactSteps]
   contactStepping -off
+  # the end joints' other face moved as monitorStep reads it (its node plus the rotation times the
+  # lever) and as its four corners, rigidly tied to that node by the solver, say (their mean)
+  set endFaces {}
+  foreach joint $::endJoints {
+    lassign $joint a b pairs leverA leverB other lever corners
+    foreach dof {2 3} rot {6 5} sign {1.0 -1.0} {
+      set read [expr {[nodeDisp $other $dof] + $sign * [nodeDisp $other $rot] * $lever}]
+      set mean [expr {[tcl::mathop::+ {*}[lmap c $corners {nodeDisp $c $dof}]] / 4.0}]
+      lappend endFaces [list [expr {$dof == 2 ? "transverse" : "vertical"}] $read $mean]
+    }
+  }
   foreach v {peak last impacts} { set $v [set ::run::$v] }
   set wall2 [clock microseconds]
   if {$fh ne ""} { close $fh }
@@ -1312,6 +1324,7 @@ proc runCase {case scale dt integrator tol motion {csv ""} {perStep ""}} {
   set dofs [expr {6 * [llength [getNodeTags]]}]
   return [dict create case $case scale $scale dt $dt integrator $integrator tol $tol motion $used \
       completed [expr {$failed == 0}] loosened $loosened equilibrium $equilibrium contactSubsteps $contactSubsteps peak $peak last $last impacts $impacts stats $stats \
+      endFaces $endFaces \
       nodes [llength [getNodeTags]] elements [llength [getEleTags]] \
       wall [expr {($wall2 - $wall0) * 1e-6}] wallSteps [expr {($wall2 - $wall1) * 1e-6}] \
       endTime [getTime %.17g]]

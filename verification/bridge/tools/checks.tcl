@@ -61,6 +61,14 @@ proc checks::run {r} {
           $name $bt $gap] [expr {$gap <= 0.005}]
     }
   }
+  # the end joints' transverse and vertical offsets are read at the other side's face: its node's
+  # displacement plus the rotation times the lever equals the mean of the face's corners
+  if {[dict exists $r endFaces]} {
+    foreach f [dict get $r endFaces] {
+      lassign $f what read mean
+      checkAbs "$name: an end joint's far face, $what displacement as read against its corners' mean" $read $mean 1e-9
+    }
+  }
   if {[dict get $r case] eq "nopound"} { return }
   for {set j 1} {[dict exists $peak close$j]} {incr j} {
     set closing [expr {-[dict get $peak close$j]}]
