@@ -22,28 +22,7 @@ set outDir [expr {$argc > 2 ? [lindex $argv 2] : "bridge-speed"}]
 set parts  [expr {$argc > 3 ? [lindex $argv 3] : "both"}]
 file mkdir $outDir
 
-proc quantities {r} {
-  set q {}
-  foreach k {gap1x gap1y gap2x gap2y} {
-    # peaks by magnitude: two peaks of nearly equal size and opposite sign may swap between runs
-    dict set q peak_$k [expr {abs([dict get $r peak $k])}]
-    dict set q residual_$k [dict get $r last $k]
-  }
-  foreach bt {2011 2012 3011 3012} { dict set q strain$bt [dict get $r peak strain$bt] }
-  return $q
-}
-proc errorOf {q ref} {
-  set worst 0.0; set which ""
-  dict for {k v} $q {
-    set rv [dict get $ref $k]
-    if {[string match residual_* $k]} {
-      set scale [expr {abs([dict get $ref peak_[string range $k 9 end]])}]
-    } else { set scale [expr {abs($rv)}] }
-    set e [expr {abs($v - $rv) / max($scale, 1e-12)}]
-    if {$e > $worst} { set worst $e; set which $k }
-  }
-  return [list $worst $which]
-}
+source [file join [file dirname [info script]] speed-error.tcl]
 
 if {$parts ne "stability"} {
 set runs {}
