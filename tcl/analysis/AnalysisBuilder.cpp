@@ -211,12 +211,12 @@ int AnalysisBuilder::analyze(int numSteps, double dt) {
     ~StepLoopGuard() { StopRequest::stepLoopRunning = 0; }
   } guard;
   const bool stepping = kind_ == Kind::Transient && contactStepping_ != nullptr;
-  // Far pairs may rest through the steps unless something reads them at every step: contact
-  // stepping reads every gap, and the script after each step may read anything (recorders name
-  // theirs). At the end every pair's state is as the check of every step leaves it, so one step
-  // (`analyze 1` in a loop) gains nothing from resting and checks every pair. With HHT the
-  // check of every step forms the gaps at the weighted displacements, which are not those a
-  // resting pair's gap is formed at (the committed ones): no rest.
+  // Sleeping pairs' tests may be deferred through the steps unless something reads them at every
+  // step: contact stepping reads every gap, and the script after each step may read anything
+  // (recorders name theirs). At the end every pair's state is as the check of every step leaves
+  // it, so one step (`analyze 1` in a loop) gains nothing from deferring and checks every pair.
+  // With HHT the check of every step forms the gaps at the weighted displacements, which are not
+  // those a deferred pair's gap is formed at (the committed ones): no deferral.
   model_->beginSteps(stepping || (afterStep && kind_ == Kind::Transient) || numSteps < 2 ||
                      !integrator_->checksCommittedDisplacements());
   struct EndSteps {

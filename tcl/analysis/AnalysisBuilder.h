@@ -33,7 +33,7 @@ struct AnalysisStatistics {
   long buckledBearings = 0;  ///< bearings whose axial compression reached their critical load
                              ///< (yoshidaBearing -vertical kumar; the same StepObserver)
   long contactSteps = 0;     ///< steps shortened by contact stepping (shorter than analyze's dt)
-  long patternChanges = 0;   ///< matrix patterns rebuilt as contact pairs woke or fell asleep
+  long patternChanges = 0;   ///< matrix patterns rebuilt as contact pairs woke or went to sleep
   long redoneSteps = 0;      ///< steps redone because a sleeping contact pair would carry force
   long farTests = 0;         ///< far tests of sleeping contact pairs (one per pair and check)
 };
@@ -118,7 +118,8 @@ class AnalysisBuilder {
   /// One step of analyze (sub-stepped on failure), with the checks that follow it; 0 or the code
   /// analyze returns.
   int advance(double dt, long factorizationsBefore);
-  /// New matrix pattern after contact pairs woke or fell asleep (AnalysisModel::applySleepChanges).
+  /// New matrix pattern after contact pairs woke or went to sleep
+  /// (AnalysisModel::applySleepChanges).
   void rebuildPattern();
   /// Factorisations of this model's systems, across pattern changes.
   long factorizationsSoFar() const;

@@ -96,10 +96,10 @@ void AnalysisModel::buildScatter() {
     link.rayleighOn = link.rayleigh.any();
     const int n = e->numDof();
     link.far = e->farPair();
-    link.asleep = link.far != nullptr && sleepers_.wantsSleep(*link.far);
-    if (link.asleep) ++sleeping;
+    link.sleeping = link.far != nullptr && sleepers_.wantsSleep(*link.far);
+    if (link.sleeping) ++sleeping;
     // A sleeper gets its buffers when it wakes (they would spread the awake links' data).
-    if (!link.asleep) link.allocateBuffers(n);
+    if (!link.sleeping) link.allocateBuffers(n);
     localEqs.assign(static_cast<std::size_t>(n), {});
     int local = 0;
     for (int nt : e->nodeTags()) {
@@ -108,7 +108,7 @@ void AnalysisModel::buildScatter() {
       for (int d = 0; d < nl.node->ndf(); ++d, ++local) {
         eqsOfDof(nl.firstDof + d, scratch);
         localEqs[static_cast<std::size_t>(local)] = scratch;
-        if (!link.asleep)  // a sleeper adds nothing to the residual
+        if (!link.sleeping)  // a sleeper adds nothing to the residual
           for (auto [eq, c] : scratch) link.vec.push_back(VecEntry{local, eq, c});
       }
     }
@@ -121,7 +121,7 @@ void AnalysisModel::buildScatter() {
       }
       d = v.eq;
     }
-    for (int i = 0; i < n && !link.asleep; ++i)
+    for (int i = 0; i < n && !link.sleeping; ++i)
       for (auto [ea, ca] : localEqs[static_cast<std::size_t>(i)])
         for (int j = 0; j < n; ++j)
           for (auto [eb, cb] : localEqs[static_cast<std::size_t>(j)]) {
@@ -178,7 +178,7 @@ void AnalysisModel::buildScatter() {
   // Sleepers after the awake links, each part in the domain's order (the assembly sums in the
   // same order as with every link in place).
   std::stable_partition(elements_.begin(), elements_.end(),
-                        [](const ElementScatter& l) { return !l.asleep; });
+                        [](const ElementScatter& l) { return !l.sleeping; });
   awake_ = elements_.size() - static_cast<std::size_t>(sleeping);
   buildSleepers();
   for (NodeScatter& nl : nodes_) fix(nl.mass, nl.rowCol);
@@ -196,7 +196,7 @@ void AnalysisModel::buildScatter() {
 
 void AnalysisModel::buildSleepers() {
   // The pairs that may sleep in the domain's order, with their position in the domain's tag
-  // order (Domain::setDormant) and their index here.
+  // order (Domain::setStateKept) and their index here.
   std::map<const elements::Element*, std::size_t> linkOf;
   for (std::size_t k = 0; k < elements_.size(); ++k)
     if (elements_[k].far) linkOf.emplace(elements_[k].element, k);
@@ -213,7 +213,7 @@ void AnalysisModel::buildSleepers() {
       p.far = l.far;
       p.contactor = l.nodes[0];
       for (std::size_t j = 0; j < 4; ++j) p.face[j] = l.nodes[j + 1];
-      p.asleep = l.asleep;
+      p.sleeping = l.sleeping;
       p.domainIndex = index;
       pairs.push_back(p);
     }
@@ -379,12 +379,12 @@ Status AnalysisModel::updateElements() {
 #pragma omp parallel for schedule(dynamic, 4) num_threads(threads_)
     for (std::ptrdiff_t k = 0; k < count; ++k) {
       ElementScatter& l = elements_[static_cast<std::size_t>(k)];
-      if (!l.asleep) elementStatus_[static_cast<std::size_t>(k)] = l.update(time_, dt);
+      if (!l.sleeping) elementStatus_[static_cast<std::size_t>(k)] = l.update(time_, dt);
     }
   } else {
     for (std::ptrdiff_t k = 0; k < count; ++k) {
       ElementScatter& l = elements_[static_cast<std::size_t>(k)];
-      if (!l.asleep) elementStatus_[static_cast<std::size_t>(k)] = l.update(time_, dt);
+      if (!l.sleeping) elementStatus_[static_cast<std::size_t>(k)] = l.update(time_, dt);
     }
   }
   elementUpdates_ += count;
@@ -397,7 +397,7 @@ Status AnalysisModel::updateElements() {
 bool AnalysisModel::holdStatuses() {
   bool any = false;
   for (std::size_t k = 0; k < awake_; ++k)
-    if (ElementScatter& l = elements_[k]; l.switching && !l.asleep) {
+    if (ElementScatter& l = elements_[k]; l.switching && !l.sleeping) {
       l.element->holdStatus();
       any = true;
     }
@@ -410,7 +410,7 @@ elements::Element::HeldStatus AnalysisModel::checkHeldStatuses() {
   // Every element is checked (each one that disagrees switches now, not one per round).
   for (std::size_t k = 0; k < awake_; ++k) {
     ElementScatter& l = elements_[k];
-    if (!l.switching || l.asleep) continue;
+    if (!l.switching || l.sleeping) continue;
     const Held h = l.element->checkHeldStatus();
     if (h == Held::Conflict) result = Held::Conflict;
     if (h == Held::Switched && result == Held::Agrees) result = Held::Switched;

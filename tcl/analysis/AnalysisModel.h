@@ -115,7 +115,7 @@ class AnalysisModel {
   /// After a step converged (trial state): SleepingPairs::check, waking the sleepers it finds
   /// near with their full update.
   SleepCheck checkSleepingPairs();
-  /// Rebuilds the pattern and scatter with the noted pairs woken or asleep (equations unchanged);
+  /// Rebuilds the pattern and scatter with the noted pairs woken or sleeping (equations unchanged);
   /// the linear system must then analyse the new pattern.
   void applySleepChanges();
   long sleepingPairs() const noexcept { return sleepers_.sleeping(); }
@@ -125,8 +125,8 @@ class AnalysisModel {
   void beginSteps(bool observeAll) { sleepers_.beginSteps(observeAll); }
   /// SleepingPairs::endSteps.
   void endSteps() { sleepers_.endSteps(); }
-  /// SleepingPairs::restingFaces.
-  std::size_t restingFaces() const { return sleepers_.restingFaces(); }
+  /// SleepingPairs::deferredFaces.
+  std::size_t deferredFaces() const { return sleepers_.deferredFaces(); }
 
  private:
   using Term = DofTerm;

@@ -62,7 +62,7 @@ struct ElementScatter {
   /// forces itself while it is active.
   bool ownDynamics = false;
   elements::FarPair* far = nullptr;  ///< a contact pair that may sleep (Element::farPair)
-  bool asleep = false;               ///< left out of the pattern and the iterations
+  bool sleeping = false;             ///< left out of the pattern and the iterations
   bool switching = false;  ///< the element's force switches between laws (Element::HeldStatus)
 
   /// Gather and work buffers for n dofs (once).

@@ -21,7 +21,7 @@ constexpr double kBoundLipschitz = 4.0;
 // How far a pair may be brought towards its search distance before its exact test is due: its
 // bound's excess over the distance, less a margin for the round-off of the bound (coordinates of
 // a long viaduct reach 1e3 m, where one ulp is 1e-13 m; the margin is micrometres).
-double restSlack(double bound, double distance, const Eigen::Vector3d& X) {
+double farSlack(double bound, double distance, const Eigen::Vector3d& X) {
   return bound - distance - 1e-9 * (1.0 + std::abs(bound) + X.lpNorm<Eigen::Infinity>());
 }
 }  // namespace
@@ -47,9 +47,9 @@ void SleepingPairs::build(std::vector<Pair> pairs, const DofSource& dofs) {
     p.distance = test.distance;
     p.far = in.far;
     p.domainIndex = in.domainIndex;
-    p.asleep = in.asleep;
+    p.sleeping = in.sleeping;
     tags_[i] = in.tag;
-    if (in.asleep) ++sleeping_;
+    if (in.sleeping) ++sleeping_;
     FarFace& f = faceOf[i];
     for (std::size_t j = 0; j < 4; ++j) {
       f.nodes[j] = in.face[j];
@@ -73,9 +73,9 @@ void SleepingPairs::build(std::vector<Pair> pairs, const DofSource& dofs) {
     farFaces_.back().first = static_cast<std::uint32_t>(i);
     farFaces_.back().end = static_cast<std::uint32_t>(i + 1);
   }
-  domain_.clearDormant();
+  domain_.clearStateKept();
   markObserved();
-  buildWatch(dofs);
+  buildMotionBounds(dofs);
   sleepWanted_.clear();
   haveU_ = false;
 }
@@ -104,7 +104,7 @@ bool SleepingPairs::sleeperBound(const PairLink& p, const FarFace& f, double top
   return p.far->isFarAt(u, bound);
 }
 
-void SleepingPairs::buildWatch(const DofSource& dofs) {
+void SleepingPairs::buildMotionBounds(const DofSource& dofs) {
   faceMotion_.clear();
   for (const FarFace& f : farFaces_) {
     faceMotion_.beginGroup();
@@ -131,14 +131,14 @@ void SleepingPairs::setDisplacements(const Eigen::VectorXd& U) {
   haveU_ = true;
 }
 
-void SleepingPairs::startRest(std::size_t r, double reach, std::span<const SupportSlot> slots) {
-  if (!haveU_) return;  // no motion bound: no rest
+void SleepingPairs::deferFace(std::size_t r, double reach, std::span<const SupportSlot> slots) {
+  if (!haveU_) return;  // no motion bound: no deferral
   faceMotion_.snapshot(r, U_, slots);
-  const bool wasResting = faceHorizon_[r] > -kInfinity;
+  const bool wasDeferred = faceHorizon_[r] > -kInfinity;
   faceHorizon_[r] = reach;
-  if (wasResting) return;
+  if (wasDeferred) return;
   const FarFace& f = farFaces_[r];
-  for (std::uint32_t i = f.first; i < f.end; ++i) domain_.setDormant(pairs_[i].domainIndex, true);
+  for (std::uint32_t i = f.first; i < f.end; ++i) domain_.setStateKept(pairs_[i].domainIndex, true);
 }
 
 double SleepingPairs::faceMoved(std::size_t r, std::span<const SupportSlot> slots) const {
@@ -146,7 +146,7 @@ double SleepingPairs::faceMoved(std::size_t r, std::span<const SupportSlot> slot
   return faceMotion_.moved(r, U_, slots);
 }
 
-bool SleepingPairs::rerestFace(std::size_t r, std::span<const SupportSlot> slots) {
+bool SleepingPairs::retestFace(std::size_t r, std::span<const SupportSlot> slots) {
   const FarFace& f = farFaces_[r];
   const double top = slabTopAt(f, false);
   double slack = kInfinity;
@@ -155,15 +155,15 @@ bool SleepingPairs::rerestFace(std::size_t r, std::span<const SupportSlot> slots
     double bound = 0.0;
     ++farTests_;
     if (!sleeperBound(p, f, top, false, bound)) return false;
-    slack = std::min(slack, restSlack(bound, p.distance, p.X));
+    slack = std::min(slack, farSlack(bound, p.distance, p.X));
   }
-  startRest(r, slack / kBoundLipschitz, slots);  // measured from here on
+  deferFace(r, slack / kBoundLipschitz, slots);  // measured from here on
   return true;
 }
 
-void SleepingPairs::wakeFace(std::size_t r) {
+void SleepingPairs::endDeferral(std::size_t r) {
   // The committed positions are within the face's horizon (the displacements the checks saw:
-  // beginSteps lets no face rest under an integrator that checks at others), so every pair is
+  // beginSteps defers no test under an integrator that checks at others), so every pair is
   // far there, and its bound there is the gap the check of every step would have committed.
   const FarFace& f = farFaces_[r];
   const double top = slabTopAt(f, true);
@@ -171,13 +171,13 @@ void SleepingPairs::wakeFace(std::size_t r) {
     const PairLink& p = pairs_[i];
     double bound = 0.0;
     sleeperBound(p, f, top, true, bound);
-    p.far->setSettledGap(bound);
-    domain_.setDormant(p.domainIndex, false);
+    p.far->setGapInBothStates(bound);
+    domain_.setStateKept(p.domainIndex, false);
   }
   faceHorizon_[r] = -kInfinity;
 }
 
-std::size_t SleepingPairs::restingFaces() const {
+std::size_t SleepingPairs::deferredFaces() const {
   return static_cast<std::size_t>(std::count_if(faceHorizon_.begin(), faceHorizon_.end(),
                                                 [](double h) { return h > -kInfinity; }));
 }
@@ -191,17 +191,17 @@ void SleepingPairs::beginSteps(bool observeAll) {
 
 void SleepingPairs::endSteps() {
   for (std::size_t r = 0; r < faceHorizon_.size(); ++r)
-    if (faceHorizon_[r] > -kInfinity) wakeFace(r);
+    if (faceHorizon_[r] > -kInfinity) endDeferral(r);
   haveU_ = false;
 }
 
 void SleepingPairs::markObserved() {
-  mayRest_ = false;
+  mayDefer_ = false;
   for (std::size_t i = 0; i < pairs_.size(); ++i) {
     PairLink& p = pairs_[i];
     p.observed =
         observeAll_ || std::binary_search(observedTags_.begin(), observedTags_.end(), tags_[i]);
-    mayRest_ = mayRest_ || !p.observed;
+    mayDefer_ = mayDefer_ || !p.observed;
   }
 }
 
@@ -215,9 +215,9 @@ SleepingPairs::Check SleepingPairs::check(double dt, std::span<const SupportSlot
   // face's slab along its normal: its top is formed once per run of pairs against the face, and
   // each of its contactors costs its height above it. The pairs are taken in the domain's order.
   //
-  // Resting faces: a face whose pairs all sleep settled far and are read by nobody during the
-  // steps (beginSteps: no recorder names them, no contact stepping, no script after each step,
-  // more than one step, an integrator that checks at the committed displacements) is left alone
+  // Deferred tests: a face whose pairs all sleep far in both states and are read by nobody during
+  // the steps (beginSteps: no recorder names them, no contact stepping, no script after each step,
+  // more than one step, an integrator that checks at the committed displacements) is left untested
   // until its pairs' nodes could have moved far enough to bring one of them to its search distance:
   // how far they moved since the face's last exact test is bounded by the largest change since then
   // of the equations and support values their translations are formed from, and the face is due
@@ -227,22 +227,22 @@ SleepingPairs::Check SleepingPairs::check(double dt, std::span<const SupportSlot
   // since it was built could have closed the skin, Allen and Tildesley, Computer Simulation of
   // Liquids, 2nd ed. 2017, sec. 5.3). The face is tested exactly when its horizon is reached, so a
   // pair is woken at the same step as with the test of every step, and the results do not change. A
-  // resting pair is not committed (Domain::setDormant); its gap is formed at the committed
-  // positions when it is read again (wakeFace, endSteps).
+  // pair of a deferred face is not committed (Domain::setStateKept); its gap is formed at the
+  // committed positions when it is read again (endDeferral, endSteps).
   for (std::size_t r = 0; r < farFaces_.size(); ++r) {
     if (faceHorizon_[r] > -kInfinity) {
       if (faceMoved(r, slots) < faceHorizon_[r]) continue;  // far for sure
-      if (rerestFace(r, slots)) continue;
-      wakeFace(r);
+      if (retestFace(r, slots)) continue;
+      endDeferral(r);
     }
     const FarFace& f = farFaces_[r];
     double top = 0.0;
     bool topFormed = false;
-    bool mayRest = mayRest_;
+    bool mayDefer = mayDefer_;
     double slack = kInfinity;
     for (std::uint32_t i = f.first; i < f.end; ++i) {
       const PairLink& p = pairs_[i];
-      if (p.asleep) {
+      if (p.sleeping) {
         if (!topFormed) {
           top = slabTopAt(f, false);
           topFormed = true;
@@ -250,15 +250,15 @@ SleepingPairs::Check SleepingPairs::check(double dt, std::span<const SupportSlot
         double bound = 0.0;
         ++farTests_;
         if (sleeperBound(p, f, top, false, bound) && p.far->setFarTrial(bound, dt)) {
-          if (mayRest) {
-            mayRest = !p.observed && p.far->settledFar();
-            slack = std::min(slack, restSlack(bound, p.distance, p.X));
+          if (mayDefer) {
+            mayDefer = !p.observed && p.far->farInBothStates();
+            slack = std::min(slack, farSlack(bound, p.distance, p.X));
           }
           continue;
         }
       }
-      mayRest = false;
-      if (p.asleep) {
+      mayDefer = false;
+      if (p.sleeping) {
         // Near: its full update for this trial state; with force the step missed it.
         sleepWanted_[p.far] = false;
         if (wake(p.link)) return Check::RedoStep;
@@ -268,21 +268,21 @@ SleepingPairs::Check SleepingPairs::check(double dt, std::span<const SupportSlot
         if (result == Check::Unchanged) result = Check::PatternChange;
       }
     }
-    if (mayRest && f.end > f.first) startRest(r, slack / kBoundLipschitz, slots);
+    if (mayDefer && f.end > f.first) deferFace(r, slack / kBoundLipschitz, slots);
   }
   return result;
 }
 
 SleepingPairs::Carried SleepingPairs::beforeRebuild() {
   for (const PairLink& p : pairs_)  // pairs without a change keep their state
-    sleepWanted_.emplace(p.far, p.asleep);
+    sleepWanted_.emplace(p.far, p.sleeping);
   Carried carried;
   for (std::size_t r = 0; r < farFaces_.size(); ++r) {
     if (!(faceHorizon_[r] > -kInfinity)) continue;
     carried.faces.emplace(
         pairs_[farFaces_[r].first].far,
         Carried::Face{faceMotion_.save(r), faceHorizon_[r], farFaces_[r].end - farFaces_[r].first});
-    wakeFace(r);
+    endDeferral(r);
   }
   return carried;
 }
@@ -294,10 +294,11 @@ void SleepingPairs::afterRebuild(const Carried& carried) {
     if (it == carried.faces.end()) continue;
     bool same = f.end - f.first == it->second.pairs;
     for (std::uint32_t i = f.first; i < f.end && same; ++i)
-      same = pairs_[i].asleep && !pairs_[i].observed;
+      same = pairs_[i].sleeping && !pairs_[i].observed;
     if (!same || !faceMotion_.restore(r, it->second.motion)) continue;
     faceHorizon_[r] = it->second.horizon;
-    for (std::uint32_t i = f.first; i < f.end; ++i) domain_.setDormant(pairs_[i].domainIndex, true);
+    for (std::uint32_t i = f.first; i < f.end; ++i)
+      domain_.setStateKept(pairs_[i].domainIndex, true);
   }
 }
 

@@ -11,7 +11,7 @@
 
 #include "elements/FarPair.h"
 #include "tcl/analysis/ConstraintHandler.h"
-#include "tcl/analysis/MotionWatch.h"
+#include "tcl/analysis/MotionBound.h"
 #include "tcl/domain/Domain.h"
 
 namespace dabs::analysis {
@@ -22,9 +22,9 @@ namespace dabs::analysis {
 /// and out of the iterations' element updates, and this class checks it once per converged step
 /// by its distance bound alone (a few flops on its nodes' displacements). A sleeper found near is
 /// woken: the pattern is rebuilt before the next step, and when it would already carry force the
-/// step is redone with it awake. An awake pair falls asleep when it is beyond twice its search
+/// step is redone with it awake. An awake pair goes to sleep when it is beyond twice its search
 /// distance (hysteresis, so that a pair hovering at the distance does not rebuild the pattern
-/// step after step). Resting faces: see check().
+/// step after step). Deferred tests of a face: see check().
 ///
 /// The model (AnalysisModel) decides from wantsSleep() which pairs sleep in a new pattern, gives
 /// them to build() in the domain's order, and wakes the elements check() asks it to.
@@ -39,7 +39,7 @@ class SleepingPairs {
     elements::FarPair* far = nullptr;
     const domain::Node* contactor = nullptr;
     std::array<const domain::Node*, 4> face{};  ///< target face nodes, in the element's order
-    bool asleep = false;                        ///< left out of the pattern and the iterations
+    bool sleeping = false;                      ///< left out of the pattern and the iterations
     std::uint32_t domainIndex = 0;  ///< the element's position in the domain's tag order
   };
   /// Where the nodes' translations come from (their motion bound): per node dof its equation
@@ -52,7 +52,8 @@ class SleepingPairs {
 
   /// Whether the pair sleeps in the next pattern: as check() noted, else by its committed state.
   bool wantsSleep(const elements::FarPair& far) const;
-  /// Takes the pairs of a new pattern (in the domain's order); no face rests, no change noted.
+  /// Takes the pairs of a new pattern (in the domain's order); no face's test deferred, no change
+  /// noted.
   void build(std::vector<Pair> pairs, const DofSource& dofs);
 
   /// Outcome of check.
@@ -64,43 +65,43 @@ class SleepingPairs {
   /// trial states up to date, notes pairs to wake or to put to sleep. RedoStep when a sleeper
   /// would carry force in this trial state.
   Check check(double dt, std::span<const SupportSlot> slots, const Waker& wake);
-  /// The displacements (equation space) the trial state was formed from, what a resting face's
-  /// motion is measured on; copied.
+  /// The displacements (equation space) the trial state was formed from, what the motion of a face
+  /// whose test is deferred is measured on; copied.
   void setDisplacements(const Eigen::VectorXd& U);
 
   /// Start of a run of steps (analyze): which pairs are observed at every step (read by a
   /// recorder, or all of them with `observeAll`: contact stepping, a script after each step, and
-  /// wherever no face may rest: a single step, an integrator that checks the pairs at weighted
-  /// displacements). The others may rest: see check().
+  /// wherever no face's test may be deferred: a single step, an integrator that checks the pairs
+  /// at weighted displacements). The others' may: see check().
   void beginSteps(bool observeAll);
-  /// End of a run of steps: every resting pair's gap formed at its nodes' committed positions,
-  /// as the step-by-step check would have left it, and no pair rests any longer.
+  /// End of a run of steps: every deferred pair's gap formed at its nodes' committed positions,
+  /// as the step-by-step check would have left it, and no test is deferred any longer.
   void endSteps();
 
-  /// What a rebuild of the pattern carries over: the resting faces' motion bounds and horizons.
+  /// What a rebuild of the pattern carries over: the deferred faces' motion bounds and horizons.
   struct Carried {
     struct Face {
-      MotionWatch::Saved motion;
+      MotionBound::Saved motion;
       double horizon = 0.0;
       std::uint32_t pairs = 0;
     };
     std::map<const elements::FarPair*, Face> faces;  // by the face's first pair
   };
   /// Before the model rebuilds its pattern with the noted changes: pairs without a change keep
-  /// their state; every resting face's pairs get their gaps (a new pattern moves no node).
+  /// their state; every deferred face's pairs get their gaps (a new pattern moves no node).
   Carried beforeRebuild();
-  /// After build(): a face with the same pairs, all still asleep, watching the same equations,
-  /// rests again with its motion bound and horizon.
+  /// After build(): a face with the same pairs, all still sleeping, bounding the motion of the
+  /// same equations, has its test deferred again with its motion bound and horizon.
   void afterRebuild(const Carried& carried);
 
-  /// Pairs asleep in this pattern.
+  /// Pairs sleeping in this pattern.
   long sleeping() const noexcept { return sleeping_; }
-  /// Far tests of sleeping pairs made since construction (one per pair per check; a resting
+  /// Far tests of sleeping pairs made since construction (one per pair per check; a deferred
   /// face's pairs are not tested until its horizon is reached, and twice at the check where a
   /// pair of it wakes).
   long farTests() const noexcept { return farTests_; }
-  /// Target faces whose pairs rest (left alone: no check, no commit) at this moment.
-  std::size_t restingFaces() const;
+  /// Target faces whose test is deferred (no check, no commit of their pairs) at this moment.
+  std::size_t deferredFaces() const;
 
  private:
   // A pair as the once-a-step test reads it (compact, so that the test does not touch the
@@ -112,7 +113,7 @@ class SleepingPairs {
     double distance = 0.0;                        // search distance
     elements::FarPair* far = nullptr;
     std::uint32_t domainIndex = 0;
-    bool asleep = false;
+    bool sleeping = false;
     bool observed = false;  // read at every step (beginSteps)
   };
   // A run of consecutive pairs (in the domain's order) against one target face: the same four
@@ -134,22 +135,22 @@ class SleepingPairs {
   /// of the pair's own test, so the bound is the gap the pair reports, to the bit.
   static bool sleeperBound(const PairLink& p, const FarFace& f, double top, bool committed,
                            double& bound);
-  /// A resting face's bound on how far its nodes moved since its last exact test (infinity
+  /// A deferred face's bound on how far its nodes moved since its last exact test (infinity
   /// without the displacements).
   double faceMoved(std::size_t r, std::span<const SupportSlot> slots) const;
-  /// A face starts (or goes on) resting with horizon `reach` (how far its nodes may move): the
+  /// A face's test is deferred (again) with horizon `reach` (how far its nodes may move): the
   /// values of its equations and slots now, and the domain leaves its pairs alone.
-  void startRest(std::size_t r, double reach, std::span<const SupportSlot> slots);
-  /// A resting face whose horizon is reached: its pairs' exact test; true (and a new horizon)
+  void deferFace(std::size_t r, double reach, std::span<const SupportSlot> slots);
+  /// A deferred face whose horizon is reached: its pairs' exact test; true (and a new horizon)
   /// when every one is still far.
-  bool rerestFace(std::size_t r, std::span<const SupportSlot> slots);
-  /// A face stops resting: its pairs' gaps formed at the committed positions (as the check of
-  /// every step would have committed them) and the domain commits them again.
-  void wakeFace(std::size_t r);
+  bool retestFace(std::size_t r, std::span<const SupportSlot> slots);
+  /// A face's test is no longer deferred: its pairs' gaps formed at the committed positions (as the
+  /// check of every step would have committed them) and the domain commits them again.
+  void endDeferral(std::size_t r);
   /// Per face the equations and slots its nodes' translations (contactors and face) are formed
-  /// from (faceMotion_); no face rests.
-  void buildWatch(const DofSource& dofs);
-  /// Each pair's `observed` (observeAll_, observedTags_) and mayRest_.
+  /// from (faceMotion_); no face's test deferred.
+  void buildMotionBounds(const DofSource& dofs);
+  /// Each pair's `observed` (observeAll_, observedTags_) and mayDefer_.
   void markObserved();
 
   domain::Domain& domain_;
@@ -159,13 +160,13 @@ class SleepingPairs {
   long sleeping_ = 0;
   long farTests_ = 0;
   std::map<const elements::FarPair*, bool> sleepWanted_;  // pairs to wake (false) or put to sleep
-  // Resting faces (see check): per face of farFaces_ the bound on how far its nodes may move from
+  // Deferred tests (see check): per face of farFaces_ the bound on how far its nodes may move from
   // their positions at its last exact test before a pair of it could be within its search
-  // distance (-infinity when it does not rest), and the motion of its nodes (a MotionWatch group
-  // per face: its four nodes and its contactors).
+  // distance (-infinity when its test is not deferred), and the motion of its nodes (a MotionBound
+  // group per face: its four nodes and its contactors).
   std::vector<double> faceHorizon_;
-  MotionWatch faceMotion_;
-  bool mayRest_ = false;  // some pair is not observed
+  MotionBound faceMotion_;
+  bool mayDefer_ = false;  // some pair is not observed
   bool observeAll_ = true;
   std::vector<int> observedTags_;  // elements read by recorders (sorted)
   // The displacements of the last trial state (setDisplacements), valid while haveU_: a copy,

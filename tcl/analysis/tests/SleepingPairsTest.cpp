@@ -6,10 +6,10 @@
 // distance from the contactor to the bilinear face: on random configurations every sleeper gets the
 // verdict and the bound of its own test to the bit, and no pair found far is within its search
 // distance. Then a contactor that crosses the search distance and the face in one step while the
-// other pairs of its face stay far is woken and the step is redone. Resting faces (a face whose
+// other pairs of its face stay far is woken and the step is redone. Deferred tests (a face whose
 // pairs all sleep is left alone until the motion of their nodes could bring one to its search
 // distance): on random walks of the nodes, pairs wake at the same checks as with the test of
-// every step, with fewer tests, and are left out of the domain's commit while they rest.
+// every step, with fewer tests, and are left out of the domain's commit while deferred.
 #include <gtest/gtest.h>
 
 #include <array>
@@ -132,7 +132,7 @@ class Faces {
 };
 
 /// SleepingPairs over a model without an AnalysisModel: every node dof one equation (nodes in
-/// tag order), each pair asleep as SleepingPairs::wantsSleep says at every rebuild, and a waker
+/// tag order), each pair sleeping as SleepingPairs::wantsSleep says at every rebuild, and a waker
 /// that updates the pair from its nodes' trial displacements (velocities and accelerations zero,
 /// time and step 0) and tells whether it carries force.
 class Harness {
@@ -155,7 +155,7 @@ class Harness {
   int equationOf(int tag, int dof) const { return first_.at(tag) + dof; }
   long sleepingPairs() const { return sleepers_.sleeping(); }
   long farTests() const { return sleepers_.farTests(); }
-  std::size_t restingFaces() const { return sleepers_.restingFaces(); }
+  std::size_t deferredFaces() const { return sleepers_.deferredFaces(); }
   long elementUpdates() const { return updates_; }
   void beginSteps(bool observeAll) { sleepers_.beginSteps(observeAll); }
   void endSteps() { sleepers_.endSteps(); }
@@ -170,13 +170,13 @@ class Harness {
 
   /// One step as the analysis makes it: nodes' trial displacements from U, the awake pairs
   /// updated, the sleepers checked, the domain committed and the pairs rebuilt when some woke or
-  /// fell asleep.
+  /// went to sleep.
   SleepingPairs::Check step(const Eigen::VectorXd& U) {
     for (auto& [tag, node] : model_.domain().nodes())
       for (int d = 0; d < node.ndf(); ++d) node.disp(d) = U(equationOf(tag, d));
     sleepers_.setDisplacements(U);
-    for (std::size_t i = 0; i < asleep_.size(); ++i)
-      if (!asleep_[i]) {
+    for (std::size_t i = 0; i < sleeping_.size(); ++i)
+      if (!sleeping_[i]) {
         EXPECT_TRUE(ok(update(i)));
       }
     const auto result = checkSleepingPairs();
@@ -195,7 +195,7 @@ class Harness {
     for (const auto& [tag, e] : model_.domain().elements())
       domainIndex.emplace(e.get(), static_cast<std::uint32_t>(domainIndex.size()));
     std::vector<SleepingPairs::Pair> pairs;
-    asleep_.clear();
+    sleeping_.clear();
     for (std::size_t i = 0; i < model_.pairs().size(); ++i) {
       const Pair& q = model_.pairs()[i];
       SleepingPairs::Pair p;
@@ -204,9 +204,9 @@ class Harness {
       p.far = q.element->farPair();
       p.contactor = &model_.domain().node(q.contactor);
       for (std::size_t j = 0; j < 4; ++j) p.face[j] = &model_.domain().node(q.face[j]);
-      p.asleep = sleepers_.wantsSleep(*p.far);
+      p.sleeping = sleepers_.wantsSleep(*p.far);
       p.domainIndex = domainIndex.at(q.element);
-      asleep_.push_back(p.asleep);
+      sleeping_.push_back(p.sleeping);
       pairs.push_back(p);
     }
     sleepers_.build(
@@ -233,7 +233,7 @@ class Harness {
   std::map<int, int> first_;
   std::vector<int> directEq_;
   std::vector<std::vector<DofTerm>> terms_;
-  std::vector<char> asleep_;
+  std::vector<char> sleeping_;
   int neq_ = 0;
   long updates_ = 0;
 };
@@ -318,7 +318,7 @@ TEST(SleepingPairsTest, ContactorCrossingTheFaceInOneStepIsWokenAndTheStepRedone
   EXPECT_EQ(analysis.checkSleepingPairs(), SleepingPairs::Check::PatternChange);
   // The face rising 0.16 m under contactors that stay put, 0.04 m above its plane now: the four
   // over the face are near (one of them with a search distance of 0.1 m, and one that names the
-  // face's nodes in another order) and are woken; the two beyond its edges stay asleep, since the
+  // face's nodes in another order) and are woken; the two beyond its edges stay sleeping, since the
   // face's bounding sphere (centre (1, 0.5, 0.16), radius sqrt(1.25) = 1.1180 m) is
   // sqrt(1.2^2 + 0.04^2) - 1.1180 = 0.083 m from (2.2, 0.5, 0.2) and
   // sqrt(1.1^2 + 0.4^2 + 0.04^2) - 1.1180 = 0.053 m from (-0.1, 0.9, 0.2), beyond 0.05 m.
@@ -344,11 +344,11 @@ struct ReadingRecorder final : domain::Recorder {
   }
 };
 
-TEST(SleepingPairsTest, RestingFacesWakeAtTheSameChecksWithFewerTests) {
-  // Two copies of the model walked alike: in one the faces may rest, in the other every sleeper
-  // is tested at every check (as when every pair is observed).
-  Faces resting, testedEachStep;
-  Harness a(resting);
+TEST(SleepingPairsTest, DeferredFacesWakeAtTheSameChecksWithFewerTests) {
+  // Two copies of the model walked alike: in one the faces' tests may be deferred, in the other
+  // every sleeper is tested at every check (as when every pair is observed).
+  Faces deferring, testedEachStep;
+  Harness a(deferring);
   Harness b(testedEachStep);
   a.beginSteps(false);
   b.beginSteps(true);
@@ -357,11 +357,12 @@ TEST(SleepingPairsTest, RestingFacesWakeAtTheSameChecksWithFewerTests) {
   std::mt19937 rng(1124);
   std::normal_distribution<double> jitter(0.0, 0.0002);
   Eigen::VectorXd U = Eigen::VectorXd::Zero(neq);
-  int wakes = 0, rested = 0;
+  int wakes = 0, deferred = 0;
   for (int k = 0; k < 600; ++k) {
     // Faces shake a little; contactors shake, sink towards their faces for 150 checks and rise
-    // for 150, twice (so pairs wake, fall asleep beyond twice their distance, and rest again).
-    for (auto& [tag, node] : resting.domain().nodes()) {
+    // for 150, twice (so pairs wake, go to sleep beyond twice their distance, and are deferred
+    // again).
+    for (auto& [tag, node] : deferring.domain().nodes()) {
       const bool contactor = tag % 100 > 10;
       for (int d = 0; d < 3; ++d) {
         const int eq = a.equationOf(tag, d);
@@ -382,27 +383,27 @@ TEST(SleepingPairsTest, RestingFacesWakeAtTheSameChecksWithFewerTests) {
     const auto rb = b.step(U);
     ASSERT_EQ(ra, rb) << "check " << k;
     if (ra == SleepingPairs::Check::PatternChange) ++wakes;
-    rested += a.restingFaces() > 0 ? 1 : 0;
-    EXPECT_EQ(b.restingFaces(), 0u);
+    deferred += a.deferredFaces() > 0 ? 1 : 0;
+    EXPECT_EQ(b.deferredFaces(), 0u);
     EXPECT_EQ(a.sleepingPairs(), b.sleepingPairs()) << "check " << k;
   }
   a.endSteps();
   b.endSteps();
   EXPECT_EQ(a.elementUpdates(), b.elementUpdates());
-  EXPECT_GT(wakes, 4);     // pairs woke and fell asleep again
-  EXPECT_GT(rested, 100);  // and faces rested for many checks
+  EXPECT_GT(wakes, 4);       // pairs woke and went to sleep again
+  EXPECT_GT(deferred, 100);  // and faces were deferred for many checks
   // about half the tests on this restless walk (every node jitters, contactors dive)
   EXPECT_LT(a.farTests(), 0.7 * static_cast<double>(b.farTests()));
   // After the steps every pair reads as with the test of every step, to the bit.
-  for (std::size_t i = 0; i < resting.pairs().size(); ++i) {
-    const auto& sa = resting.trial(resting.pairs()[i]);
+  for (std::size_t i = 0; i < deferring.pairs().size(); ++i) {
+    const auto& sa = deferring.trial(deferring.pairs()[i]);
     const auto& sb = testedEachStep.trial(testedEachStep.pairs()[i]);
     EXPECT_EQ(sa.gap, sb.gap) << "pair " << i;
     EXPECT_EQ(sa.status, sb.status) << "pair " << i;
   }
 }
 
-TEST(SleepingPairsTest, RestingPairsAreNotCommittedAndRecordedPairsNeverRest) {
+TEST(SleepingPairsTest, PairsOfDeferredFacesAreNotCommittedAndRecordedPairsNeverDeferred) {
   Faces model(1);
   auto reader = std::make_unique<ReadingRecorder>();
   reader->tags = {1005};  // the contactor that names its face's nodes in another order: a run
@@ -410,21 +411,23 @@ TEST(SleepingPairsTest, RestingPairsAreNotCommittedAndRecordedPairsNeverRest) {
   Harness analysis(model);
   analysis.beginSteps(false);
   Eigen::VectorXd U = Eigen::VectorXd::Zero(analysis.numEquations());
-  // A pair rests once it is settled far (its committed state far, after one check and commit).
+  // A face's test is deferred once its pairs are far in both states (its committed state far, after
+  // one check and commit).
   analysis.step(U);
   analysis.step(U);
-  // Five pairs against the face as given rest; the recorded one, alone in its run, does not.
-  EXPECT_EQ(analysis.restingFaces(), 1u);
+  // Five pairs against the face as given are deferred; the recorded one, alone in its run, does
+  // not.
+  EXPECT_EQ(analysis.deferredFaces(), 1u);
   const long tests = analysis.farTests();
   const Pair& first = model.pairs()[0];
   auto* pair = dynamic_cast<NodeToSurfaceContact3d<3>*>(first.element);
   ASSERT_NE(pair, nullptr);
   const double committedGap = pair->committedState().gap;
   // The contactors rise 1 mm a check, the face stays: after k checks the motion bound is
-  // sqrt(3) k mm, and the resting run's horizon, its smallest slack (0.2 m high, search distance
+  // sqrt(3) k mm, and the deferred run's horizon, its smallest slack (0.2 m high, search distance
   // 0.1 m for one of its pairs) over the far bound's Lipschitz constant 4, is reached at
   // 0.025 / (sqrt(3) 1e-3) = 14.4 checks. Until then only the recorded pair is tested, and the
-  // resting pairs' committed gaps stay as they were although their trial gaps would change.
+  // deferred pairs' committed gaps stay as they were although their trial gaps would change.
   const int expectedAlone =
       static_cast<int>(std::ceil((kHeight - 2.0 * kSearch) / 4.0 / (std::sqrt(3.0) * 1e-3))) - 1;
   int checksAlone = 0;
@@ -433,7 +436,7 @@ TEST(SleepingPairsTest, RestingPairsAreNotCommittedAndRecordedPairsNeverRest) {
       if (tag % 100 > 10) U(analysis.equationOf(tag, 2)) = 0.001 * (k + 1);
     const long before = analysis.farTests();
     analysis.step(U);
-    EXPECT_EQ(pair->committedState().gap, committedGap) << "a resting pair is not committed";
+    EXPECT_EQ(pair->committedState().gap, committedGap) << "a deferred pair is not committed";
     if (analysis.farTests() - before > 1) {  // the horizon: the run's five pairs and the recorded
       EXPECT_EQ(analysis.farTests() - before, 6);
       break;
@@ -441,7 +444,7 @@ TEST(SleepingPairsTest, RestingPairsAreNotCommittedAndRecordedPairsNeverRest) {
     ++checksAlone;  // the recorded pair alone
   }
   EXPECT_EQ(checksAlone, expectedAlone);
-  EXPECT_EQ(analysis.restingFaces(), 1u);  // far still: it rests on
+  EXPECT_EQ(analysis.deferredFaces(), 1u);  // far still: deferred again
   EXPECT_GT(analysis.farTests(), tests);
   // At the end its gap is its own test's bound at the committed positions.
   analysis.endSteps();
@@ -449,7 +452,7 @@ TEST(SleepingPairsTest, RestingPairsAreNotCommittedAndRecordedPairsNeverRest) {
   ASSERT_TRUE(model.farTest(first).isFar(model.translations(first), bound));
   EXPECT_EQ(pair->committedState().gap, bound);
   EXPECT_EQ(pair->trialState().gap, bound);
-  EXPECT_EQ(analysis.restingFaces(), 0u);
+  EXPECT_EQ(analysis.deferredFaces(), 0u);
 }
 
 }  // namespace

@@ -11,11 +11,11 @@
 namespace dabs::analysis {
 
 /// Bounds how far the nodes of a group moved since the group's snapshot, from the equations and
-/// support slots their translations are formed from (the resting faces of AnalysisModel's
+/// support slots their translations are formed from (the deferred faces of SleepingPairs:
 /// sleeping contact pairs: a group is a face's nodes and its contactors). A translation formed as
 /// sum c_i x_i over equations and slots moved by at most sum |c_i| times the largest change of
 /// its x_i, and a node (three translations) by sqrt(3) times the largest of those.
-class MotionWatch {
+class MotionBound {
  public:
   /// Forgets every group.
   void clear();

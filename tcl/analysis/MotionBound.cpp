@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-#include "tcl/analysis/MotionWatch.h"
+#include "tcl/analysis/MotionBound.h"
 
 #include <algorithm>
 #include <cmath>
@@ -7,7 +7,7 @@
 
 namespace dabs::analysis {
 
-void MotionWatch::clear() {
+void MotionBound::clear() {
   groups_.clear();
   eqs_.clear();
   slots_.clear();
@@ -15,20 +15,20 @@ void MotionWatch::clear() {
   slotValues_.clear();
 }
 
-void MotionWatch::beginGroup() {
+void MotionBound::beginGroup() {
   Group g;
   g.eqBegin = g.eqEnd = static_cast<std::uint32_t>(eqs_.size());
   g.slotBegin = g.slotEnd = static_cast<std::uint32_t>(slots_.size());
   groups_.push_back(g);
 }
 
-void MotionWatch::addEquation(int eq) {
+void MotionBound::addEquation(int eq) {
   Group& g = groups_.back();
   eqs_.push_back(eq);
   g.gainEq = std::max(g.gainEq, 1.0);
 }
 
-void MotionWatch::addTranslation(std::span<const DofTerm> terms) {
+void MotionBound::addTranslation(std::span<const DofTerm> terms) {
   Group& g = groups_.back();
   double eqGain = 0.0, slotGain = 0.0;
   for (const DofTerm& t : terms) {
@@ -44,7 +44,7 @@ void MotionWatch::addTranslation(std::span<const DofTerm> terms) {
   g.gainSlot = std::max(g.gainSlot, slotGain);
 }
 
-void MotionWatch::endGroup() {
+void MotionBound::endGroup() {
   Group& g = groups_.back();
   auto unique = [](std::vector<int>& v, std::uint32_t begin) {
     std::sort(v.begin() + begin, v.end());
@@ -57,7 +57,7 @@ void MotionWatch::endGroup() {
   slotValues_.resize(slots_.size(), 0.0);
 }
 
-void MotionWatch::snapshot(std::size_t gi, const Eigen::VectorXd& U,
+void MotionBound::snapshot(std::size_t gi, const Eigen::VectorXd& U,
                            std::span<const SupportSlot> slots) {
   const Group& g = groups_[gi];
   for (std::uint32_t k = g.eqBegin; k < g.eqEnd; ++k) eqValues_[k] = U(eqs_[k]);
@@ -65,7 +65,7 @@ void MotionWatch::snapshot(std::size_t gi, const Eigen::VectorXd& U,
     slotValues_[k] = slots[static_cast<std::size_t>(slots_[k])].disp;
 }
 
-double MotionWatch::moved(std::size_t gi, const Eigen::VectorXd& U,
+double MotionBound::moved(std::size_t gi, const Eigen::VectorXd& U,
                           std::span<const SupportSlot> slots) const {
   constexpr double kInfinity = std::numeric_limits<double>::infinity();
   const Group& g = groups_[gi];
@@ -88,7 +88,7 @@ double MotionWatch::moved(std::size_t gi, const Eigen::VectorXd& U,
   return finite ? bound : kInfinity;
 }
 
-MotionWatch::Saved MotionWatch::save(std::size_t gi) const {
+MotionBound::Saved MotionBound::save(std::size_t gi) const {
   const Group& g = groups_[gi];
   return Saved{{eqs_.begin() + g.eqBegin, eqs_.begin() + g.eqEnd},
                {slots_.begin() + g.slotBegin, slots_.begin() + g.slotEnd},
@@ -98,7 +98,7 @@ MotionWatch::Saved MotionWatch::save(std::size_t gi) const {
                {slotValues_.begin() + g.slotBegin, slotValues_.begin() + g.slotEnd}};
 }
 
-bool MotionWatch::restore(std::size_t gi, const Saved& saved) {
+bool MotionBound::restore(std::size_t gi, const Saved& saved) {
   const Group& g = groups_[gi];
   if (!std::equal(saved.eqs.begin(), saved.eqs.end(), eqs_.begin() + g.eqBegin,
                   eqs_.begin() + g.eqEnd) ||

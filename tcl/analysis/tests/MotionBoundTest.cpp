@@ -1,11 +1,11 @@
 // SPDX-License-Identifier: MIT
-// The motion bound of resting contact faces: for nodes whose translations are combinations of
-// equations and support slots (a free dof, an equalDOF, a rigid link's lever arms, an imposed
-// support motion), the bound is never below how far a node actually moved since the snapshot
-// (the displacement formed from the terms directly, on random changes), it is sqrt(3) times
-// the change for a node that moves along one free dof, a non-finite change gives no bound, and a
-// snapshot is carried over a rebuild only when the terms are the same.
-#include "tcl/analysis/MotionWatch.h"
+// The motion bound of contact faces whose test is deferred: for nodes whose translations are
+// combinations of equations and support slots (a free dof, an equalDOF, a rigid link's lever arms,
+// an imposed support motion), the bound is never below how far a node actually moved since the
+// snapshot (the displacement formed from the terms directly, on random changes), it is sqrt(3)
+// times the change for a node that moves along one free dof, a non-finite change gives no bound,
+// and a snapshot is carried over a rebuild only when the terms are the same.
+#include "tcl/analysis/MotionBound.h"
 
 #include <gtest/gtest.h>
 
@@ -30,7 +30,7 @@ Eigen::Vector3d translation(const NodeTerms& node, const Eigen::VectorXd& U,
   return x;
 }
 
-TEST(MotionWatchTest, BoundIsNeverBelowTheMotionOfAnyNode) {
+TEST(MotionBoundTest, BoundIsNeverBelowTheMotionOfAnyNode) {
   // Equations 0..8: a centre node's translations (0..2) and rotations (3..5), a free node (6..8).
   // Slot 0: an imposed support motion.
   std::vector<NodeTerms> nodes;
@@ -40,7 +40,7 @@ TEST(MotionWatchTest, BoundIsNeverBelowTheMotionOfAnyNode) {
                    {{1, 1.0}, {5, 2.0}, {3, -1.0}},                  // uy + tz rx - tx rz
                    {{2, 1.0}, {3, -7.5}, {4, -2.0}}});               // uz + tx ry - ty rx
   nodes.push_back({{{0, 1.0}}, {{1, 1.0}}, {{-1, 1.0}, {2, 0.5}}});  // equalDOF, a support
-  MotionWatch watch;
+  MotionBound watch;
   watch.beginGroup();
   for (const NodeTerms& n : nodes)
     for (const auto& t : n) watch.addTranslation(t);
@@ -70,8 +70,8 @@ TEST(MotionWatchTest, BoundIsNeverBelowTheMotionOfAnyNode) {
   EXPECT_GT(tightest, 0.05);  // and not a useless bound
 }
 
-TEST(MotionWatchTest, OneFreeDofGivesSqrtThreeTimesItsChangeAndNonFiniteGivesNoBound) {
-  MotionWatch watch;
+TEST(MotionBoundTest, OneFreeDofGivesSqrtThreeTimesItsChangeAndNonFiniteGivesNoBound) {
+  MotionBound watch;
   watch.beginGroup();
   for (int eq = 0; eq < 3; ++eq) watch.addEquation(eq);
   watch.endGroup();
@@ -85,8 +85,8 @@ TEST(MotionWatchTest, OneFreeDofGivesSqrtThreeTimesItsChangeAndNonFiniteGivesNoB
   EXPECT_EQ(watch.moved(0, U, slots), std::numeric_limits<double>::infinity());
 }
 
-TEST(MotionWatchTest, SnapshotCarriedOnlyToTheSameTerms) {
-  MotionWatch watch;
+TEST(MotionBoundTest, SnapshotCarriedOnlyToTheSameTerms) {
+  MotionBound watch;
   watch.beginGroup();
   watch.addEquation(4);
   watch.addEquation(2);
@@ -94,8 +94,8 @@ TEST(MotionWatchTest, SnapshotCarriedOnlyToTheSameTerms) {
   Eigen::VectorXd U = Eigen::VectorXd::Constant(6, 1.0);
   const std::vector<SupportSlot> slots;
   watch.snapshot(0, U, slots);
-  const MotionWatch::Saved saved = watch.save(0);
-  MotionWatch same;
+  const MotionBound::Saved saved = watch.save(0);
+  MotionBound same;
   same.beginGroup();
   same.addEquation(2);
   same.addEquation(4);
@@ -103,7 +103,7 @@ TEST(MotionWatchTest, SnapshotCarriedOnlyToTheSameTerms) {
   ASSERT_TRUE(same.restore(0, saved));
   U(4) = 1.5;
   EXPECT_NEAR(same.moved(0, U, slots), std::sqrt(3.0) * 0.5, 1e-9);
-  MotionWatch other;
+  MotionBound other;
   other.beginGroup();
   other.addEquation(3);
   other.endGroup();
