@@ -6,7 +6,7 @@
 #include <vector>
 
 #include "materials/InputError.h"
-#include "tcl/analysis/AnalysisBuilder.h"
+#include "tcl/analysis/driver/AnalysisBuilder.h"
 
 namespace dabs::tcl {
 

@@ -15,7 +15,7 @@
 #include "contact/NodeToSurfaceContact3d.h"
 #include "materials/GapSpring.h"
 #include "materials/InputError.h"
-#include "tcl/analysis/AnalysisBuilder.h"
+#include "tcl/analysis/driver/AnalysisBuilder.h"
 #include "tcl/commands/Registry.h"
 #include "tcl/commands/TclResult.h"
 

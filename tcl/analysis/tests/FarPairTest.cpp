@@ -17,8 +17,8 @@
 #include "elements/ContactPredictor.h"
 #include "elements/Element.h"
 #include "elements/FarPair.h"
-#include "tcl/analysis/AnalysisModel.h"
-#include "tcl/analysis/ContactStepping.h"
+#include "tcl/analysis/model/AnalysisModel.h"
+#include "tcl/analysis/driver/ContactStepping.h"
 #include "tcl/domain/Domain.h"
 
 namespace dabs::analysis {

@@ -5,7 +5,7 @@
 // snapshot (the displacement formed from the terms directly, on random changes), it is sqrt(3)
 // times the change for a node that moves along one free dof, a non-finite change gives no bound,
 // and a snapshot is carried over a rebuild only when the terms are the same.
-#include "tcl/analysis/MotionBound.h"
+#include "tcl/analysis/model/MotionBound.h"
 
 #include <gtest/gtest.h>
 

@@ -1,4 +1,6 @@
 // SPDX-License-Identifier: MIT
+// Over 400 lines: the model of faces and contactors and the harness that stands in for
+// AnalysisModel are written here, beside the cases that share them.
 // SleepingPairs, driven by a harness written here in place of AnalysisModel (every node dof an
 // equation; the pairs updated from their nodes). Its once-a-step far test, made per target face
 // (the face's slab top formed once for every pair against it), against the pair's own test
@@ -20,7 +22,7 @@
 #include <vector>
 
 #include "contact/NodeToSurfaceContact3d.h"
-#include "tcl/analysis/SleepingPairs.h"
+#include "tcl/analysis/model/SleepingPairs.h"
 #include "tcl/domain/Domain.h"
 #include "tcl/domain/Recorder.h"
 
