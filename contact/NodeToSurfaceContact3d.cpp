@@ -98,29 +98,29 @@ void NodeToSurfaceContact3d<Ndf>::clearForces() {
 template <int Ndf>
 void NodeToSurfaceContact3d<Ndf>::commitState() {
   releaseHold();
-  if (settledFar_) {  // the states differ in the gap alone
+  if (farInBothStates_) {  // the states differ in the gap alone
     committed_.gap = trial_.gap;
     return;
   }
   committed_ = trial_;
-  settledFar_ = forcesZero_ && quietFar(committed_);
+  farInBothStates_ = forcesZero_ && quietFar(committed_);
 }
 
 template <int Ndf>
 void NodeToSurfaceContact3d<Ndf>::revertToLastCommit() {
   releaseHold();
-  if (settledFar_) {
+  if (farInBothStates_) {
     trial_.gap = committed_.gap;
     return;
   }
   trial_ = committed_;
-  settledFar_ = forcesZero_ && quietFar(committed_);
+  farInBothStates_ = forcesZero_ && quietFar(committed_);
 }
 
 template <int Ndf>
 void NodeToSurfaceContact3d<Ndf>::revertToStart() {
   trial_ = committed_ = initial_;
-  settledFar_ = false;
+  farInBothStates_ = false;
   releaseHold();
   forcesZero_ = false;
   clearForces();
@@ -181,7 +181,7 @@ bool NodeToSurfaceContact3d<Ndf>::hasNonSymmetricTangent() const {
 
 template <int Ndf>
 Status NodeToSurfaceContact3d<Ndf>::update(const elements::Kinematics& kin) {
-  settledFar_ = false;
+  farInBothStates_ = false;
   natural_ = Branches{};
   springAgrees_ = slideAgrees_ = approaching_ = false;
   NodeToSurfaceState t = committed_;
@@ -492,7 +492,8 @@ bool NodeToSurfaceContact3d<Ndf>::updateIfFar(const std::array<Eigen::Vector3d, 
 template <int Ndf>
 bool NodeToSurfaceContact3d<Ndf>::setFarTrialFromCommitted(double bound, double dt) {
   if (!search_.enabled()) return false;
-  if (settledFar_) {  // the step of a far pair from a far committed state: the gap alone changes
+  if (farInBothStates_) {  // the step of a far pair from a far committed state: the gap alone
+                           // changes
     trial_.gap = bound;
     return true;
   }

@@ -172,8 +172,8 @@ class NodeToSurfaceContact3d : public elements::FixedSizeElement<5, Ndf, 0u>,
     return Base::zero();
   }
 
-  /// While the pair is settled far (see settledFar_) the trial state differs from the committed
-  /// one in the gap alone, so commit and revert copy the gap.
+  /// While the pair is far in both states (see farInBothStates_) the trial state differs from the
+  /// committed one in the gap alone, so commit and revert copy the gap.
   void commitState() override;
   void revertToLastCommit() override;
   void revertToStart() override;
@@ -209,10 +209,10 @@ class NodeToSurfaceContact3d : public elements::FixedSizeElement<5, Ndf, 0u>,
   /// The second half of updateIfFar, for a pair whose far test (farTest()) the caller made: sets
   /// the trial state of a far pair with distance bound `bound` and returns true, or changes
   /// nothing and returns false when the step must be evaluated (a release step). Without a
-  /// search distance: false. Inline for the step of a settled far pair (the gap alone changes),
-  /// which is what every sleeping pair's step takes.
+  /// search distance: false. Inline for the step of a far in both states pair (the gap alone
+  /// changes), which is what every sleeping pair's step takes.
   bool setFarTrial(double bound, double dt) override {
-    if (settledFar_ && search_.enabled()) {
+    if (farInBothStates_ && search_.enabled()) {
       trial_.gap = bound;
       return true;
     }
@@ -231,13 +231,14 @@ class NodeToSurfaceContact3d : public elements::FixedSizeElement<5, Ndf, 0u>,
            trial_.gap > factor * search_.distance();
   }
   bool hasSearch() const noexcept { return search_.enabled(); }
-  /// True while the pair is settled far: its trial and committed states are far, quiet and equal
-  /// but for the gap (see settledFar_).
-  bool settledFar() const noexcept override { return settledFar_; }
-  /// Sets the gap of a settled far pair in both states to `bound` (the analysis forms it anew
-  /// for a pair it left alone for some steps); false, changing nothing, when not settled far.
-  bool setSettledGap(double bound) noexcept override {
-    if (!settledFar_) return false;
+  /// True while the pair is far in both states: its trial and committed states are far, quiet and
+  /// equal but for the gap (see farInBothStates_).
+  bool farInBothStates() const noexcept override { return farInBothStates_; }
+  /// Sets the gap of a far in both states pair in both states to `bound` (the analysis forms it
+  /// anew for a pair it left alone for some steps); false, changing nothing, when not far in both
+  /// states.
+  bool setGapInBothStates(double bound) noexcept override {
+    if (!farInBothStates_) return false;
     trial_.gap = committed_.gap = bound;
     return true;
   }
@@ -274,7 +275,7 @@ class NodeToSurfaceContact3d : public elements::FixedSizeElement<5, Ndf, 0u>,
   bool frictionHeld_ = false;      ///< held_.sliding is held (else the next contact update's)
   /// trial_ equals committed_ but for the gap, both quietFar, and the matrices are zero: set by a
   /// full commit or revert of such a state, cleared by every other write of trial_.
-  bool settledFar_ = false;
+  bool farInBothStates_ = false;
   ContactSearch search_;
   NodeToSurfaceState trial_{};
   NodeToSurfaceState committed_{};

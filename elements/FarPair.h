@@ -10,15 +10,16 @@
 namespace dabs::elements {
 
 /// What the analysis reads of an element that may sleep while far from contact (Element::farPair;
-/// AnalysisModel's sleeping pairs). Glossary, one name each across the libraries:
-/// - far: the element's distance lower bound ("bound") exceeds its search distance, so it adds
-///   no force and no stiffness;
-/// - sleeping pair: a far pair left out of the matrix pattern and the iterations, tested once per
-///   converged step by its bound alone;
-/// - settled far: trial and committed states far, quiet and equal but for the gap, so a step
-///   changes the gap alone;
-/// - resting face: a target face whose sleeping pairs the analysis leaves alone until their nodes
-///   could have moved far enough to bring one of them within its search distance.
+/// the analysis' SleepingPairs). The glossary of this optimisation: two terms, used with these
+/// meanings in the code, the READMEs, the docs and the results files.
+/// - far: the pair's distance lower bound ("bound") exceeds its search distance, so it adds no
+///   force and no stiffness. A pair "far in both states" has its trial and committed states far,
+///   quiet and equal but for the gap, so a step changes its gap alone.
+/// - sleeping: a far pair the analysis leaves out of the matrix pattern and the iterations and
+///   tests by its bound alone once per converged step. It wakes when found near. When every
+///   sleeping pair against a target face is far in both states and read by nobody, the face's
+///   test is deferred until the nodes could have moved far enough to bring one of its pairs
+///   within its search distance (its horizon); meanwhile the domain keeps their states.
 ///
 /// The pair is a contactor node (element node 1) against a four-node target face (element nodes
 /// 2 to 5), the shape the analysis' broad phase groups by face. The analysis holds pointers to
@@ -43,15 +44,16 @@ class FarPair {
   virtual bool committedFar() const = 0;
   /// True when the trial state is farther than `factor` x the search distance.
   virtual bool trialFarBeyond(double factor) const = 0;
-  /// True while the pair is settled far (see the glossary above).
-  virtual bool settledFar() const = 0;
+  /// True while the pair is far in both states (see the glossary above).
+  virtual bool farInBothStates() const = 0;
   /// Sets the trial state of a far pair whose far test the caller made (distance bound `bound`,
   /// step `dt`) and returns true; changes nothing and returns false when the step must be
   /// evaluated by update() (a release step, or no search distance).
   virtual bool setFarTrial(double bound, double dt) = 0;
-  /// Sets the gap of a settled far pair in both states to `bound` (the analysis forms it anew for
-  /// a pair it left alone for some steps); false, changing nothing, when not settled far.
-  virtual bool setSettledGap(double bound) = 0;
+  /// Sets the gap of a far in both states pair in both states to `bound` (the analysis forms it
+  /// anew for a pair it left alone for some steps); false, changing nothing, when not far in both
+  /// states.
+  virtual bool setGapInBothStates(double bound) = 0;
 
   /// Top of the slab the bilinear face lies in along the unit vector n: its highest corner,
   /// max_i n.x_i. Pairs that share a target face share it, so a broad phase over many contactors

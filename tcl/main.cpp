@@ -12,6 +12,7 @@
 
 #include "tcl/commands/CommandTable.h"
 #include "tcl/commands/SignalExit.h"
+#include "tcl/parallel/ParallelCommands.h"
 #include "tcl/viewer/ViewerPageTemplate.h"
 #ifdef DABS_MPI
 #include "tcl/parallel/mpi/MpiSession.h"
@@ -21,7 +22,9 @@ namespace {
 
 int appInit(Tcl_Interp* interp) {
   if (Tcl_Init(interp) != TCL_OK) return TCL_ERROR;
-  if (dabs::tcl::registerCommands(interp) != TCL_OK) return TCL_ERROR;
+  // getPID, getNP, send, recv, barrier, Bcast, ensemble: the program's own commands.
+  const std::span<const dabs::tcl::CommandEntry> parallel[] = {dabs::parallel::parallelCommands()};
+  if (dabs::tcl::registerCommands(interp, parallel) != TCL_OK) return TCL_ERROR;
 #ifdef DABS_MPI
   // dabs-mp: getPID, send, ensemble ... act for the processes mpirun started.
   if (dabs::parallel::attachMpi(interp) != TCL_OK) return TCL_ERROR;

@@ -607,8 +607,8 @@ TEST(NodeToSurfaceContact3dTest, SleepingPairWokenByApproachGivesTheAlwaysAwakeF
   TrialState s = zeroState(15);
   s.dt = dt;
   int farSteps = 0, wokenAt = -1;
-  bool asleep = sleeper->committedFar();
-  ASSERT_TRUE(asleep);
+  bool sleeping = sleeper->committedFar();
+  ASSERT_TRUE(sleeping);
   for (int i = 1; i <= 30; ++i) {
     const bool moving = i <= 20;  // 0.3 m closed and 0.01 m more in 20 steps, then at rest
     const Eigen::Vector3d u(0.001 * std::min(i, 20), 0.0, -0.0155 * std::min(i, 20));
@@ -620,16 +620,16 @@ TEST(NodeToSurfaceContact3dTest, SleepingPairWokenByApproachGivesTheAlwaysAwakeF
     std::array<Eigen::Vector3d, 5> un;
     for (std::size_t j = 0; j < 5; ++j) un[j] = s.u.segment<3>(3 * static_cast<int>(j));
     double bound = 0.0;
-    if (asleep && test.isFar(un, bound) && sleeper->setFarTrial(bound, dt)) {
+    if (sleeping && test.isFar(un, bound) && sleeper->setFarTrial(bound, dt)) {
       ++farSteps;
       EXPECT_GT(bound, p.search);
       EXPECT_EQ(sleeper->trialState().gap, bound);
     } else {
-      if (asleep) wokenAt = i;
-      asleep = false;
+      if (sleeping) wokenAt = i;
+      sleeping = false;
       ASSERT_TRUE(ok(sleeper->update(s.kinematics())));
     }
-    // Every step, awake or asleep: the same force, impulse and energies.
+    // Every step, awake or sleeping: the same force, impulse and energies.
     const NodeToSurfaceState& a = awake->trialState();
     const NodeToSurfaceState& b = sleeper->trialState();
     EXPECT_EQ(a.force, b.force) << "step " << i;
@@ -637,7 +637,7 @@ TEST(NodeToSurfaceContact3dTest, SleepingPairWokenByApproachGivesTheAlwaysAwakeF
     EXPECT_EQ(a.dampingEnergy, b.dampingEnergy) << "step " << i;
     EXPECT_EQ(a.frictionEnergy, b.frictionEnergy) << "step " << i;
     EXPECT_EQ(a.status, b.status) << "step " << i;
-    if (!asleep) {
+    if (!sleeping) {
       EXPECT_EQ(a.gap, b.gap) << "step " << i;
       EXPECT_EQ(a.stickXi, b.stickXi) << "step " << i;
       EXPECT_EQ(Eigen::VectorXd(awake->resistingForce()),
@@ -649,7 +649,7 @@ TEST(NodeToSurfaceContact3dTest, SleepingPairWokenByApproachGivesTheAlwaysAwakeF
     awake->commitState();
     sleeper->commitState();
   }
-  // Asleep while the gap exceeded 0.05 m (0.3 - 0.0155 i > 0.05 up to i = 16), woken after.
+  // Sleeping while the gap exceeded 0.05 m (0.3 - 0.0155 i > 0.05 up to i = 16), woken after.
   EXPECT_EQ(farSteps, 16);
   EXPECT_EQ(wokenAt, 17);
   EXPECT_NEAR(sleeper->committedState().gap, -0.01, 1e-12);
@@ -659,7 +659,7 @@ TEST(NodeToSurfaceContact3dTest, SleepingPairWokenByApproachGivesTheAlwaysAwakeF
 
 // A far pair whose committed state is far and quiet commits and reverts the gap alone; the result
 // is the state of the same pair updated the ordinary way.
-TEST(NodeToSurfaceContact3dTest, SettledFarPairCommitsAndRevertsItsGap) {
+TEST(NodeToSurfaceContact3dTest, PairFarInBothStatesCommitsAndRevertsItsGap) {
   NodeToSurfaceParams p = params(0.5, 0.4);
   p.search = 0.05;
   auto a = make(p, {0.5, 0.8, 0.3});
@@ -691,7 +691,7 @@ TEST(NodeToSurfaceContact3dTest, SettledFarPairCommitsAndRevertsItsGap) {
   EXPECT_EQ(b->committedState().impulse, a->committedState().impulse);
   EXPECT_EQ(*b->response(std::vector<std::string>{"gap"}),
             *a->response(std::vector<std::string>{"gap"}));
-  // Woken: from the settled state into contact, the same force as the ordinary pair.
+  // Woken: from far in both states into contact, the same force as the ordinary pair.
   setU(s, 0, {0.0, 0.0, -0.31});
   ASSERT_TRUE(ok(a->update(s.kinematics())));
   ASSERT_TRUE(ok(b->update(s.kinematics())));

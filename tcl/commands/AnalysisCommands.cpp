@@ -11,8 +11,8 @@
 #include <unistd.h>
 
 #include "materials/InputError.h"
-#include "tcl/analysis/AnalysisBuilder.h"
-#include "tcl/analysis/StopRequest.h"
+#include "tcl/analysis/driver/AnalysisBuilder.h"
+#include "tcl/analysis/driver/StopRequest.h"
 #include "tcl/commands/Registry.h"
 #include "tcl/commands/SignalExit.h"
 #include "tcl/commands/StrategyCommands.h"

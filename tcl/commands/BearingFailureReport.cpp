@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "tcl/analysis/AnalysisBuilder.h"
+#include "tcl/analysis/driver/AnalysisBuilder.h"
 
 namespace dabs::tcl {
 

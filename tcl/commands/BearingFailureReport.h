@@ -6,7 +6,7 @@
 #include <vector>
 
 #include "elements/link/YoshidaBearing3d.h"
-#include "tcl/analysis/StepObserver.h"
+#include "tcl/analysis/driver/StepObserver.h"
 
 namespace dabs::tcl {
 

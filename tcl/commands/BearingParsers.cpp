@@ -10,7 +10,7 @@
 #include "elements/link/YoshidaBearing3d.h"
 #include "materials/InputError.h"
 #include "materials/bearing/YoshidaBearingMaterial.h"
-#include "tcl/analysis/AnalysisBuilder.h"
+#include "tcl/analysis/driver/AnalysisBuilder.h"
 #include "tcl/commands/BearingFailureReport.h"
 #include "tcl/commands/Registry.h"
 

@@ -6,8 +6,7 @@
 #include <vector>
 
 #include "materials/InputError.h"
-#include "tcl/analysis/AnalysisBuilder.h"
-#include "tcl/parallel/ParallelCommands.h"
+#include "tcl/analysis/driver/AnalysisBuilder.h"
 
 namespace dabs::tcl {
 
@@ -56,27 +55,22 @@ void setError(Tcl_Interp* interp, const std::string& message) {
 
 }  // namespace
 
-// Every family of commands, in registration order: the one list both registerCommands and
-// commandEntries read, so another language's binding sees exactly the commands Tcl has.
-static std::array<std::span<const CommandEntry>, 11> commandFamilies() {
+// Every family of commands of this library, in registration order (a program's extra families
+// follow): the one list both registerCommands and commandEntries read, so another language's
+// binding sees exactly the commands Tcl has.
+static std::array<std::span<const CommandEntry>, 10> commandFamilies() {
   return {
-      modelCommands(),
-      loadCommands(),
-      analysisCommands(),
-      queryCommands(),
-      recorderCommands(),
-      materialTestCommands(),
-      sectionCommands(),
-      beamCommands(),
-      bearingCommands(),
-      contactCommands(),
-      dabs::parallel::parallelCommands(),  // getPID, getNP, send, recv, barrier, Bcast, ensemble
+      modelCommands(),    loadCommands(),         analysisCommands(), queryCommands(),
+      recorderCommands(), materialTestCommands(), sectionCommands(),  beamCommands(),
+      bearingCommands(),  contactCommands(),
   };
 }
 
-std::vector<const CommandEntry*> commandEntries() {
+std::vector<const CommandEntry*> commandEntries(CommandFamilies extra) {
   std::vector<const CommandEntry*> entries;
   for (const auto& family : commandFamilies())
+    for (const CommandEntry& entry : family) entries.push_back(&entry);
+  for (const auto& family : extra)
     for (const CommandEntry& entry : family) entries.push_back(&entry);
   return entries;
 }
@@ -105,7 +99,7 @@ int runCommand(Runtime& rt, const CommandEntry& entry, int objc, Tcl_Obj* const 
   return TCL_ERROR;
 }
 
-int registerCommands(Tcl_Interp* interp) {
+int registerCommands(Tcl_Interp* interp, CommandFamilies extra) {
   auto* rt = new Runtime(interp);
   Tcl_CallWhenDeleted(interp, deleteRuntime, rt);
   Tcl_CreateExitHandler(flushAtExit, rt);
@@ -116,13 +110,11 @@ int registerCommands(Tcl_Interp* interp) {
                (std::string("namespace eval ::dabs {}; rename ::load ") + kTclLoad).c_str()) !=
           TCL_OK)
     return TCL_ERROR;
-  for (const auto& family : commandFamilies()) {
-    for (const CommandEntry& entry : family) {
-      rt->bindings.push_back(std::make_unique<CommandBinding>(CommandBinding{rt, &entry}));
-      Tcl_CreateObjCommand(interp, std::string(entry.name).c_str(),
-                           entry.name == "load" ? dispatchLoad : dispatch,
-                           rt->bindings.back().get(), nullptr);
-    }
+  for (const CommandEntry* entry : commandEntries(extra)) {
+    rt->bindings.push_back(std::make_unique<CommandBinding>(CommandBinding{rt, entry}));
+    Tcl_CreateObjCommand(interp, std::string(entry->name).c_str(),
+                         entry->name == "load" ? dispatchLoad : dispatch, rt->bindings.back().get(),
+                         nullptr);
   }
   return TCL_OK;
 }

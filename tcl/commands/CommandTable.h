@@ -16,13 +16,19 @@ struct CommandBinding {
   const CommandEntry* entry;
 };
 
-/// Creates a Runtime for `interp`, registers every command of every family and arranges for the
-/// runtime to be deleted with the interpreter. Returns TCL_OK or TCL_ERROR.
-int registerCommands(Tcl_Interp* interp);
+/// Families of commands a program adds to those of this library, after them (the programs pass
+/// the parallel commands of tcl/parallel, which depends on this library and not the reverse).
+using CommandFamilies = std::span<const std::span<const CommandEntry>>;
 
-/// The rows of every command registerCommands creates, in table order (for bindings that expose
-/// each command under its own name, such as the Python module). The rows have static storage.
-std::vector<const CommandEntry*> commandEntries();
+/// Creates a Runtime for `interp`, registers every command of every family of this library and
+/// of `extra`, and arranges for the runtime to be deleted with the interpreter. Returns TCL_OK or
+/// TCL_ERROR.
+int registerCommands(Tcl_Interp* interp, CommandFamilies extra = {});
+
+/// The rows of every command registerCommands creates with the same `extra`, in table order (for
+/// bindings that expose each command under its own name, such as the Python module). The rows
+/// have static storage.
+std::vector<const CommandEntry*> commandEntries(CommandFamilies extra = {});
 
 /// Runs one command row: builds the ArgReader, calls the row, and turns ArgError/InputError into a
 /// Tcl error whose message names the command and argument (style.md section 5).

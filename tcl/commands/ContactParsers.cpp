@@ -15,7 +15,7 @@
 #include "contact/NodeToSurfaceContact3d.h"
 #include "materials/GapSpring.h"
 #include "materials/InputError.h"
-#include "tcl/analysis/AnalysisBuilder.h"
+#include "tcl/analysis/driver/AnalysisBuilder.h"
 #include "tcl/commands/Registry.h"
 #include "tcl/commands/TclResult.h"
 
@@ -281,13 +281,12 @@ void pounding(Runtime& rt, ArgReader& args) {
 /// defaults are those of ContactSteppingParams) or off (-off). Without arguments it returns
 /// its state as a dict: on, maxStep, lookAhead, overshoot, pairs (when on), and since the last
 /// wipeAnalysis contactSteps, patternChanges (matrix patterns rebuilt as far contact pairs
-/// fell asleep or woke, AnalysisModel's sleeping pairs) and redoneSteps (steps redone because a
+/// went to sleep or woke, AnalysisModel's sleeping pairs) and redoneSteps (steps redone because a
 /// sleeping pair would have carried force) and farTests (far tests of sleeping pairs made: one
-/// per pair and check, none while its face rests, two at a check that wakes its resting face).
-/// The -eachStep
-/// script runs at global level after every committed step while stepping is on (a script that
-/// follows peaks between analyze's output steps); an error in it stops the analysis with that
-/// error. Set after `wipeAnalysis`, which turns stepping off.
+/// per pair and check, none while its face's test is deferred, two at a check that wakes a pair of
+/// a deferred face). The -eachStep script runs at global level after every committed step while
+/// stepping is on (a script that follows peaks between analyze's output steps); an error in it
+/// stops the analysis with that error. Set after `wipeAnalysis`, which turns stepping off.
 void contactSteppingCmd(Runtime& rt, ArgReader& args) {
   auto& analysis = *rt.analysis;
   if (!args.hasMore()) {

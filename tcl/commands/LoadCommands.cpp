@@ -4,7 +4,7 @@
 #include <string>
 
 #include "materials/InputError.h"
-#include "tcl/analysis/AnalysisBuilder.h"
+#include "tcl/analysis/driver/AnalysisBuilder.h"
 #include "tcl/commands/Registry.h"
 #include "tcl/commands/SeriesParser.h"
 #include "tcl/commands/TclResult.h"

@@ -4,7 +4,7 @@
 #include <cstdlib>
 
 #include "materials/InputError.h"
-#include "tcl/analysis/AnalysisBuilder.h"
+#include "tcl/analysis/driver/AnalysisBuilder.h"
 #include "tcl/commands/CommandTable.h"
 
 namespace dabs::tcl {

@@ -6,7 +6,7 @@
 
 #include <csignal>
 
-#include "tcl/analysis/StopRequest.h"
+#include "tcl/analysis/driver/StopRequest.h"
 #include "tcl/commands/Runtime.h"
 
 namespace dabs::tcl {

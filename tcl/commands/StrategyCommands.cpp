@@ -8,17 +8,17 @@
 #include <string>
 
 #include "materials/InputError.h"
-#include "tcl/analysis/AnalysisBuilder.h"
-#include "tcl/analysis/ArcLength.h"
-#include "tcl/analysis/CentralDifference.h"
-#include "tcl/analysis/DisplacementControl.h"
-#include "tcl/analysis/GeneralizedAlpha.h"
-#include "tcl/analysis/KrylovNewton.h"
-#include "tcl/analysis/LinearAlgorithm.h"
-#include "tcl/analysis/LoadControl.h"
-#include "tcl/analysis/NewtonLineSearch.h"
-#include "tcl/analysis/NewtonRaphson.h"
-#include "tcl/analysis/TRBDF2.h"
+#include "tcl/analysis/driver/AnalysisBuilder.h"
+#include "tcl/analysis/integrators/ArcLength.h"
+#include "tcl/analysis/integrators/CentralDifference.h"
+#include "tcl/analysis/integrators/DisplacementControl.h"
+#include "tcl/analysis/integrators/GeneralizedAlpha.h"
+#include "tcl/analysis/algorithms/KrylovNewton.h"
+#include "tcl/analysis/algorithms/LinearAlgorithm.h"
+#include "tcl/analysis/integrators/LoadControl.h"
+#include "tcl/analysis/algorithms/NewtonLineSearch.h"
+#include "tcl/analysis/algorithms/NewtonRaphson.h"
+#include "tcl/analysis/integrators/TRBDF2.h"
 #include "tcl/commands/Registry.h"
 
 namespace dabs::tcl::strategy {

@@ -245,7 +245,7 @@ void Domain::refreshLists() {
   for (auto& [tag, n] : nodes_) nodeList_.push_back(&n);
   elementList_.clear();
   for (auto& [tag, e] : elements_) elementList_.push_back(e.get());
-  dormant_.assign(elementList_.size(), 0);
+  stateKept_.assign(elementList_.size(), 0);
   listVersion_ = modelVersion_;
 }
 
@@ -253,17 +253,17 @@ void Domain::commit() {
   refreshLists();
   for (Node* n : nodeList_) n->commitState();
   for (std::size_t i = 0; i < elementList_.size(); ++i)
-    if (!dormant_[i]) elementList_[i]->commitState();
+    if (!stateKept_[i]) elementList_[i]->commitState();
   committedTime_ = time_;
   record();
 }
 
-void Domain::setDormant(std::size_t index, bool dormant) {
+void Domain::setStateKept(std::size_t index, bool kept) {
   refreshLists();
-  if (index < dormant_.size()) dormant_[index] = dormant ? 1 : 0;
+  if (index < stateKept_.size()) stateKept_[index] = kept ? 1 : 0;
 }
 
-void Domain::clearDormant() { std::fill(dormant_.begin(), dormant_.end(), 0); }
+void Domain::clearStateKept() { std::fill(stateKept_.begin(), stateKept_.end(), 0); }
 
 std::vector<int> Domain::recordedElements() const {
   std::vector<int> tags = recorders_.elementsRead();
@@ -322,7 +322,7 @@ void Domain::revertToLastCommit() {
   refreshLists();
   for (Node* n : nodeList_) n->revertToLastCommit();
   for (std::size_t i = 0; i < elementList_.size(); ++i)
-    if (!dormant_[i]) elementList_[i]->revertToLastCommit();
+    if (!stateKept_[i]) elementList_[i]->revertToLastCommit();
   time_ = committedTime_;
 }
 

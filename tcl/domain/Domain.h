@@ -125,14 +125,14 @@ class Domain {
   void revertToLastCommit();
   /// Back to the virgin state at time 0 (the `reset` command).
   void revertToStart();
-  /// Marks the element at `index` (its position in tag order, the order of elements()) dormant
-  /// or not. A dormant element's state is the analysis' to keep until it takes the element up
-  /// again (a resting contact pair's gap is formed anew then), so commit and revert skip it: a
-  /// contact pair asleep far apart for steps on end then costs nothing per step. The marks are
-  /// cleared whenever the model changes, and the analysis clears them at the end of `analyze`.
-  void setDormant(std::size_t index, bool dormant);
-  /// Clears every dormant mark.
-  void clearDormant();
+  /// Marks whether the analysis keeps the state of the element at `index` (its position in tag
+  /// order, the order of elements()) until it takes the element up again, so commit and revert
+  /// skip it: a sleeping contact pair whose face's test is deferred (its gap is formed anew when
+  /// the test is due) then costs nothing per step. The marks are cleared whenever the model
+  /// changes, and the analysis clears them at the end of `analyze`.
+  void setStateKept(std::size_t index, bool kept);
+  /// Clears every mark of setStateKept.
+  void clearStateKept();
   /// Increases whenever nodes, elements, constraints or patterns change; the analysis re-numbers
   /// its equations when this differs from what it saw.
   long modelVersion() const noexcept { return modelVersion_; }
@@ -190,7 +190,7 @@ class Domain {
   void refreshLists();
   std::vector<Node*> nodeList_;
   std::vector<elements::Element*> elementList_;
-  std::vector<char> dormant_;  ///< per element of elementList_ (setDormant)
+  std::vector<char> stateKept_;  ///< per element of elementList_ (setStateKept)
   long listVersion_ = -1;
   /// Member loads at time t on the elements (see setTime).
   void applyElementLoads(double t);

@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "tcl/commands/CommandTable.h"
+#include "tcl/parallel/ParallelCommands.h"
 
 namespace {
 
@@ -715,7 +716,10 @@ int moduleExec(PyObject* module) {
   Tcl_SetVar2Ex(st->interp, "argc", nullptr, Tcl_NewIntObj(0), TCL_GLOBAL_ONLY);
   Tcl_SetVar2Ex(st->interp, "argv", nullptr, Tcl_NewObj(), TCL_GLOBAL_ONLY);
   Tcl_SetVar2Ex(st->interp, "tcl_interactive", nullptr, Tcl_NewIntObj(0), TCL_GLOBAL_ONLY);
-  if (Tcl_Init(st->interp) != TCL_OK || dabs::tcl::registerCommands(st->interp) != TCL_OK) {
+  // The commands of the `dabs` program: the library's and the parallel ones.
+  const std::span<const dabs::tcl::CommandEntry> parallel[] = {dabs::parallel::parallelCommands()};
+  if (Tcl_Init(st->interp) != TCL_OK ||
+      dabs::tcl::registerCommands(st->interp, parallel) != TCL_OK) {
     PyErr_Format(PyExc_ImportError, "dabs: cannot start the Tcl interpreter: %s",
                  Tcl_GetStringResult(st->interp));
     return -1;
@@ -726,7 +730,7 @@ int moduleExec(PyObject* module) {
   // One function per row of the command table, so a new Tcl command appears here unedited.
   PyObject* names = PyList_New(0);
   if (names == nullptr) return -1;
-  for (const dabs::tcl::CommandEntry* e : dabs::tcl::commandEntries()) {
+  for (const dabs::tcl::CommandEntry* e : dabs::tcl::commandEntries(parallel)) {
     const std::string pyName(e->name);
     PyObject* fn = makeCommand(st, e);
     PyObject* n = fromView(e->name);

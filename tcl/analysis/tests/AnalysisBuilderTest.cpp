@@ -3,15 +3,15 @@
 // converged steps reach the root of f(u) = lambda P found here by scalar Newton; a step that
 // fails (a test allowing one iteration) returns a negative code, is counted, and leaves the model
 // at the last converged step; components replaced between analyze calls take effect.
-#include "tcl/analysis/AnalysisBuilder.h"
+#include "tcl/analysis/driver/AnalysisBuilder.h"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <memory>
 
-#include "tcl/analysis/LoadControl.h"
-#include "tcl/analysis/NewtonRaphson.h"
+#include "tcl/analysis/integrators/LoadControl.h"
+#include "tcl/analysis/algorithms/NewtonRaphson.h"
 #include "tcl/analysis/tests/CubicSpring.h"
 #include "tcl/analysis/tests/SpringModel.h"
 

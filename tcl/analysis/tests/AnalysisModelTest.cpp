@@ -1,4 +1,7 @@
 // SPDX-License-Identifier: MIT
+// Over 400 lines: the reference assembler and the elements it is checked on (a gate that opens
+// and closes, springs, beams) are written here, beside the cases, so the test needs nothing but
+// the elements' public getters.
 // AnalysisModel's assembly against a dense reference assembler written here: every element's own
 // matrices and force (its public getters) and every node's mass, placed by hand into node-dof
 // space and projected onto the equations with a mapping built from the constraints the test
@@ -16,7 +19,7 @@
 // element takes Rayleigh damping), T the node-dof -> equation map (zero rows for fixed dofs under
 // Transformation, the retained dof's row for an equalDOF-constrained one), and penalty rows c
 // (the Penalty handler only: alphaSP on each fixed dof, alphaMP on u_constrained - u_retained).
-#include "tcl/analysis/AnalysisModel.h"
+#include "tcl/analysis/model/AnalysisModel.h"
 
 #include <gtest/gtest.h>
 

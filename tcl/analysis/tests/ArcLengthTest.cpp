@@ -2,14 +2,14 @@
 // Arc-length control on a bilinear hardening spring: every converged step lies on the spring's
 // force-displacement polyline at arc distance s from the last one, measured with the weights of
 // the constraint wU du^2 + wF dlambda^2 = s^2, which fixes each point in closed form.
-#include "tcl/analysis/ArcLength.h"
+#include "tcl/analysis/integrators/ArcLength.h"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 
 #include "materials/Steel01.h"
-#include "tcl/analysis/AnalysisBuilder.h"
+#include "tcl/analysis/driver/AnalysisBuilder.h"
 #include "tcl/analysis/tests/SpringModel.h"
 
 namespace dabs::analysis {

@@ -3,7 +3,7 @@
 // checked against Eigen's own look-up, on patterns of more than 46,340 equations, where a
 // row * n + column index would overflow a 32-bit int; and through the whole assembly of a chain
 // of springs of that size, whose stiffness matrix is known in closed form.
-#include "tcl/analysis/AssemblyPattern.h"
+#include "tcl/analysis/model/AssemblyPattern.h"
 
 #include <gtest/gtest.h>
 
@@ -11,7 +11,7 @@
 
 #include "elements/link/ZeroLength.h"
 #include "materials/Elastic.h"
-#include "tcl/analysis/AnalysisModel.h"
+#include "tcl/analysis/model/AnalysisModel.h"
 #include "tcl/domain/Domain.h"
 
 namespace dabs::analysis {

@@ -3,7 +3,7 @@
 // of: fixes and pattern supports as prescribed slots, equalDOF (and chains of it) as the retained
 // dof's equation, penalty rows alpha (u_c - u_r) under Penalty, and the errors for constraints a
 // handler cannot enforce.
-#include "tcl/analysis/ConstraintHandler.h"
+#include "tcl/analysis/model/ConstraintHandler.h"
 
 #include <gtest/gtest.h>
 

@@ -3,7 +3,7 @@
 // before a step is known, the contact step when a pair is closed or about to close, the cut at
 // the predicted first contact (t_close = g h_last / (g_last - g), times the overshoot), and the
 // parameter checks. Expected step lengths are worked out by hand from those rules.
-#include "tcl/analysis/ContactStepping.h"
+#include "tcl/analysis/driver/ContactStepping.h"
 
 #include <gtest/gtest.h>
 

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-#include "tcl/analysis/ConvergenceTest.h"
+#include "tcl/analysis/algorithms/ConvergenceTest.h"
 
 #include <gtest/gtest.h>
 

@@ -4,7 +4,7 @@
 #include <memory>
 
 #include "materials/UniaxialMaterial.h"
-#include "tcl/analysis/ConvergenceTest.h"
+#include "tcl/analysis/algorithms/ConvergenceTest.h"
 
 namespace dabs::analysis::testing {
 

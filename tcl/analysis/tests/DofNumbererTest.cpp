@@ -2,7 +2,7 @@
 // The node order of the numberers: Plain keeps the tag order; reverse Cuthill-McKee numbers a
 // path given in scrambled order along the path (band width 1) and each component of a
 // disconnected graph as a block.
-#include "tcl/analysis/DofNumberer.h"
+#include "tcl/analysis/model/DofNumberer.h"
 
 #include <gtest/gtest.h>
 

@@ -9,12 +9,12 @@
 #include <vector>
 
 #include "materials/Elastic.h"
-#include "tcl/analysis/AnalysisBuilder.h"
-#include "tcl/analysis/CentralDifference.h"
-#include "tcl/analysis/GeneralizedAlpha.h"
-#include "tcl/analysis/LinearAlgorithm.h"
-#include "tcl/analysis/LoadControl.h"
-#include "tcl/analysis/NewtonRaphson.h"
+#include "tcl/analysis/driver/AnalysisBuilder.h"
+#include "tcl/analysis/integrators/CentralDifference.h"
+#include "tcl/analysis/integrators/GeneralizedAlpha.h"
+#include "tcl/analysis/algorithms/LinearAlgorithm.h"
+#include "tcl/analysis/integrators/LoadControl.h"
+#include "tcl/analysis/algorithms/NewtonRaphson.h"
 #include "tcl/analysis/tests/CubicSpring.h"
 #include "tcl/analysis/tests/SpringModel.h"
 #include "tcl/domain/ConstantSeries.h"

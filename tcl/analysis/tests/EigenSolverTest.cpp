@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-#include "tcl/analysis/EigenSolver.h"
+#include "tcl/analysis/system/EigenSolver.h"
 
 #include <gtest/gtest.h>
 

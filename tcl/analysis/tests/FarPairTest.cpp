@@ -17,8 +17,8 @@
 #include "elements/ContactPredictor.h"
 #include "elements/Element.h"
 #include "elements/FarPair.h"
-#include "tcl/analysis/AnalysisModel.h"
-#include "tcl/analysis/ContactStepping.h"
+#include "tcl/analysis/model/AnalysisModel.h"
+#include "tcl/analysis/driver/ContactStepping.h"
 #include "tcl/domain/Domain.h"
 
 namespace dabs::analysis {
@@ -73,13 +73,13 @@ class FakePair final : public elements::Element,
   }
   bool committedFar() const override { return committedGap_ > kDistance; }
   bool trialFarBeyond(double factor) const override { return trialGap_ > factor * kDistance; }
-  bool settledFar() const override { return false; }  // no resting faces here
+  bool farInBothStates() const override { return false; }  // no deferred faces here
   bool setFarTrial(double b, double /*dt*/) override {
     ++farTrials;
     trialGap_ = b;
     return true;
   }
-  bool setSettledGap(double /*b*/) override { return false; }
+  bool setGapInBothStates(double /*b*/) override { return false; }
 
   double committedGap() const override { return committedGap_; }
   bool committedClosed() const override { return committedGap_ <= 0.0; }
@@ -149,7 +149,7 @@ TEST(FarPairTest, FakePairSleepsIsTestedOncePerCheckAndWakesWhenNear) {
   model.domain.commit();
   analysis.applySleepChanges();
   EXPECT_EQ(analysis.sleepingPairs(), 0);
-  // Beyond twice the search distance (0.25 m above the face): it falls asleep.
+  // Beyond twice the search distance (0.25 m above the face): it goes to sleep.
   const Eigen::VectorXd zero = Eigen::VectorXd::Zero(analysis.numEquations());
   Eigen::VectorXd U = zero;
   U(analysis.equationOf(10, 2)) = 0.05;

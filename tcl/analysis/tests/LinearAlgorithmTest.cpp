@@ -3,15 +3,15 @@
 // factorises only when that tangent may have changed; Newton and modified Newton factorise per
 // iteration and per step. All on a cubic spring under load control, against the scalar steps
 // u_{n+1} = u_n + (P_{n+1} - f(u_n)) / K, K = f'(u_n) (current) or k (initial).
-#include "tcl/analysis/LinearAlgorithm.h"
+#include "tcl/analysis/algorithms/LinearAlgorithm.h"
 
 #include <gtest/gtest.h>
 
 #include <memory>
 
-#include "tcl/analysis/AnalysisBuilder.h"
-#include "tcl/analysis/LoadControl.h"
-#include "tcl/analysis/NewtonRaphson.h"
+#include "tcl/analysis/driver/AnalysisBuilder.h"
+#include "tcl/analysis/integrators/LoadControl.h"
+#include "tcl/analysis/algorithms/NewtonRaphson.h"
 #include "tcl/analysis/tests/CubicSpring.h"
 #include "tcl/analysis/tests/SpringModel.h"
 

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 // The three direct solvers behind `system`: a known solution, a singular matrix reported as such,
 // and a new factorisation after the numbers change on the same pattern.
-#include "tcl/analysis/LinearSolver.h"
+#include "tcl/analysis/system/LinearSolver.h"
 
 #include <gtest/gtest.h>
 

@@ -2,7 +2,7 @@
 // The linear system of one iteration on a two-spring chain whose stiffness is known in closed
 // form: K^-1 P by hand, factorisation only when the matrix may have changed, and modal damping
 // kept out of the sparse matrix (Woodbury) giving the solution of the dense K + cC U D U^T.
-#include "tcl/analysis/LinearSystem.h"
+#include "tcl/analysis/system/LinearSystem.h"
 
 #include <gtest/gtest.h>
 

@@ -1,24 +1,28 @@
 // SPDX-License-Identifier: MIT
-// The once-a-step far test of sleeping contact pairs, made per target face (the face's slab top
-// formed once for every pair against it), against the pair's own test (FarTest::isFar, the
-// slab and the bounding sphere on its five nodes) and against a brute-force distance from the
-// contactor to the bilinear face: on random configurations every sleeper gets the verdict and
-// the bound of its own test to the bit, and no pair found far is within its search distance.
-// Then a contactor that crosses the search distance and the face in one step while the other
-// pairs of its face stay far is woken and the step is redone. Resting faces (a face whose pairs
-// all sleep is left alone until the motion of their nodes could bring one to its search
+// Over 400 lines: the model of faces and contactors and the harness that stands in for
+// AnalysisModel are written here, beside the cases that share them.
+// SleepingPairs, driven by a harness written here in place of AnalysisModel (every node dof an
+// equation; the pairs updated from their nodes). Its once-a-step far test, made per target face
+// (the face's slab top formed once for every pair against it), against the pair's own test
+// (FarTest::isFar, the slab and the bounding sphere on its five nodes) and against a brute-force
+// distance from the contactor to the bilinear face: on random configurations every sleeper gets the
+// verdict and the bound of its own test to the bit, and no pair found far is within its search
+// distance. Then a contactor that crosses the search distance and the face in one step while the
+// other pairs of its face stay far is woken and the step is redone. Deferred tests (a face whose
+// pairs all sleep is left alone until the motion of their nodes could bring one to its search
 // distance): on random walks of the nodes, pairs wake at the same checks as with the test of
-// every step, with fewer tests, and are left out of the domain's commit while they rest.
+// every step, with fewer tests, and are left out of the domain's commit while deferred.
 #include <gtest/gtest.h>
 
 #include <array>
+#include <map>
 #include <cmath>
 #include <memory>
 #include <random>
 #include <vector>
 
 #include "contact/NodeToSurfaceContact3d.h"
-#include "tcl/analysis/AnalysisModel.h"
+#include "tcl/analysis/model/SleepingPairs.h"
 #include "tcl/domain/Domain.h"
 #include "tcl/domain/Recorder.h"
 
@@ -129,10 +133,116 @@ class Faces {
   std::vector<Pair> pairs_;
 };
 
+/// SleepingPairs over a model without an AnalysisModel: every node dof one equation (nodes in
+/// tag order), each pair sleeping as SleepingPairs::wantsSleep says at every rebuild, and a waker
+/// that updates the pair from its nodes' trial displacements (velocities and accelerations zero,
+/// time and step 0) and tells whether it carries force.
+class Harness {
+ public:
+  explicit Harness(Faces& model) : model_(model), sleepers_(model.domain()) {
+    int next = 0;
+    for (auto& [tag, node] : model.domain().nodes()) {
+      first_[tag] = next;
+      for (int d = 0; d < node.ndf(); ++d) {
+        directEq_.push_back(next);
+        terms_.push_back({DofTerm{next, 1.0}});
+        ++next;
+      }
+    }
+    neq_ = next;
+    rebuild();
+  }
+
+  int numEquations() const { return neq_; }
+  int equationOf(int tag, int dof) const { return first_.at(tag) + dof; }
+  long sleepingPairs() const { return sleepers_.sleeping(); }
+  long farTests() const { return sleepers_.farTests(); }
+  std::size_t deferredFaces() const { return sleepers_.deferredFaces(); }
+  long elementUpdates() const { return updates_; }
+  void beginSteps(bool observeAll) { sleepers_.beginSteps(observeAll); }
+  void endSteps() { sleepers_.endSteps(); }
+
+  /// The check on the nodes' trial displacements as they are.
+  SleepingPairs::Check checkSleepingPairs() {
+    return sleepers_.check(0.0, {}, [this](std::size_t i) {
+      const Status s = update(i);
+      return !ok(s) || model_.pairs()[i].element->isActive();
+    });
+  }
+
+  /// One step as the analysis makes it: nodes' trial displacements from U, the awake pairs
+  /// updated, the sleepers checked, the domain committed and the pairs rebuilt when some woke or
+  /// went to sleep.
+  SleepingPairs::Check step(const Eigen::VectorXd& U) {
+    for (auto& [tag, node] : model_.domain().nodes())
+      for (int d = 0; d < node.ndf(); ++d) node.disp(d) = U(equationOf(tag, d));
+    sleepers_.setDisplacements(U);
+    for (std::size_t i = 0; i < sleeping_.size(); ++i)
+      if (!sleeping_[i]) {
+        EXPECT_TRUE(ok(update(i)));
+      }
+    const auto result = checkSleepingPairs();
+    model_.domain().commit();
+    if (result == SleepingPairs::Check::PatternChange) {
+      const SleepingPairs::Carried carried = sleepers_.beforeRebuild();
+      rebuild();
+      sleepers_.afterRebuild(carried);
+    }
+    return result;
+  }
+
+ private:
+  void rebuild() {
+    std::map<const elements::Element*, std::uint32_t> domainIndex;
+    for (const auto& [tag, e] : model_.domain().elements())
+      domainIndex.emplace(e.get(), static_cast<std::uint32_t>(domainIndex.size()));
+    std::vector<SleepingPairs::Pair> pairs;
+    sleeping_.clear();
+    for (std::size_t i = 0; i < model_.pairs().size(); ++i) {
+      const Pair& q = model_.pairs()[i];
+      SleepingPairs::Pair p;
+      p.link = i;
+      p.tag = q.element->tag();
+      p.far = q.element->farPair();
+      p.contactor = &model_.domain().node(q.contactor);
+      for (std::size_t j = 0; j < 4; ++j) p.face[j] = &model_.domain().node(q.face[j]);
+      p.sleeping = sleepers_.wantsSleep(*p.far);
+      p.domainIndex = domainIndex.at(q.element);
+      sleeping_.push_back(p.sleeping);
+      pairs.push_back(p);
+    }
+    sleepers_.build(
+        std::move(pairs),
+        SleepingPairs::DofSource{[this](int tag) { return first_.at(tag); }, directEq_, terms_});
+  }
+  Status update(std::size_t i) {
+    const Pair& q = model_.pairs()[i];
+    const int n = q.element->numDof();
+    Eigen::VectorXd u(n);
+    const Eigen::VectorXd zero = Eigen::VectorXd::Zero(n);
+    int k = 0;
+    for (int tag : q.element->nodeTags()) {
+      const domain::Node& node = model_.domain().node(tag);
+      u.segment(k, node.ndf()) = node.disp;
+      k += node.ndf();
+    }
+    ++updates_;
+    return q.element->update(elements::Kinematics{u, zero, zero, 0.0, 0.0});
+  }
+
+  Faces& model_;
+  SleepingPairs sleepers_;
+  std::map<int, int> first_;
+  std::vector<int> directEq_;
+  std::vector<std::vector<DofTerm>> terms_;
+  std::vector<char> sleeping_;
+  int neq_ = 0;
+  long updates_ = 0;
+};
+
 TEST(SleepingPairsTest, FarTestPerFaceGivesEachPairsOwnVerdictAndBound) {
   Faces model;
-  AnalysisModel analysis(model.domain(), ConstraintKind::Plain, NumbererKind::Plain);
-  analysis.build();
+  Harness analysis(model);
   ASSERT_EQ(analysis.sleepingPairs(), static_cast<long>(model.pairs().size()));
   std::mt19937 rng(20261124);
   std::uniform_real_distribution<double> face(-0.04, 0.04);  // tilts and warps the faces
@@ -184,8 +294,8 @@ TEST(SleepingPairsTest, FarTestPerFaceGivesEachPairsOwnVerdictAndBound) {
     }
     // Each near pair woken (updated once), each far one not.
     EXPECT_EQ(analysis.elementUpdates() - updatesBefore, woken) << "trial " << trial;
-    EXPECT_EQ(result, woken > 0 ? AnalysisModel::SleepCheck::PatternChange
-                                : AnalysisModel::SleepCheck::Unchanged)
+    EXPECT_EQ(result,
+              woken > 0 ? SleepingPairs::Check::PatternChange : SleepingPairs::Check::Unchanged)
         << "trial " << trial;
   }
   // Both verdicts were met often (of 14 pairs x 300 configurations).
@@ -195,30 +305,29 @@ TEST(SleepingPairsTest, FarTestPerFaceGivesEachPairsOwnVerdictAndBound) {
 
 TEST(SleepingPairsTest, ContactorCrossingTheFaceInOneStepIsWokenAndTheStepRedone) {
   Faces model(1);
-  AnalysisModel analysis(model.domain(), ConstraintKind::Plain, NumbererKind::Plain);
-  analysis.build();
+  Harness analysis(model);
   ASSERT_EQ(analysis.sleepingPairs(), 6);
   // The contactor above the face's middle (node 11, at (0.5, 0.5), 0.2 m above) moves 0.21 m
   // down in one step: 0.01 m into the face. The other contactors and the face stay at rest, far.
   model.domain().node(11).disp.head<3>() = Eigen::Vector3d(0.0, 0.0, -(kHeight + 0.01));
-  EXPECT_EQ(analysis.checkSleepingPairs(), AnalysisModel::SleepCheck::RedoStep);
+  EXPECT_EQ(analysis.checkSleepingPairs(), SleepingPairs::Check::RedoStep);
   const auto& s = model.trial(model.pairs()[0]);
   EXPECT_NEAR(s.gap, -0.01, 1e-12);
   EXPECT_GT(s.force(0), 0.0);  // in contact: the step missed its force
   // Only down to 0.04 m above the face: within the search distance, no force: woken for the next
   // step, this one stands.
   model.domain().node(11).disp.head<3>() = Eigen::Vector3d(0.0, 0.0, -(kHeight - 0.04));
-  EXPECT_EQ(analysis.checkSleepingPairs(), AnalysisModel::SleepCheck::PatternChange);
+  EXPECT_EQ(analysis.checkSleepingPairs(), SleepingPairs::Check::PatternChange);
   // The face rising 0.16 m under contactors that stay put, 0.04 m above its plane now: the four
   // over the face are near (one of them with a search distance of 0.1 m, and one that names the
-  // face's nodes in another order) and are woken; the two beyond its edges stay asleep, since the
+  // face's nodes in another order) and are woken; the two beyond its edges stay sleeping, since the
   // face's bounding sphere (centre (1, 0.5, 0.16), radius sqrt(1.25) = 1.1180 m) is
   // sqrt(1.2^2 + 0.04^2) - 1.1180 = 0.083 m from (2.2, 0.5, 0.2) and
   // sqrt(1.1^2 + 0.4^2 + 0.04^2) - 1.1180 = 0.053 m from (-0.1, 0.9, 0.2), beyond 0.05 m.
   model.domain().node(11).disp.setZero();
   for (int n = 1; n <= 4; ++n) model.domain().node(n).disp.head<3>() = Eigen::Vector3d(0, 0, 0.16);
   const long before = analysis.elementUpdates();
-  EXPECT_EQ(analysis.checkSleepingPairs(), AnalysisModel::SleepCheck::PatternChange);
+  EXPECT_EQ(analysis.checkSleepingPairs(), SleepingPairs::Check::PatternChange);
   EXPECT_EQ(analysis.elementUpdates() - before, 4);
   const std::array<double, 2> expected{
       std::sqrt(1.2 * 1.2 + 0.04 * 0.04) - std::sqrt(1.25),
@@ -237,28 +346,12 @@ struct ReadingRecorder final : domain::Recorder {
   }
 };
 
-/// The analysis' state of one check: nodes' trial translations from the walk, set through the
-/// equations (as an integrator does), the awake pairs updated, the sleepers checked, then the
-/// domain committed and the pattern rebuilt when pairs woke or fell asleep.
-AnalysisModel::SleepCheck step(AnalysisModel& analysis, domain::Domain& domain,
-                               const Eigen::VectorXd& U) {
-  const Eigen::VectorXd zero = Eigen::VectorXd::Zero(U.size());
-  analysis.setResponse(U, zero, zero);
-  EXPECT_TRUE(ok(analysis.updateElements()));
-  const auto result = analysis.checkSleepingPairs();
-  domain.commit();
-  if (result == AnalysisModel::SleepCheck::PatternChange) analysis.applySleepChanges();
-  return result;
-}
-
-TEST(SleepingPairsTest, RestingFacesWakeAtTheSameChecksWithFewerTests) {
-  // Two copies of the model walked alike: in one the faces may rest, in the other every sleeper
-  // is tested at every check (as when every pair is observed).
-  Faces resting, testedEachStep;
-  AnalysisModel a(resting.domain(), ConstraintKind::Plain, NumbererKind::Plain);
-  AnalysisModel b(testedEachStep.domain(), ConstraintKind::Plain, NumbererKind::Plain);
-  a.build();
-  b.build();
+TEST(SleepingPairsTest, DeferredFacesWakeAtTheSameChecksWithFewerTests) {
+  // Two copies of the model walked alike: in one the faces' tests may be deferred, in the other
+  // every sleeper is tested at every check (as when every pair is observed).
+  Faces deferring, testedEachStep;
+  Harness a(deferring);
+  Harness b(testedEachStep);
   a.beginSteps(false);
   b.beginSteps(true);
   const int neq = a.numEquations();
@@ -266,11 +359,12 @@ TEST(SleepingPairsTest, RestingFacesWakeAtTheSameChecksWithFewerTests) {
   std::mt19937 rng(1124);
   std::normal_distribution<double> jitter(0.0, 0.0002);
   Eigen::VectorXd U = Eigen::VectorXd::Zero(neq);
-  int wakes = 0, rested = 0;
+  int wakes = 0, deferred = 0;
   for (int k = 0; k < 600; ++k) {
     // Faces shake a little; contactors shake, sink towards their faces for 150 checks and rise
-    // for 150, twice (so pairs wake, fall asleep beyond twice their distance, and rest again).
-    for (auto& [tag, node] : resting.domain().nodes()) {
+    // for 150, twice (so pairs wake, go to sleep beyond twice their distance, and are deferred
+    // again).
+    for (auto& [tag, node] : deferring.domain().nodes()) {
       const bool contactor = tag % 100 > 10;
       for (int d = 0; d < 3; ++d) {
         const int eq = a.equationOf(tag, d);
@@ -287,54 +381,55 @@ TEST(SleepingPairsTest, RestingFacesWakeAtTheSameChecksWithFewerTests) {
       const int ez = a.equationOf(tag, 2);
       if (contactor) U(ez) = std::max(U(ez), 0.01 - kHeight);
     }
-    const auto ra = step(a, resting.domain(), U);
-    const auto rb = step(b, testedEachStep.domain(), U);
+    const auto ra = a.step(U);
+    const auto rb = b.step(U);
     ASSERT_EQ(ra, rb) << "check " << k;
-    if (ra == AnalysisModel::SleepCheck::PatternChange) ++wakes;
-    rested += a.restingFaces() > 0 ? 1 : 0;
-    EXPECT_EQ(b.restingFaces(), 0u);
+    if (ra == SleepingPairs::Check::PatternChange) ++wakes;
+    deferred += a.deferredFaces() > 0 ? 1 : 0;
+    EXPECT_EQ(b.deferredFaces(), 0u);
     EXPECT_EQ(a.sleepingPairs(), b.sleepingPairs()) << "check " << k;
   }
   a.endSteps();
   b.endSteps();
   EXPECT_EQ(a.elementUpdates(), b.elementUpdates());
-  EXPECT_GT(wakes, 4);     // pairs woke and fell asleep again
-  EXPECT_GT(rested, 100);  // and faces rested for many checks
+  EXPECT_GT(wakes, 4);       // pairs woke and went to sleep again
+  EXPECT_GT(deferred, 100);  // and faces were deferred for many checks
   // about half the tests on this restless walk (every node jitters, contactors dive)
   EXPECT_LT(a.farTests(), 0.7 * static_cast<double>(b.farTests()));
   // After the steps every pair reads as with the test of every step, to the bit.
-  for (std::size_t i = 0; i < resting.pairs().size(); ++i) {
-    const auto& sa = resting.trial(resting.pairs()[i]);
+  for (std::size_t i = 0; i < deferring.pairs().size(); ++i) {
+    const auto& sa = deferring.trial(deferring.pairs()[i]);
     const auto& sb = testedEachStep.trial(testedEachStep.pairs()[i]);
     EXPECT_EQ(sa.gap, sb.gap) << "pair " << i;
     EXPECT_EQ(sa.status, sb.status) << "pair " << i;
   }
 }
 
-TEST(SleepingPairsTest, RestingPairsAreNotCommittedAndRecordedPairsNeverRest) {
+TEST(SleepingPairsTest, PairsOfDeferredFacesAreNotCommittedAndRecordedPairsNeverDeferred) {
   Faces model(1);
   auto reader = std::make_unique<ReadingRecorder>();
   reader->tags = {1005};  // the contactor that names its face's nodes in another order: a run
   model.domain().addRecorder(std::move(reader));
-  AnalysisModel analysis(model.domain(), ConstraintKind::Plain, NumbererKind::Plain);
-  analysis.build();
+  Harness analysis(model);
   analysis.beginSteps(false);
   Eigen::VectorXd U = Eigen::VectorXd::Zero(analysis.numEquations());
-  // A pair rests once it is settled far (its committed state far, after one check and commit).
-  step(analysis, model.domain(), U);
-  step(analysis, model.domain(), U);
-  // Five pairs against the face as given rest; the recorded one, alone in its run, does not.
-  EXPECT_EQ(analysis.restingFaces(), 1u);
+  // A face's test is deferred once its pairs are far in both states (its committed state far, after
+  // one check and commit).
+  analysis.step(U);
+  analysis.step(U);
+  // Five pairs against the face as given are deferred; the recorded one, alone in its run, does
+  // not.
+  EXPECT_EQ(analysis.deferredFaces(), 1u);
   const long tests = analysis.farTests();
   const Pair& first = model.pairs()[0];
   auto* pair = dynamic_cast<NodeToSurfaceContact3d<3>*>(first.element);
   ASSERT_NE(pair, nullptr);
   const double committedGap = pair->committedState().gap;
   // The contactors rise 1 mm a check, the face stays: after k checks the motion bound is
-  // sqrt(3) k mm, and the resting run's horizon, its smallest slack (0.2 m high, search distance
+  // sqrt(3) k mm, and the deferred run's horizon, its smallest slack (0.2 m high, search distance
   // 0.1 m for one of its pairs) over the far bound's Lipschitz constant 4, is reached at
   // 0.025 / (sqrt(3) 1e-3) = 14.4 checks. Until then only the recorded pair is tested, and the
-  // resting pairs' committed gaps stay as they were although their trial gaps would change.
+  // deferred pairs' committed gaps stay as they were although their trial gaps would change.
   const int expectedAlone =
       static_cast<int>(std::ceil((kHeight - 2.0 * kSearch) / 4.0 / (std::sqrt(3.0) * 1e-3))) - 1;
   int checksAlone = 0;
@@ -342,8 +437,8 @@ TEST(SleepingPairsTest, RestingPairsAreNotCommittedAndRecordedPairsNeverRest) {
     for (const auto& [tag, node] : model.domain().nodes())
       if (tag % 100 > 10) U(analysis.equationOf(tag, 2)) = 0.001 * (k + 1);
     const long before = analysis.farTests();
-    step(analysis, model.domain(), U);
-    EXPECT_EQ(pair->committedState().gap, committedGap) << "a resting pair is not committed";
+    analysis.step(U);
+    EXPECT_EQ(pair->committedState().gap, committedGap) << "a deferred pair is not committed";
     if (analysis.farTests() - before > 1) {  // the horizon: the run's five pairs and the recorded
       EXPECT_EQ(analysis.farTests() - before, 6);
       break;
@@ -351,7 +446,7 @@ TEST(SleepingPairsTest, RestingPairsAreNotCommittedAndRecordedPairsNeverRest) {
     ++checksAlone;  // the recorded pair alone
   }
   EXPECT_EQ(checksAlone, expectedAlone);
-  EXPECT_EQ(analysis.restingFaces(), 1u);  // far still: it rests on
+  EXPECT_EQ(analysis.deferredFaces(), 1u);  // far still: deferred again
   EXPECT_GT(analysis.farTests(), tests);
   // At the end its gap is its own test's bound at the committed positions.
   analysis.endSteps();
@@ -359,7 +454,7 @@ TEST(SleepingPairsTest, RestingPairsAreNotCommittedAndRecordedPairsNeverRest) {
   ASSERT_TRUE(model.farTest(first).isFar(model.translations(first), bound));
   EXPECT_EQ(pair->committedState().gap, bound);
   EXPECT_EQ(pair->trialState().gap, bound);
-  EXPECT_EQ(analysis.restingFaces(), 0u);
+  EXPECT_EQ(analysis.deferredFaces(), 0u);
 }
 
 }  // namespace

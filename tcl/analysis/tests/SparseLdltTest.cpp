@@ -2,14 +2,14 @@
 // Sparse LDL^T against a dense factorisation of the same matrices: definite and indefinite
 // stiffness-like matrices, refactorisation with new values, singular matrices, and the solvers
 // that the `system` names map onto.
-#include "tcl/analysis/SparseLdlt.h"
+#include "tcl/analysis/system/SparseLdlt.h"
 
 #include <gtest/gtest.h>
 
 #include <Eigen/Dense>
 #include <random>
 
-#include "tcl/analysis/LinearSolver.h"
+#include "tcl/analysis/system/LinearSolver.h"
 
 namespace dabs::analysis {
 namespace {

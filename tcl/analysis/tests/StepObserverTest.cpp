@@ -3,16 +3,16 @@
 // is called once per committed step, in the committed state, never after a failed step, and a
 // non-zero code it returns stops `analyze` with that code after the step. The step times follow
 // from load control's increment.
-#include "tcl/analysis/StepObserver.h"
+#include "tcl/analysis/driver/StepObserver.h"
 
 #include <gtest/gtest.h>
 
 #include <memory>
 #include <vector>
 
-#include "tcl/analysis/AnalysisBuilder.h"
-#include "tcl/analysis/LoadControl.h"
-#include "tcl/analysis/NewtonRaphson.h"
+#include "tcl/analysis/driver/AnalysisBuilder.h"
+#include "tcl/analysis/integrators/LoadControl.h"
+#include "tcl/analysis/algorithms/NewtonRaphson.h"
 #include "tcl/analysis/tests/CubicSpring.h"
 #include "tcl/analysis/tests/SpringModel.h"
 

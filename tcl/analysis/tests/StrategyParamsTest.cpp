@@ -10,13 +10,13 @@
 #include <string>
 
 #include "materials/InputError.h"
-#include "tcl/analysis/ArcLength.h"
-#include "tcl/analysis/ConvergenceTest.h"
-#include "tcl/analysis/DisplacementControl.h"
-#include "tcl/analysis/GeneralizedAlpha.h"
-#include "tcl/analysis/KrylovNewton.h"
-#include "tcl/analysis/LoadControl.h"
-#include "tcl/analysis/NewtonLineSearch.h"
+#include "tcl/analysis/integrators/ArcLength.h"
+#include "tcl/analysis/algorithms/ConvergenceTest.h"
+#include "tcl/analysis/integrators/DisplacementControl.h"
+#include "tcl/analysis/integrators/GeneralizedAlpha.h"
+#include "tcl/analysis/algorithms/KrylovNewton.h"
+#include "tcl/analysis/integrators/LoadControl.h"
+#include "tcl/analysis/algorithms/NewtonLineSearch.h"
 
 namespace dabs::analysis {
 namespace {

@@ -1,14 +1,14 @@
 // SPDX-License-Identifier: MIT
 // TRBDF2 on a linear damped SDOF against the scheme's own recurrence, worked out independently:
 // trapezoidal and three-point backward-difference steps alternating (Bathe and Baig 2005).
-#include "tcl/analysis/TRBDF2.h"
+#include "tcl/analysis/integrators/TRBDF2.h"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 
 #include "materials/Elastic.h"
-#include "tcl/analysis/AnalysisBuilder.h"
+#include "tcl/analysis/driver/AnalysisBuilder.h"
 #include "tcl/analysis/tests/SpringModel.h"
 
 namespace dabs::analysis {

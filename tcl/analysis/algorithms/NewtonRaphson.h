@@ -1,0 +1,23 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include "tcl/analysis/algorithms/SolutionAlgorithm.h"
+
+namespace dabs::analysis {
+
+/// Newton-Raphson (`algorithm Newton ?-initial|-initialThenCurrent?`) and modified Newton
+/// (`algorithm ModifiedNewton ?-initial?`, tangent formed once per step). With -initial the
+/// initial stiffness is factorised once and reused while the step coefficients stay the same.
+class NewtonRaphson final : public SolutionAlgorithm {
+ public:
+  enum class Tangent { Current, Initial, InitialThenCurrent };
+  NewtonRaphson(Tangent tangent, bool modified) : tangent_(tangent), modified_(modified) {}
+  Status solveCurrentStep(LinearSystem& system, Integrator& integrator,
+                          ConvergenceTest* test) override;
+
+ private:
+  Tangent tangent_;
+  bool modified_;
+};
+
+}  // namespace dabs::analysis

@@ -1,0 +1,114 @@
+// SPDX-License-Identifier: MIT
+#include "tcl/analysis/driver/ContactStepping.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <vector>
+
+#include "elements/ContactPredictor.h"
+#include "materials/InputError.h"
+
+namespace dabs::analysis {
+
+void ContactSteppingParams::validate() const {
+  if (!(maxStep > 0.0) || !std::isfinite(maxStep))
+    throw InputError("maxStep", "must be a positive step length");
+  if (!(lookAhead >= 0.0) || !std::isfinite(lookAhead))
+    throw InputError("lookAhead", "must be >= 0");
+  if (!(overshoot >= 1.0) || !std::isfinite(overshoot))
+    throw InputError("overshoot", "must be >= 1");
+  if (perContact < 0 || perContact > 100000)
+    throw InputError("perContact", "must be 0 (off) to 100000 steps per contact duration");
+}
+
+namespace {
+
+// Translational masses of an element's nodes (the largest of a node's three), for a pair that
+// takes its bodies' masses from its nodes.
+std::vector<double> nodeMasses(const elements::Element& e, const domain::Domain& domain) {
+  std::vector<double> masses;
+  for (int tag : e.nodeTags()) {
+    const domain::Node* n = domain.findNode(tag);
+    double largest = 0.0;
+    if (n != nullptr) {
+      const Eigen::MatrixXd& m = n->mass();
+      for (int d = 0; d < 3 && d < m.rows(); ++d) largest = std::max(largest, m(d, d));
+    }
+    masses.push_back(largest);
+  }
+  return masses;
+}
+
+}  // namespace
+
+void ContactStepping::attach(const domain::Domain& domain) {
+  pairs_.clear();
+  nodeMasses_.clear();
+  for (const auto& [tag, e] : domain.elements()) {
+    const elements::ContactPredictor* pair = e->contactPredictor();
+    if (pair == nullptr) continue;
+    pairs_.push_back(pair);
+    if (params_.perContact > 0) nodeMasses_.push_back(nodeMasses(*e, domain));
+  }
+  reset();
+}
+
+void ContactStepping::reset() {
+  lastGap_.assign(pairs_.size(), std::numeric_limits<double>::quiet_NaN());
+  lastRate_.assign(pairs_.size(), std::numeric_limits<double>::quiet_NaN());
+  lastStep_ = 0.0;
+  previousStep_ = 0.0;
+}
+
+double ContactStepping::nextStep(double remaining, double dt) {
+  double h = remaining;
+  bool near = false;
+  const double hMin = 0.01 * params_.maxStep;
+  for (std::size_t i = 0; i < pairs_.size(); ++i) {
+    const elements::ContactPredictor& pair = *pairs_[i];
+    const double gap = pair.committedGap();
+    bool pairNear = gap < 0.0 || pair.committedClosed();
+    const double last = lastGap_[i];  // NaN before the first step: no prediction
+    const double rate = lastStep_ > 0.0 && std::isfinite(last) && std::isfinite(gap)
+                            ? (gap - last) / lastStep_
+                            : std::numeric_limits<double>::quiet_NaN();
+    double tClose = std::numeric_limits<double>::infinity();
+    if (lastStep_ > 0.0 && gap > 0.0 && gap < last) tClose = gap * lastStep_ / (last - gap);
+    if (!(tClose < remaining) && gap > 0.0 && std::isfinite(rate) && std::isfinite(lastRate_[i]) &&
+        previousStep_ > 0.0) {
+      // Quadratic: the rate's change over the two steps' mid-points gives the acceleration a;
+      // from the end of the last step g(t) = g + v t + a t^2 / 2, v = rate + a h_last / 2.
+      const double a = (rate - lastRate_[i]) / (0.5 * (lastStep_ + previousStep_));
+      const double v = rate + 0.5 * a * lastStep_;
+      const double disc = v * v - 2.0 * a * gap;
+      if (a < 0.0 && disc >= 0.0) {
+        const double root = (v + std::sqrt(disc)) / -a;  // the positive root (g > 0, a < 0)
+        if (root < tClose) tClose = root;
+      }
+    }
+    if (tClose <= params_.lookAhead * remaining) pairNear = true;
+    // (overshoot x tClose may pass the end of the output step by a fraction of a contact step;
+    // the next output step is then that much shorter)
+    if (tClose < remaining) h = std::min(h, std::max(params_.overshoot * tClose, hMin));
+    lastGap_[i] = gap;
+    lastRate_[i] = rate;
+    if (pairNear) {
+      near = true;
+      if (params_.perContact > 0) {
+        // the gap rate over the last step (none before the first: a power law's pair then takes
+        // its speed from its penetration alone)
+        const double knownRate = std::isfinite(rate) ? rate : 0.0;
+        h = std::min(h, pair.contactDuration(nodeMasses_[i], knownRate) / params_.perContact);
+      }
+    }
+  }
+  if (near) h = std::min(h, params_.maxStep);
+  if (remaining - h < hMin) h = remaining;
+  previousStep_ = lastStep_;
+  lastStep_ = h;
+  if (h < 0.999 * dt) ++contactSteps_;
+  return h;
+}
+
+}  // namespace dabs::analysis
