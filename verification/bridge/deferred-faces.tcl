@@ -1,5 +1,5 @@
 # SPDX-License-Identifier: MIT
-# Resting faces: within one `analyze` call, the sleeping pairs against a girder-end face that
+# Deferred faces: within one `analyze` call, the sleeping pairs against a girder-end face that
 # nobody reads at every step are left alone (no far test, no commit) until the motion of their
 # nodes could have brought one of them to its search distance. The results must be those of the
 # far test of every step, to the bit: a face is tested exactly when its horizon is reached, so a
@@ -11,9 +11,10 @@
 # by lever arms of up to 7.5 m, which the motion bound must count (a bound that took the
 # rotation's change as a corner's fails here).
 #
-# Run A: `analyze 40` twenty times (faces rest). Run B: `analyze 1` 800 times (one step never
-# rests: every pair is tested at every step, as before resting existed). Run C: as A with an
-# Element recorder on every pair (a recorded pair is read at every step, so it never rests).
+# Run A: `analyze 40` twenty times (face tests deferred). Run B: `analyze 1` 800 times (one step
+# defers nothing: every pair is tested at every step, as before deferring existed). Run C: as A
+# with an Element recorder on every pair (a recorded pair is read at every step, so its face's
+# test is never deferred).
 # After every 40 steps each run prints every node's displacement and velocity and every pair's
 # gap, contact force, impulse, dissipated energy, status and slip at 17 digits: the three must
 # print the same lines, and A must have made fewer far tests than B and C.
@@ -111,13 +112,13 @@ proc snapshot {} {
   return $lines
 }
 
-# mode: rest (analyze 40 at a time), step (analyze 1), recorded (rest, with an Element recorder
+# mode: defer (analyze 40 at a time), step (analyze 1), recorded (defer, with an Element recorder
 # on every pair). Returns {lines farTests stats}.
 proc run {carrier search mu mode {integrator {Newmark 0.5 0.25}}} {
   build $carrier $search $mu $integrator
   set recorderFile ""
   if {$mode eq "recorded"} {
-    close [file tempfile recorderFile resting-faces.out]
+    close [file tempfile recorderFile deferred-faces.out]
     recorder Element -file $recorderFile -ele {*}$::pairs gap
   }
   try {
@@ -151,40 +152,40 @@ foreach {carrier search mu} {
 } {
   set name "$carrier, search $search, mu $mu"
   lassign [run $carrier $search $mu step] stepLines stepTests stepSummary
-  lassign [run $carrier $search $mu rest] restLines restTests restSummary
+  lassign [run $carrier $search $mu defer] deferLines deferTests deferSummary
   lassign [run $carrier $search $mu recorded] recLines recTests recSummary
   lassign $stepSummary steps iterations updates changes redone
   puts "$name: $steps steps, $iterations iterations, $changes pattern changes, $redone steps redone;\
-      far tests $stepTests (analyze 1), $restTests (resting), $recTests (recorded)"
+      far tests $stepTests (analyze 1), $deferTests (deferred), $recTests (recorded)"
   check "$name: the run completes and the faces pound (pattern changes)" \
       [expr {[lindex $stepLines end] ne "fail" && $changes >= 4}] "$changes"
   set differ 0
-  foreach a $stepLines b $restLines { if {$a ne $b} { incr differ } }
-  check "$name: resting faces give the same displacements, velocities and pair responses" \
-      [expr {$differ == 0 && [llength $stepLines] == [llength $restLines]}] "$differ lines differ"
+  foreach a $stepLines b $deferLines { if {$a ne $b} { incr differ } }
+  check "$name: deferred face tests give the same displacements, velocities and pair responses" \
+      [expr {$differ == 0 && [llength $stepLines] == [llength $deferLines]}] "$differ lines differ"
   check "$name: and the same iterations, element updates, pattern changes and redone steps" \
-      [expr {$stepSummary eq $restSummary}] "$stepSummary / $restSummary"
-  check "$name: resting faces make fewer far tests" [expr {$restTests < 0.8 * $stepTests}] \
-      "$restTests against $stepTests"
+      [expr {$stepSummary eq $deferSummary}] "$stepSummary / $deferSummary"
+  check "$name: deferred face tests make fewer far tests" [expr {$deferTests < 0.8 * $stepTests}] \
+      "$deferTests against $stepTests"
   set differ 0
   foreach a $stepLines b $recLines { if {$a ne $b} { incr differ } }
-  check "$name: recorded pairs give the same results and never rest" \
+  check "$name: recorded pairs give the same results and never deferred" \
       [expr {$differ == 0 && $recSummary eq $stepSummary && $recTests == $stepTests}] \
       "$differ lines differ, far tests $recTests"
 }
 # HHT (alpha 0.9): the nodes are at the alpha-weighted positions when the sleepers are tested,
-# and at t(n+1) when the step is committed, so a resting pair's gap, formed at the committed
-# positions, would not be the one the test of every step leaves: faces do not rest, and the two
+# and at t(n+1) when the step is committed, so a deferred pair's gap, formed at the committed
+# positions, would not be the one the test of every step leaves: face tests are not deferred, and the two
 # runs are the same to the bit, with the same far tests.
 set name "springs, search 0.001, HHT"
 lassign [run springs 0.001 0.0 step {HHT 0.9}] stepLines stepTests stepSummary
-lassign [run springs 0.001 0.0 rest {HHT 0.9}] restLines restTests restSummary
+lassign [run springs 0.001 0.0 defer {HHT 0.9}] deferLines deferTests deferSummary
 set differ 0
-foreach a $stepLines b $restLines { if {$a ne $b} { incr differ } }
+foreach a $stepLines b $deferLines { if {$a ne $b} { incr differ } }
 puts "$name: [lindex $stepSummary 3] pattern changes; far tests $stepTests (analyze 1),\
-    $restTests (analyze 40)"
-check "$name: no face rests, and the results are the same to the bit" \
-    [expr {$differ == 0 && [llength $stepLines] == [llength $restLines] &&
-           $stepSummary eq $restSummary && $stepTests == $restTests &&
-           [lindex $stepSummary 3] >= 4}] "$differ lines differ, far tests $restTests"
+    $deferTests (analyze 40)"
+check "$name: no face test deferred, and the results are the same to the bit" \
+    [expr {$differ == 0 && [llength $stepLines] == [llength $deferLines] &&
+           $stepSummary eq $deferSummary && $stepTests == $deferTests &&
+           [lindex $stepSummary 3] >= 4}] "$differ lines differ, far tests $deferTests"
 if {$failures > 0} { exit 1 }
