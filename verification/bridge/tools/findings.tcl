@@ -301,7 +301,7 @@ proc findings::paperFindings {motions ladder limits} {
     foreach r $runs {
       set n [failedCount $r]
       if {$n > 0} { set any 1 }
-      lappend parts [format "%s %s, %d failed, residual vertical offset %.3f m" [dict get $r case] [pct [strainMax $r]] $n [gapMax $r z last]]
+      lappend parts [format "%s %s, %d failed, residual vertical offset %.3f m" [dict get $r case] [pct [strainMax $r]] $n [residualGap $r z]]
     }
     lappend agree $any
     lappend ours "[motionName $runs], largest bearing shear strain: [join $parts {; }]"
@@ -373,7 +373,7 @@ proc findings::whyFailure {ladder} {
     set top [lindex [ladderOf $ladder $c] end]
     if {$s ne ""} {
       set l [lindex [lsearch -index 0 -inline -real [ladderOf $ladder $c] $s] 1]
-      set step [expr {[dict exists $l last] ? [format ", leaving a residual vertical step of %.3f m at a joint" [gapMax $l z last]] : ""}]
+      set step [expr {[dict exists $l last] ? [format ", leaving a residual vertical step of %.3f m at a joint" [residualGap $l z]] : ""}]
       lappend parts "$c: bearings reach 300 % from scale $s of the record$step"
     } elseif {$top ne ""} {
       lappend parts "$c: no bearing fails up to scale [lindex $top 0] ([pct [strainMax [dict create peak [dict get [lindex $top 1] peak]]]])"

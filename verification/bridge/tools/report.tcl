@@ -324,7 +324,7 @@ proc ladderTable {ladder} {
     set rn [dict create peak [dict get $ln peak]]; set rp [dict create peak [dict get $lp peak]]
     set force 0.0
     foreach j [findings::jointsOf $lp] { set force [expr {max($force, [dict get $lp peak force$j])}] }
-    set steps [lmap l [list $ln $lp] { format %.3f [findings::gapMax [dict create peak [dict get $l peak] last [dict get $l last]] z last] }]
+    set steps [lmap l [list $ln $lp] { format %.3f [findings::residualGap [dict create peak [dict get $l peak] last [dict get $l last]] z] }]
     append out "| $s | [findings::compare [findings::bearingLong $rn] [findings::bearingLong $rp] m] | [findings::pct [findings::strainMax $rn]] / [findings::pct [findings::strainMax $rp]] | [findings::failedCount $rn] / [findings::failedCount $rp] | [join $steps { / }] | [format %.0f $force] |\n"
   }
   return $out
