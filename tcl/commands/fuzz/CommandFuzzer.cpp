@@ -4,6 +4,12 @@
 // the dabs commands. Built only with clang and -DDABS_BUILD_FUZZERS=ON; seeds, dictionary and the
 // way to run it are in README.md beside this file.
 //
+// Mutations: a quarter of them are libFuzzer's own, on bytes; the rest change one argument slot
+// of one command at a time (StructureMutator.h), guided by the grammar commands.grammar, which
+// make-grammar.py derives from the command tables. DABS_FUZZ_BYTES_ONLY=1 in the environment
+// leaves only the byte mutations (the harness as it was, for comparisons); DABS_FUZZ_GRAMMAR
+// names another grammar file.
+//
 // The interpreter is made safe (no exec, open, file, source, exit, Tcl's load) and the dabs
 // commands that name files write only into the fuzzer's own temporary folder; loops are bounded by
 // Tcl's command limit, and `analyze` by step limits, so an input cannot hang the fuzzer on work
@@ -12,9 +18,16 @@
 
 #include <cstdint>
 #include <cstdlib>
+#include <cstring>
+#include <fstream>
+#include <memory>
+#include <sstream>
 #include <string>
 
 #include "tcl/commands/CommandTable.h"
+#include "tcl/commands/fuzz/StructureMutator.h"
+
+extern "C" std::size_t LLVMFuzzerMutate(std::uint8_t* data, std::size_t size, std::size_t maxSize);
 
 namespace {
 
@@ -55,6 +68,9 @@ proc analyze {n args} {
 // working directory, which therefore stays as it is).
 std::string gFolder;
 
+// The structure-aware mutator, or null when only byte mutations are wanted.
+std::unique_ptr<dabs::tcl::fuzz::StructureMutator> gMutator;
+
 }  // namespace
 
 extern "C" int LLVMFuzzerInitialize(int* /*argc*/, char*** argv) {
@@ -66,7 +82,30 @@ extern "C" int LLVMFuzzerInitialize(int* /*argc*/, char*** argv) {
   if (record == nullptr) std::abort();
   std::fputs("0.0 0.1 0.3 -0.2 0.05 0.0\n", record);
   std::fclose(record);
+  const char* bytesOnly = std::getenv("DABS_FUZZ_BYTES_ONLY");
+  if (bytesOnly == nullptr || std::strcmp(bytesOnly, "1") != 0) {
+    const char* path = std::getenv("DABS_FUZZ_GRAMMAR");
+    std::ifstream in(path != nullptr ? path : DABS_FUZZ_GRAMMAR);
+    std::stringstream text;
+    text << in.rdbuf();
+    auto grammar = dabs::tcl::fuzz::Grammar::parse(text.str());
+    // Without its grammar the mutator would still run, on the seeds' words only: say so.
+    std::fprintf(stderr, "dabs fuzz: %zu command templates from %s\n", grammar.templates.size(),
+                 path != nullptr ? path : DABS_FUZZ_GRAMMAR);
+    gMutator = std::make_unique<dabs::tcl::fuzz::StructureMutator>(std::move(grammar));
+  }
   return 0;
+}
+
+extern "C" std::size_t LLVMFuzzerCustomMutator(std::uint8_t* data, std::size_t size,
+                                               std::size_t maxSize, unsigned seed) {
+  if (gMutator == nullptr || seed % 4 == 0) return LLVMFuzzerMutate(data, size, maxSize);
+  const std::string out =
+      gMutator->mutate(std::string_view(reinterpret_cast<const char*>(data), size), seed);
+  // A script grown past the size limit gets a byte mutation instead.
+  if (out.size() > maxSize || out.empty()) return LLVMFuzzerMutate(data, size, maxSize);
+  std::memcpy(data, out.data(), out.size());
+  return out.size();
 }
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
