@@ -53,6 +53,8 @@ expectError "recorder -nodeRange with no node" { recorder Node -file n.out -node
 # Recorder dofs a node does not have used to write columns of zeros.
 expectError "recorder Node -dof 99" { recorder Node -file n.out -node 2 -dof 1 99 disp } {-dof 99 node 2}
 expectError "recorder Node -dof 0" { recorder Node -file n.out -node 2 -dof 0 disp } {-dof}
+# The smallest int as a dof overflowed when made zero-based (found by the structure-aware fuzzer).
+expectError "recorder Node -dof -2147483648" { recorder Node -file n.out -node 2 -dof -2147483648 disp } {-dof}
 expectError "recorder Node eigen1.5" { recorder Node -file n.out -node 2 -dof 1 eigen1.5 } {eigen mode}
 expectError "recorder Drift -dof 9" { recorder Drift -file d.out -iNode 1 -jNode 2 -dof 9 -perpDirn 2 } {-dof 9}
 
