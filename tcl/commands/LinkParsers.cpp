@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 // Parsers of the link elements: zeroLength, truss and corotTruss.
 #include <cmath>
+#include <limits>
 #include <optional>
 
 #include "elements/link/Truss.h"
@@ -68,7 +69,10 @@ std::unique_ptr<elements::Element> parseTruss(Runtime& rt, ArgReader& a, int tag
     p.area = first;
     material = rt.builder.uniaxialMaterial(*mat).clone();
   } else {
-    if (first != std::floor(first)) a.fail(3, "secTag", "expected a section tag (or A matTag)");
+    // A whole number beyond int's range (-1e308) is no tag: converting it would be undefined.
+    if (first != std::floor(first) || first < std::numeric_limits<int>::min() ||
+        first > std::numeric_limits<int>::max())
+      a.fail(3, "secTag", "expected a section tag (or A matTag)");
     p.area = 1.0;  // the section's axial force is the truss force
     material = std::make_unique<materials::section::SectionAxialMaterial>(
         rt.builder.section(static_cast<int>(first)).clone());

@@ -105,7 +105,11 @@ void nodeRecorder(Runtime& rt, ArgReader& a, bool envelope) {
   }
   a.finish();
   std::vector<int> zeroBased;
-  for (int d : *dofs) zeroBased.push_back(d - 1);
+  for (int d : *dofs) {
+    // Checked before the shift: d - 1 of the smallest int overflows.
+    if (d < 1) a.failArgument("-dof", "expected dofs from 1");
+    zeroBased.push_back(d - 1);
+  }
   auto recorder = std::make_unique<domain::NodeRecorder>(out, nodes, zeroBased, kind, mode, series);
   setResult(rt, rt.domain.addRecorder(std::move(recorder)));
 }

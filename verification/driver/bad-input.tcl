@@ -53,6 +53,8 @@ expectError "recorder -nodeRange with no node" { recorder Node -file n.out -node
 # Recorder dofs a node does not have used to write columns of zeros.
 expectError "recorder Node -dof 99" { recorder Node -file n.out -node 2 -dof 1 99 disp } {-dof 99 node 2}
 expectError "recorder Node -dof 0" { recorder Node -file n.out -node 2 -dof 0 disp } {-dof}
+# The smallest int as a dof overflowed when made zero-based (found by the structure-aware fuzzer).
+expectError "recorder Node -dof -2147483648" { recorder Node -file n.out -node 2 -dof -2147483648 disp } {-dof}
 expectError "recorder Node eigen1.5" { recorder Node -file n.out -node 2 -dof 1 eigen1.5 } {eigen mode}
 expectError "recorder Drift -dof 9" { recorder Drift -file d.out -iNode 1 -jNode 2 -dof 9 -perpDirn 2 } {-dof 9}
 
@@ -81,6 +83,10 @@ expectError "fixY flag 2" { fixY 3.0 2 0 0 } {fixY flag 2}
 expectError "elasticBeamColumn from node 2 to itself" { element elasticBeamColumn 50 2 2 0.1 2.0e8 1.0e-3 1 } {element node 2 twice}
 expectError "zeroLength 50 3 3" { element zeroLength 50 3 3 -mat 1 -dir 1 } {zeroLength node 3 twice}
 expectError "equalDOF 2 3 1 1" { equalDOF 2 3 1 1 } {equalDOF dof 1 twice}
+# A truss's section tag of a whole number beyond int's range was converted to int (undefined;
+# found by the structure-aware fuzzer).
+expectError "truss section tag -1e308" { element truss 51 2 3 -1e308 } {secTag}
+expectError "truss section tag 1e10" { element truss 51 2 3 1e10 } {secTag}
 expectUnchanged "after the rejected elements" $state
 
 # Solution parameters outside their stable ranges.

@@ -4,17 +4,33 @@
 // the dabs commands. Built only with clang and -DDABS_BUILD_FUZZERS=ON; seeds, dictionary and the
 // way to run it are in README.md beside this file.
 //
+// Mutations: a quarter of them are libFuzzer's own, on bytes; the rest change one argument slot
+// of one command at a time (StructureMutator.h), guided by the grammar commands.grammar, which
+// make-grammar.py derives from the command tables. DABS_FUZZ_BYTES_ONLY=1 in the environment
+// leaves only the byte mutations (the harness as it was, for comparisons); DABS_FUZZ_GRAMMAR
+// names another grammar file.
+//
 // The interpreter is made safe (no exec, open, file, source, exit, Tcl's load) and the dabs
 // commands that name files write only into the fuzzer's own temporary folder; loops are bounded by
 // Tcl's command limit, and `analyze` by step limits, so an input cannot hang the fuzzer on work
 // it asked for rather than on a fault.
 #include <tcl.h>
+#include <unistd.h>
 
 #include <cstdint>
 #include <cstdlib>
+#include <cstring>
+#include <fstream>
+#include <memory>
+#include <sstream>
 #include <string>
+#include <vector>
 
 #include "tcl/commands/CommandTable.h"
+#include "tcl/commands/fuzz/StructureMutator.h"
+#include "tcl/parallel/ParallelCommands.h"
+
+extern "C" std::size_t LLVMFuzzerMutate(std::uint8_t* data, std::size_t size, std::size_t maxSize);
 
 namespace {
 
@@ -51,27 +67,84 @@ proc analyze {n args} {
 }
 )TCL";
 
-// The fuzzer's own temporary folder (absolute: libFuzzer reads its corpus folders relative to the
-// working directory, which therefore stays as it is).
+// The fuzzer's own temporary folder, the working directory while an input runs: every file an
+// input names by a relative path (recorders, print -file, ensemble -out) lands there, and
+// record.txt is found there.
 std::string gFolder;
+// The working directory the fuzzer started in, restored after each input: libFuzzer reads and
+// writes its corpus folders relative to it.
+std::string gStart;
+
+// The structure-aware mutator, or null when only byte mutations are wanted.
+std::unique_ptr<dabs::tcl::fuzz::StructureMutator> gMutator;
 
 }  // namespace
 
-extern "C" int LLVMFuzzerInitialize(int* /*argc*/, char*** argv) {
+extern "C" int LLVMFuzzerInitialize(int* argc, char*** argv) {
   Tcl_FindExecutable((*argv)[0]);
   char dir[] = "/tmp/dabs-fuzz-XXXXXX";
   if (mkdtemp(dir) == nullptr) std::abort();
   gFolder = dir;
+  char* cwd = getcwd(nullptr, 0);
+  if (cwd == nullptr) std::abort();
+  gStart = cwd;
+  std::free(cwd);
+  // A crash is written while the input runs in gFolder: libFuzzer's artifact paths are made
+  // absolute (it reads its flags after this function), so crash files land where they are asked.
+  static std::vector<std::string> args;
+  static std::vector<char*> pointers;
+  bool prefixed = false;
+  for (int i = 0; i < *argc; ++i) {
+    std::string a = (*argv)[i];
+    for (const char* flag : {"-artifact_prefix=", "-exact_artifact_path="}) {
+      const std::size_t n = std::strlen(flag);
+      if (a.compare(0, n, flag) != 0) continue;
+      if (a.size() > n && a[n] != '/') a.insert(n, gStart + "/");
+      prefixed = prefixed || flag[1] == 'a';
+    }
+    args.push_back(a);
+  }
+  if (!prefixed) args.push_back("-artifact_prefix=" + gStart + "/");
+  for (std::string& a : args) pointers.push_back(a.data());
+  pointers.push_back(nullptr);
+  *argc = static_cast<int>(args.size());
+  *argv = pointers.data();
   FILE* record = std::fopen((gFolder + "/record.txt").c_str(), "w");
   if (record == nullptr) std::abort();
   std::fputs("0.0 0.1 0.3 -0.2 0.05 0.0\n", record);
   std::fclose(record);
+  const char* bytesOnly = std::getenv("DABS_FUZZ_BYTES_ONLY");
+  if (bytesOnly == nullptr || std::strcmp(bytesOnly, "1") != 0) {
+    const char* path = std::getenv("DABS_FUZZ_GRAMMAR");
+    std::ifstream in(path != nullptr ? path : DABS_FUZZ_GRAMMAR);
+    std::stringstream text;
+    text << in.rdbuf();
+    auto grammar = dabs::tcl::fuzz::Grammar::parse(text.str());
+    // Without its grammar the mutator would still run, on the seeds' words only: say so.
+    std::fprintf(stderr, "dabs fuzz: %zu command templates from %s\n", grammar.templates.size(),
+                 path != nullptr ? path : DABS_FUZZ_GRAMMAR);
+    gMutator = std::make_unique<dabs::tcl::fuzz::StructureMutator>(std::move(grammar));
+  }
   return 0;
 }
 
+extern "C" std::size_t LLVMFuzzerCustomMutator(std::uint8_t* data, std::size_t size,
+                                               std::size_t maxSize, unsigned seed) {
+  if (gMutator == nullptr || seed % 4 == 0) return LLVMFuzzerMutate(data, size, maxSize);
+  const std::string out =
+      gMutator->mutate(std::string_view(reinterpret_cast<const char*>(data), size), seed);
+  // A script grown past the size limit gets a byte mutation instead.
+  if (out.size() > maxSize || out.empty()) return LLVMFuzzerMutate(data, size, maxSize);
+  std::memcpy(data, out.data(), out.size());
+  return out.size();
+}
+
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+  if (chdir(gFolder.c_str()) != 0) std::abort();
   Tcl_Interp* interp = Tcl_CreateInterp();
-  if (Tcl_MakeSafe(interp) != TCL_OK || dabs::tcl::registerCommands(interp) != TCL_OK ||
+  // The program's command set: the library's and the parallel commands (getPID, send, ensemble...).
+  const std::span<const dabs::tcl::CommandEntry> parallel[] = {dabs::parallel::parallelCommands()};
+  if (Tcl_MakeSafe(interp) != TCL_OK || dabs::tcl::registerCommands(interp, parallel) != TCL_OK ||
       Tcl_Eval(interp, ("namespace eval ::fuzz {variable dir " + gFolder + "}").c_str()) !=
           TCL_OK ||
       Tcl_Eval(interp, kPrelude) != TCL_OK)
@@ -93,5 +166,6 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     }
   }
   Tcl_DeleteInterp(interp);
+  if (chdir(gStart.c_str()) != 0) std::abort();
   return 0;
 }
