@@ -10,7 +10,7 @@
 # viaduct-<nSpans>-<dt>-<contactDt>-<lookAhead>.txt) with the run's line and its quantities (a Tcl
 # dict): every joint's peak and residual longitudinal and transverse gaps and every bearing's
 # peak shear strain, which viaduct-compare.tcl compares with a reference run of the same size.
-# The default dt is the viaducts' (bridge.tcl viaductDt, 0.005 s) at every size, so that the
+# The default dt is the viaducts' (bridge.tcl viaductDt, 0.0025 s) at every size, so that the
 # sizes are compared at the same settings.
 set ::bridgeLibraryOnly 1
 source [file join [file dirname [info script]] .. bridge bridge.tcl]
