@@ -72,7 +72,7 @@ std::unique_ptr<elements::Element> parseTruss(Runtime& rt, ArgReader& a, int tag
     // A whole number beyond int's range (-1e308) is no tag: converting it would be undefined.
     if (first != std::floor(first) || first < std::numeric_limits<int>::min() ||
         first > std::numeric_limits<int>::max())
-      a.fail(3, "secTag", "expected a section tag (or A matTag)");
+      a.failArgument("A | secTag", "expected a section tag (or A matTag)");
     p.area = 1.0;  // the section's axial force is the truss force
     material = std::make_unique<materials::section::SectionAxialMaterial>(
         rt.builder.section(static_cast<int>(first)).clone());

@@ -85,8 +85,8 @@ expectError "zeroLength 50 3 3" { element zeroLength 50 3 3 -mat 1 -dir 1 } {zer
 expectError "equalDOF 2 3 1 1" { equalDOF 2 3 1 1 } {equalDOF dof 1 twice}
 # A truss's section tag of a whole number beyond int's range was converted to int (undefined;
 # found by the structure-aware fuzzer).
-expectError "truss section tag -1e308" { element truss 51 2 3 -1e308 } {secTag}
-expectError "truss section tag 1e10" { element truss 51 2 3 1e10 } {secTag}
+expectError "truss section tag -1e308" { element truss 51 2 3 -1e308 } {{argument 5} secTag}
+expectError "truss section tag 1e10" { element truss 51 2 3 1e10 } {{argument 5} secTag}
 expectUnchanged "after the rejected elements" $state
 
 # Solution parameters outside their stable ranges.
