@@ -126,7 +126,9 @@ void SleepingPairs::buildMotionBounds(const DofSource& dofs) {
 }
 
 void SleepingPairs::setDisplacements(const Eigen::VectorXd& U) {
-  if (pairs_.empty()) return;
+  // Read only to defer a face's test, which needs an unobserved pair: with every pair observed
+  // (contact stepping, a script after each step) no copy is made in the Newton iterations.
+  if (!mayDefer_) return;
   U_ = U;
   haveU_ = true;
 }

@@ -66,7 +66,7 @@ class SleepingPairs {
   /// would carry force in this trial state.
   Check check(double dt, std::span<const SupportSlot> slots, const Waker& wake);
   /// The displacements (equation space) the trial state was formed from, what the motion of a face
-  /// whose test is deferred is measured on; copied.
+  /// whose test is deferred is measured on; copied when some pair is unobserved (else unused).
   void setDisplacements(const Eigen::VectorXd& U);
 
   /// Start of a run of steps (analyze): which pairs are observed at every step (read by a
