@@ -23,12 +23,7 @@ proc median {values} {
   set n [llength $s]
   return [expr {$n % 2 ? [lindex $s [expr {$n / 2}]] : 0.5 * ([lindex $s [expr {$n / 2 - 1}]] + [lindex $s [expr {$n / 2}]])}]
 }
-proc cpuSeconds {} {
-  set f [open /proc/self/stat]
-  set fields [split [read $f]]
-  close $f
-  return [expr {([lindex $fields 13] + [lindex $fields 14]) / 100.0}]
-}
+source [file join [file dirname [info script]] cpu-time.tcl]
 
 set cases {nopound pound countermeasure}
 set motions [expr {[file exists $recordFile] ? {record pulse} : {pulse}}]

@@ -31,13 +31,7 @@ set process [expr {$argc > 6 ? [lindex $argv 6] : "fresh"}]
 if {$order ni {joint after}} { error "far-pairs.tcl: order must be joint or after, not \"$order\"" }
 if {$process ni {fresh same}} { error "far-pairs.tcl: process must be fresh or same, not \"$process\"" }
 
-proc cpuSeconds {} {
-  set f [open /proc/self/stat]
-  set fields [split [read $f]]
-  close $f
-  # after the command name in parentheses: utime and stime are fields 14 and 15 (1-based)
-  return [expr {([lindex $fields 13] + [lindex $fields 14]) / 100.0}]
-}
+source [file join [file dirname [info script]] cpu-time.tcl]
 
 proc pairs {j mode} {
   set a [expr {1000 * $j}]; set b [expr {1000 * $j + 100}]

@@ -17,11 +17,7 @@ set tmp [file join [pwd] recorder-bench-out]
 file mkdir $tmp
 
 # Processor time (user + system) of this process in seconds, Linux only.
-proc cpuSeconds {} {
-  set f [open /proc/self/stat]; set fields [split [lindex [split [read $f] ")"] end]]; close $f
-  # after the command name: state is field 3, utime and stime fields 14 and 15
-  return [expr {([lindex $fields 12] + [lindex $fields 13]) / 100.0}]
-}
+source [file join [file dirname [info script]] cpu-time.tcl]
 
 proc median {values} {
   set s [lsort -real $values]

@@ -22,12 +22,7 @@ set contactLookahead [expr {$argc > 4 ? [lindex $argv 4] : $contactLookahead}]
 set duration  [expr {$argc > 5 ? [lindex $argv 5] : $duration}]
 set out       [expr {$argc > 6 ? [lindex $argv 6] : "viaduct-$nSpans-$dt-$contactDt-$contactLookahead.txt"}]
 
-proc cpuSeconds {} {
-  set f [open /proc/self/stat]
-  set fields [split [read $f]]
-  close $f
-  return [expr {([lindex $fields 13] + [lindex $fields 14]) / 100.0}]
-}
+source [file join [file dirname [info script]] cpu-time.tcl]
 set c0 [cpuSeconds]
 set r [runCase pound 1.0 $dt Newmark $tol record]
 set cpu [expr {[cpuSeconds] - $c0}]
