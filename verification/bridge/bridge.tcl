@@ -853,15 +853,16 @@ proc buildModel {case} {
         lappend ::endEles {*}[jointDevices [expr {$nb + 10}] [expr {$nb + 2000}] $left $right \
             [expr {$e == 0 ? $other : $unitEnd}] [expr {$e == 0 ? $unitEnd : $other}] $xe $zG]
       }
-      # {left node, right node, contact pairs, lever}: the end joint as a joint (gap = right -
-      # left). The other side's node is the neighbour's centre (adjacent) or the backwall's node
-      # on the face (abutment); lever is the face's offset from it along X, so that its face moves
-      # as u + theta x (lever, 0, 0): the neighbour's yaw and pitch move its end transversely and
-      # vertically by 20 m times the rotation, which its centre does not show
+      # {left node, right node, contact pairs, other side's node, lever, its face's corners}: the
+      # end joint as a joint (gap = right - left). The other side's node is the neighbour's centre
+      # (adjacent) or the backwall's node on the face (abutment); lever is the face's offset from
+      # it along X, so that its face moves as u + theta x (lever, 0, 0): the neighbour's yaw and
+      # pitch move its end transversely and vertically by 20 m times the rotation, which its
+      # centre does not show
       set lever [expr {$xFace - [nodeCoord $other 1]}]
       set corners [lmap k {1 2 3 4} {expr {$nb + ($e == 0 ? 70 : 60) + $k}}]
       lappend ::endJoints [list [expr {$e == 0 ? $other : $unitEnd}] [expr {$e == 0 ? $unitEnd : $other}] $list \
-          [expr {$e == 0 ? $lever : 0.0}] [expr {$e == 0 ? 0.0 : $lever}] $other $lever $corners]
+          $other $lever $corners]
     }
   }
 
@@ -1123,14 +1124,11 @@ proc monitorStep {} {
   variable ::run::endClosed
   set e 0
   foreach joint $::endJoints {
-    lassign $joint a b pairs leverA leverB
+    lassign $joint a b pairs
     set gx [expr {[nodeDisp $b 1] - [nodeDisp $a 1]}]
     if {$gx > [dict get $peak endopen$e]} { dict set peak endopen$e $gx }
     if {$gx < [dict get $peak endclose$e]} { dict set peak endclose$e $gx }
     dict set last endgap$e $gx
-    # the faces' transverse and vertical offsets: u_y + theta_z lever, u_z - theta_y lever
-    dict set last endgap${e}y [expr {[nodeDisp $b 2] + [nodeDisp $b 6] * $leverB - [nodeDisp $a 2] - [nodeDisp $a 6] * $leverA}]
-    dict set last endgap${e}z [expr {[nodeDisp $b 3] - [nodeDisp $b 5] * $leverB - [nodeDisp $a 3] + [nodeDisp $a 5] * $leverA}]
     set f 0.0
     foreach c $pairs {
       set f [expr {$f + [lindex [eleResponse $c contactForce] 0]}]
@@ -1286,18 +1284,25 @@ proc runCase {case scale dt integrator tol motion {csv ""} {perStep ""}} {
   if {![info exists equilibrium]} { set equilibrium [dynamicEquilibrium] }
   set contactSubsteps [dict get [contactStepping] contactSteps]
   contactStepping -off
-  # the end joints' other face moved as monitorStep reads it (its node plus the rotation times the
-  # lever) and as its four corners, rigidly tied to that node by the solver, say (their mean)
-  set endFaces {}
-  foreach joint $::endJoints {
-    lassign $joint a b pairs leverA leverB other lever corners
-    foreach dof {2 3} rot {6 5} sign {1.0 -1.0} {
-      set read [expr {[nodeDisp $other $dof] + $sign * [nodeDisp $other $rot] * $lever}]
-      set mean [expr {[tcl::mathop::+ {*}[lmap c $corners {nodeDisp $c $dof}]] / 4.0}]
-      lappend endFaces [list [expr {$dof == 2 ? "transverse" : "vertical"}] $read $mean]
-    }
-  }
   foreach v {peak last impacts} { set $v [set ::run::$v] }
+  # The end joints' residual transverse and vertical offsets (read once, at the end), at the other
+  # side's face: u_y + theta_z lever and u_z - theta_y lever of its node, less the unit's end node
+  # (on its face), as gap = right - left. The face's position is checked against the mean of its
+  # four corners, which the solver ties rigidly to its node (endFaces, checks.tcl).
+  set endFaces {}
+  set e 0
+  foreach joint $::endJoints {
+    lassign $joint a b pairs other lever corners
+    set unitEnd [expr {$other == $a ? $b : $a}]
+    set sign [expr {$other == $b ? 1.0 : -1.0}]
+    foreach dof {2 3} rot {6 5} turn {1.0 -1.0} dir {y z} {
+      set face [expr {[nodeDisp $other $dof] + $turn * [nodeDisp $other $rot] * $lever}]
+      dict set last endgap$e$dir [expr {$sign * ($face - [nodeDisp $unitEnd $dof])}]
+      set mean [expr {[tcl::mathop::+ {*}[lmap c $corners {nodeDisp $c $dof}]] / 4.0}]
+      lappend endFaces [list [expr {$dir eq "y" ? "transverse" : "vertical"}] $face $mean]
+    }
+    incr e
+  }
   set wall2 [clock microseconds]
   if {$fh ne ""} { close $fh }
   set damage {}

@@ -61,8 +61,8 @@ proc checks::run {r} {
           $name $bt $gap] [expr {$gap <= 0.005}]
     }
   }
-  # the end joints' transverse and vertical offsets are read at the other side's face: its node's
-  # displacement plus the rotation times the lever equals the mean of the face's corners
+  # the end joints' residual transverse and vertical offsets are read at the other side's face:
+  # its node's displacement plus the rotation times the lever equals the mean of its corners
   if {[dict exists $r endFaces]} {
     foreach f [dict get $r endFaces] {
       lassign $f what read mean
