@@ -203,6 +203,9 @@ class NodeToSurfaceContact3d : public elements::FixedSizeElement<5, Ndf, 0u>,
   }
   double committedGap() const override { return committed_.gap; }
   bool committedClosed() const override { return committed_.status != ContactStatus::Open; }
+  bool committedTension() const override {
+    return committed_.status == ContactStatus::Open && committed_.force(0) != 0.0;
+  }
   /// m from -masses M1 M2 when both are given, else the contactor node's mass and the sum of the
   /// four face nodes' masses (a face without mass is fixed: m = M1).
   double contactDuration(std::span<const double> nodeMasses, double gapRate) const override;
@@ -272,6 +275,8 @@ class NodeToSurfaceContact3d : public elements::FixedSizeElement<5, Ndf, 0u>,
   std::uint8_t switches_ = 0;      ///< switches of the held branches in this step
   std::uint8_t triedNormal_ = 0;   ///< normal branches held in this step (bit per branch)
   std::uint8_t triedSliding_ = 0;  ///< friction branches held in this step (1 stick, 2 slide)
+  std::uint8_t crossings_ = 0;     ///< held closed branch: updates whose gap changed sign
+  bool lastInside_ = false;        ///< held closed branch: the last update's gap was < 0
   bool frictionHeld_ = false;      ///< held_.sliding is held (else the next contact update's)
   /// trial_ equals committed_ but for the gap, both quietFar, and the matrices are zero: set by a
   /// full commit or revert of such a state, cleared by every other write of trial_.
@@ -309,13 +314,16 @@ class NodeToSurfaceContact3d : public elements::FixedSizeElement<5, Ndf, 0u>,
     bool operator==(const Branches&) const = default;
   };
   static constexpr int kMaxSwitches = 8;
+  /// Sign changes of the gap under a held closed branch after which an approaching pair with a
+  /// rate term holds the spring alone (see update()).
+  static constexpr int kMaxCrossings = 2;
   static std::uint8_t bit(NormalBranch b) noexcept {
     return static_cast<std::uint8_t>(1u << static_cast<unsigned>(b));
   }
   /// Commit and revert end the step: nothing is held and no branch has been tried.
   void releaseHold() noexcept {
     holding_ = false;
-    switches_ = triedNormal_ = triedSliding_ = 0;
+    switches_ = triedNormal_ = triedSliding_ = crossings_ = 0;
   }
   static bool inContact(NormalBranch b) noexcept {
     return b == NormalBranch::Kelvin || b == NormalBranch::Spring;

@@ -15,6 +15,9 @@ class ContactPredictor {
   virtual double committedGap() const = 0;
   /// True when the last committed state is in contact (sticking or sliding), whatever its gap.
   virtual bool committedClosed() const = 0;
+  /// True when the last committed state is open but carries a force: the tension a release step
+  /// may end with (the trapezoid rule carries it through the next step's average as well).
+  virtual bool committedTension() const { return false; }
   /// Duration of the pair's undamped contact (time), m the reduced mass of the two bodies: for a
   /// linear spring K the half period pi sqrt(m / K), whatever the speed; for a power law
   /// N = k delta^n it depends on the impact speed, which the pair takes from its committed

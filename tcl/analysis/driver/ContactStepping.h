@@ -46,6 +46,8 @@ struct ContactSteppingParams {
 ///   the impact is resolved whatever its stiffness (a step longer than the impact integrates it
 ///   in one or two steps of the trapezoid rule, whose release force then acts through the next
 ///   step's average and can throw the bodies apart faster than they met).
+/// - the step after a release step that ended in tension (ContactPredictor::committedTension) is
+///   no longer than the release step: the trapezoid rule carries that force through it as well.
 ///
 /// The pairs are read from their committed states (between steps), one pass over the pairs per
 /// step; the class owns the gaps of the last step.

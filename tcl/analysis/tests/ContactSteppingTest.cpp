@@ -139,6 +139,23 @@ TEST(ContactSteppingTest, ClosedPairTakesTheContactStepAndResetForgetsTheHistory
   EXPECT_DOUBLE_EQ(stepping.nextStep(0.01, 0.01), 0.01);
 }
 
+// A release step ends in tension (K 1e5, committed at g_n = -1e-4 with N_n = K delta_n = 10, then
+// open at g = 1e-3: N = -N_n g / (g - g_n) = -9.09); the trapezoid rule carries that force through
+// the next step as well, so the next step is no longer than the release step (here 0.2 ms,
+// shorter than maxStep), and once the pair is open without force it takes the output step again.
+TEST(ContactSteppingTest, TheStepAfterAReleaseInTensionIsNoLongerThanTheRelease) {
+  OnePair model;
+  ContactStepping stepping(params(0.0005));
+  stepping.attach(model.domain());
+  model.commitGap(-1e-4);
+  EXPECT_DOUBLE_EQ(stepping.nextStep(0.0002, 0.01), 0.0002);  // closed: the rest of the step
+  model.commitGap(1e-3);
+  EXPECT_DOUBLE_EQ(stepping.nextStep(0.01, 0.01), 0.0002);
+  // open, no force, moving apart no slower than over the release step: nothing predicted
+  model.commitGap(2.2e-3);
+  EXPECT_DOUBLE_EQ(stepping.nextStep(0.01, 0.01), 0.01);
+}
+
 TEST(ContactSteppingTest, PerContactLimitsTheStepToAFractionOfTheContactDuration) {
   // -masses 2 3, K 1e5: m = 1.2, T_c = pi sqrt(1.2 / 1e5); 20 steps per contact.
   {
