@@ -131,6 +131,7 @@ void NodeToSurfaceContact3d<Ndf>::holdStatus() {
   if (holding_) return;
   holding_ = true;
   held_ = natural_;
+  lastInside_ = trial_.gap < 0.0;
   // An open pair has no friction branch yet: its first update in contact takes the cone's.
   frictionHeld_ = inContact(held_.normal);
   slideDirection_ = trialFriction_;
@@ -171,6 +172,7 @@ elements::Element::HeldStatus NodeToSurfaceContact3d<Ndf>::checkHeldStatus() {
   noteTried(next);
   if (next.sliding) slideDirection_ = trialFriction_;
   held_ = next;
+  lastInside_ = trial_.gap < 0.0;
   return HeldStatus::Switched;
 }
 
@@ -321,7 +323,24 @@ Status NodeToSurfaceContact3d<Ndf>::update(const elements::Kinematics& kin) {
   if (!releasing && g.value() < 0.0 && Nn.value() > 0.0) natural_.normal = NormalBranch::Kelvin;
   approaching_ = gdot.value() <= 0.0;
   springAgrees_ = g.value() <= 0.0 && approaching_;
-  NormalBranch branch = holding_ ? heldNormal : natural_.normal;
+  if (holding_ && heldNormal == NormalBranch::Kelvin && normal_.velocityDependent() &&
+      normal_.law() != ImpactLaw::Kelvin) {
+    // A power law's held closed force continues across the face, and with a rate term whose
+    // coefficient rises from the touch with infinite slope (Jankowski's c delta^(1/4)) it has a
+    // cusp there: an end state within that rise (a step much longer than the impact may need
+    // the damping force at a penetration of 1e-14 m) is out of Newton's reach, whose iterates
+    // jump back and forth across the face. As at Kelvin's dashpot jump (checkHeldStatus), the
+    // spring alone is held while the pair approaches once the iterates have crossed the face
+    // twice. (Kelvin's held force is linear across the face: no such cusp.)
+    const bool inside = g.value() < 0.0;
+    if (inside != lastInside_) ++crossings_;
+    lastInside_ = inside;
+    if (crossings_ >= kMaxCrossings && approaching_) {
+      held_.normal = NormalBranch::Spring;
+      noteTried(held_);
+    }
+  }
+  NormalBranch branch = holding_ ? held_.normal : natural_.normal;
   switch (branch) {
     case NormalBranch::Open: Nn = AD(0.0); break;
     case NormalBranch::Kelvin:
