@@ -145,8 +145,9 @@ int printHelp() {
       "and ensemble act for the processes mpirun started).\n"
 #endif
       "\nEnvironment:\n"
-      "  DABS_THREADS=n                 threads that update elements (as the `threads n`\n"
-      "                                 command; default 1)\n"
+      "  DABS_THREADS=n|auto            threads that update elements (as the `threads n`\n"
+      "                                 command; default auto: measured on the model's first\n"
+      "                                 steps, one thread or all)\n"
       "\nDocumentation: README.md at the top of the source tree (%s): the command table,\n"
       "speed against OpenSees, where dabs differs from OpenSees; docs/ beside it: the case\n"
       "study, contact (impact laws, contact stepping), bearings, ensembles and MPI.\n",

@@ -2,6 +2,7 @@
 // Analysis commands: analysis, analyze, eigen, wipe, wipeAnalysis, reset, initialize, testIter,
 // threads, analysisStatistics; the strategy commands (constraints, numberer, system, test,
 // algorithm, integrator) are in StrategyCommands.cpp and listed here.
+#include <charconv>
 #include <chrono>
 #include <cstdio>
 #include <optional>
@@ -186,15 +187,20 @@ void testIterCmd(Runtime& rt, ArgReader& a) {
   setResult(rt, test != nullptr ? test->iterations() : 0);
 }
 
-// DABS extension: `threads ?n?` sets how many threads update the elements (1 to 256; results are
-// bit-identical at any count) and returns the count in force.
+// DABS extension: `threads ?n|auto?` sets how many threads update the elements (1 to 256, or
+// auto: measured on the model's first steps, ThreadChoice; results are bit-identical at any
+// count) and returns the count in force (while auto is still measuring, the next step's).
 void threadsCmd(Runtime& rt, ArgReader& a) {
-  if (const auto n = a.optionalInteger("n")) {
-    if (*n < 1 || *n > 256) a.failArgument("n", "must be 1 to 256");
+  if (a.hasMore()) {
+    const std::string word = a.word("n");
+    int n = 0;
+    if (word != "auto") {
+      const auto [end, error] = std::from_chars(word.data(), word.data() + word.size(), n);
+      if (error != std::errc() || end != word.data() + word.size() || n < 1 || n > 256)
+        a.failArgument("n", "must be 1 to 256 or auto");
+    }
     a.finish();
-    rt.analysis->setThreads(*n);
-  } else {
-    a.finish();
+    rt.analysis->setThreads(n);  // 0: auto
   }
   setResult(rt, std::to_string(rt.analysis->threads()));
 }
@@ -210,13 +216,19 @@ void analysisStatisticsCmd(Runtime& rt, ArgReader& a) {
       " equations " + std::to_string(s.equations) + " elementUpdates " +
       std::to_string(s.elementUpdates) + " materialUpdates " + std::to_string(s.materialUpdates) +
       " failedBearings " + std::to_string(s.failedBearings) + " buckledBearings " +
-      std::to_string(s.buckledBearings);
-  setResult(rt, text);
+      std::to_string(s.buckledBearings) + " threads " + std::to_string(rt.analysis->threads());
+  // The automatic choice's measurement (ThreadChoice): the threads' time per iteration over one
+  // thread's, the median of its pairs of steps; present once it has measured.
+  const auto& choice = rt.analysis->threadChoice();
+  char ratio[32] = "";
+  if (rt.analysis->threadsAsked() == 0 && choice.measured())
+    std::snprintf(ratio, sizeof ratio, " threadRatio %.3f", choice.ratio());
+  setResult(rt, text + ratio);
 }
 
 constexpr CommandEntry kCommands[] = {
     {"analysisStatistics", "analysisStatistics", analysisStatisticsCmd},
-    {"threads", "threads ?n?", threadsCmd},
+    {"threads", "threads ?n|auto?", threadsCmd},
     {"constraints", "constraints Plain|Transformation|Penalty ?alphaSP alphaMP?",
      strategy::constraintsCommand},
     {"numberer", "numberer Plain|RCM", strategy::numbererCommand},

@@ -2,6 +2,8 @@
 #include "tcl/commands/Runtime.h"
 
 #include <cstdlib>
+#include <string>
+#include <string_view>
 
 #include "materials/InputError.h"
 #include "tcl/analysis/driver/AnalysisBuilder.h"
@@ -18,17 +20,18 @@ Runtime::Runtime(Tcl_Interp* interpreter)
       Tcl_WriteChars(err, "\n", 1);
     }
   };
-  // DABS_THREADS=n runs element state determination on n threads for scripts that do not say
-  // `threads` themselves (an OpenSees script runs unchanged); another value is reported and the
-  // analysis keeps one thread.
+  // DABS_THREADS=n (or auto) runs element state determination on n threads for scripts that do
+  // not say `threads` themselves (an OpenSees script runs unchanged); another value is reported
+  // and the analysis keeps the automatic choice (ThreadChoice).
   if (const char* env = std::getenv("DABS_THREADS")) {
     char* end = nullptr;
     const long n = std::strtol(env, &end, 10);
     if (end != env && *end == '\0' && n >= 1 && n <= 256)
       analysis->setThreads(static_cast<int>(n));
-    else
+    else if (std::string_view(env) != "auto")
       analysis->log(std::string("DABS_THREADS=\"") + env +
-                    "\" ignored: expected a whole number from 1 to 256; using 1 thread");
+                    "\" ignored: expected a whole number from 1 to 256 or auto; the count is "
+                    "chosen by measurement");
   }
 }
 

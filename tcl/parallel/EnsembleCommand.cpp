@@ -13,6 +13,7 @@
 
 #include <unistd.h>
 
+#include "tcl/analysis/driver/AnalysisBuilder.h"
 #include "tcl/parallel/JobFarm.h"
 #include "tcl/parallel/ParallelState.h"
 #include "tcl/parallel/ResultStore.h"
@@ -286,6 +287,17 @@ void ensembleCmd(Runtime& rt, ArgReader& a) {
   // when asked (-progress): never in the results.
   Progress progress(static_cast<int>(pending.size()),
                     rank == 0 && (progressAsked || isatty(STDERR_FILENO) != 0));
+  // The farm's processes take the cores: under more than one, an automatic thread count would try
+  // two threads against a busy core in every job's first steps, so its jobs run on one thread
+  // (a count the script asked for stands) and the choice comes back afterwards.
+  struct OneThreadPerProcess {
+    analysis::AnalysisBuilder& analysis;
+    bool set;
+    ~OneThreadPerProcess() {
+      if (set) analysis.setThreads(0);
+    }
+  } oneThread{*rt.analysis, comm.size() > 1 && rt.analysis->threadsAsked() == 0};
+  if (oneThread.set) rt.analysis->setThreads(1);
   JobFarm farm(comm);
   farm.run(
       pending,

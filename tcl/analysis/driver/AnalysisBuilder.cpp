@@ -3,6 +3,7 @@
 
 #include "tcl/analysis/driver/StopRequest.h"
 
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 
@@ -107,7 +108,8 @@ void AnalysisBuilder::ensureModel() {
     auto model =
         std::make_unique<AnalysisModel>(domain_, constraints_, numberer_, alphaSP_, alphaMP_);
     model->build();  // throws InputError for constraints it cannot enforce; nothing changed yet
-    model->setThreads(threads_);
+    threadChoice_.reset();  // a new model: measured anew
+    model->setThreads(threadsInForce());
     model_ = std::move(model);
     system_ = std::make_unique<LinearSystem>(*model_, solver_);
     system_->patternChanged();
@@ -148,9 +150,18 @@ void AnalysisBuilder::refreshModalDamping() {
 }
 
 Status AnalysisBuilder::analyzeStep(double dt) {
+  const bool choosing = threads_ == 0 && !threadChoice_.decided();
+  const auto start =
+      choosing ? std::chrono::steady_clock::now() : std::chrono::steady_clock::time_point{};
+  if (choosing) model_->setThreads(threadChoice_.next());
   Status s = integrator_->newStep(*system_, dt);
   if (ok(s)) s = algorithm_->solveCurrentStep(*system_, *integrator_, test_.get());
   stats_.iterations += algorithm_->iterations();
+  if (choosing && ok(s)) {
+    const std::chrono::duration<double> took = std::chrono::steady_clock::now() - start;
+    threadChoice_.record(took.count(), algorithm_->iterations());
+    model_->setThreads(threadsInForce());
+  }
   // Sleeping contact pairs are checked once the step converged: one that would carry force in
   // the converged state is woken and the step is redone with it.
   auto sleep = AnalysisModel::SleepCheck::Unchanged;

@@ -8,6 +8,7 @@
 
 #include "tcl/analysis/model/AnalysisModel.h"
 #include "tcl/analysis/driver/ContactStepping.h"
+#include "tcl/analysis/driver/ThreadChoice.h"
 #include "tcl/analysis/algorithms/ConvergenceTest.h"
 #include "tcl/analysis/system/EigenSolver.h"
 #include "tcl/analysis/integrators/Integrator.h"
@@ -100,17 +101,26 @@ class AnalysisBuilder {
   std::function<void(int done, int total)> progress;
 
   const AnalysisStatistics& statistics() const noexcept { return stats_; }
-  /// Threads for element state determination (`threads n`); results do not depend on it.
+  /// Threads for element state determination (`threads n`; 0: chosen by measurement,
+  /// ThreadChoice, the default); results do not depend on it.
   void setThreads(int threads) {
     threads_ = threads;
-    if (model_) model_->setThreads(threads);
+    threadChoice_.reset();
+    if (model_) model_->setThreads(threadsInForce());
   }
-  int threads() const noexcept { return threads_; }
+  /// The count asked for: n, or 0 for the automatic choice.
+  int threadsAsked() const noexcept { return threads_; }
+  /// The count the elements are updated with now (the automatic choice's current one).
+  int threads() const noexcept { return threadsInForce(); }
+  /// The automatic choice (its decision, for reports).
+  const ThreadChoice& threadChoice() const noexcept { return threadChoice_; }
   /// Where convergence-test output goes.
   std::function<void(const std::string&)> log;
 
  private:
-  int threads_ = 1;
+  int threads_ = 0;
+  ThreadChoice threadChoice_{AnalysisModel::availableThreads()};
+  int threadsInForce() const noexcept { return threads_ > 0 ? threads_ : threadChoice_.next(); }
   void ensureModel();
   void refreshModalDamping();
   [[nodiscard]] Status analyzeStep(double dt);

@@ -6,6 +6,10 @@
 // sleeping contact pairs (SleepingPairs) are classes of their own.
 #include "tcl/analysis/model/AnalysisModel.h"
 
+#ifdef _OPENMP
+#include <omp.h>
+#endif
+
 #include <algorithm>
 #include <limits>
 #include <map>
@@ -365,6 +369,14 @@ void AnalysisModel::getResponse(Eigen::VectorXd& U, Eigen::VectorXd& V, Eigen::V
       }
     }
   }
+}
+
+int AnalysisModel::availableThreads() noexcept {
+#ifdef _OPENMP
+  return omp_get_num_procs();  // the processors this process may run on (its affinity)
+#else
+  return 1;
+#endif
 }
 
 Status AnalysisModel::updateElements() {

@@ -86,6 +86,8 @@ class AnalysisModel {
   long elementUpdates() const noexcept { return elementUpdates_; }
   /// Threads that update elements (1: the calling thread alone). Results do not depend on it.
   void setThreads(int threads) noexcept { threads_ = threads < 1 ? 1 : threads; }
+  /// Threads the process may use for the element updates (1 without OpenMP).
+  static int availableThreads() noexcept;
 
   /// Residual B = P - F_int (- inertia - damping when dynamic).
   void formResidual(const AssemblyCoefficients& c, Eigen::VectorXd& B) const;

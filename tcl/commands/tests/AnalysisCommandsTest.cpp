@@ -73,7 +73,7 @@ TEST_F(AnalysisCommandsTest, ValidationErrorsPointAtTheArgumentRead) {
   EXPECT_TRUE(Contains(error("analysis Static -numSubSteps 1"),
                        "argument 3 (-numSubSteps) must be at least 2"));
   EXPECT_TRUE(Contains(error("analyze -2"), "argument 1 (numIncr) must not be negative"));
-  EXPECT_TRUE(Contains(error("threads 0"), "argument 1 (n) must be 1 to 256, got \"0\""));
+  EXPECT_TRUE(Contains(error("threads 0"), "argument 1 (n) must be 1 to 256 or auto, got \"0\""));
   // The usage line is the chosen type's own.
   EXPECT_TRUE(Contains(error("integrator LoadControl x"),
                        "usage: integrator LoadControl dLambda ?Jd minLambda maxLambda?"));

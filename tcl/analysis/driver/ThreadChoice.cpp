@@ -1,0 +1,51 @@
+// SPDX-License-Identifier: MIT
+#include "tcl/analysis/driver/ThreadChoice.h"
+
+#include <algorithm>
+
+namespace dabs::analysis {
+
+ThreadChoice::ThreadChoice(int available) noexcept : available_(std::max(available, 1)) { reset(); }
+
+void ThreadChoice::reset() noexcept {
+  recorded_ = 0;
+  chosen_ = 1;
+  measured_ = false;
+  ratio_ = 1.0;
+  decided_ = available_ < 2;
+}
+
+int ThreadChoice::next() const noexcept {
+  if (decided_) return chosen_;
+  const int k = recorded_ - kWarmUp;
+  if (k < 0) return 1;
+  const int pair = k / 2;
+  const bool manyFirst = pair % 2 == 1;
+  const bool first = k % 2 == 0;
+  return first == manyFirst ? available_ : 1;
+}
+
+void ThreadChoice::record(double seconds, int iterations) noexcept {
+  if (decided_) return;
+  const int k = recorded_ - kWarmUp;
+  if (k >= 0) {
+    const double perIteration = seconds / std::max(iterations, 1);
+    (next() == 1 ? one_ : many_)[static_cast<std::size_t>(k / 2)] = perIteration;
+  }
+  ++recorded_;
+  if (recorded_ < kWarmUp + 2 * kPairs) return;
+  std::array<double, kPairs> ratio{};
+  for (int p = 0; p < kPairs; ++p) {
+    const auto i = static_cast<std::size_t>(p);
+    ratio[i] = one_[i] > 0.0 ? many_[i] / one_[i] : 1.0;
+  }
+  const auto middle = ratio.begin() + kPairs / 2;
+  std::nth_element(ratio.begin(), middle, ratio.end());
+  double median = *middle;
+  if (kPairs % 2 == 0) median = 0.5 * (median + *std::max_element(ratio.begin(), middle));
+  chosen_ = median <= 1.0 - kMargin ? available_ : 1;
+  ratio_ = median;
+  measured_ = decided_ = true;
+}
+
+}  // namespace dabs::analysis

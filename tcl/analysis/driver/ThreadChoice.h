@@ -1,0 +1,58 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include <array>
+
+namespace dabs::analysis {
+
+/// The automatic choice of how many threads update the elements (`threads auto`, the default):
+/// measured on the model itself, not guessed from its size. The first steps of an analysis run
+/// alternately on one thread and on every thread the process may use, in pairs of neighbouring
+/// steps (their order swapped from pair to pair, so that a trend in the steps' cost falls on both
+/// counts alike); each step's wall time per iteration is compared within its pair, and the
+/// threads are kept when the median of the pairs' ratios says they save at least kMargin of the
+/// time, else one thread. Results are bit-identical at any thread count (AnalysisModel::
+/// updateElements), so the trial changes nothing but the time.
+///
+/// Why measured: two threads pay at 10 and 30 spans of the case study's bridge (1.5 times), not at
+/// 3 or 100 spans nor on a 2D RC frame of 16 elements (0.86): the share of the time in element
+/// updates, the memory the fiber states stream through and what else runs on the machine decide,
+/// and a size threshold gets at least one of them wrong.
+class ThreadChoice {
+ public:
+  /// `available`: the threads the process may use (1: nothing to choose).
+  explicit ThreadChoice(int available) noexcept;
+
+  /// Forgets the measurements (a new model).
+  void reset() noexcept;
+  /// The thread count for the next step.
+  int next() const noexcept;
+  /// True once the choice is made (after the trial, or at once with one thread available).
+  bool decided() const noexcept { return decided_; }
+  /// Records the step just run with next() threads: its wall time and its iterations.
+  void record(double seconds, int iterations) noexcept;
+  /// True once the trial has measured (false with one thread available).
+  bool measured() const noexcept { return measured_; }
+  /// The threads' wall time per iteration over one thread's (the median of the pairs), once
+  /// measured.
+  double ratio() const noexcept { return ratio_; }
+
+  /// Steps run on one thread before the trial (the first steps allocate and analyse patterns).
+  static constexpr int kWarmUp = 2;
+  /// Pairs of steps in the trial.
+  static constexpr int kPairs = 10;
+  /// The threads must save at least this share of a step's time (noise, and "never slower").
+  static constexpr double kMargin = 0.05;
+
+ private:
+  int available_;
+  bool decided_ = false;
+  int chosen_ = 1;
+  int recorded_ = 0;  ///< steps recorded since reset()
+  bool measured_ = false;
+  double ratio_ = 1.0;
+  std::array<double, kPairs> one_{};
+  std::array<double, kPairs> many_{};
+};
+
+}  // namespace dabs::analysis

@@ -1,0 +1,97 @@
+// SPDX-License-Identifier: MIT
+// The automatic thread choice on made-up step times: the order of its trial (warm-up on one
+// thread, then pairs of steps with the order swapped from pair to pair), the decision by the
+// median of the pairs' time-per-iteration ratios against the margin, and that a steady rise of
+// the steps' cost (a model yielding more and more) does not pass for a gain of the threads.
+#include "tcl/analysis/driver/ThreadChoice.h"
+
+#include <gtest/gtest.h>
+
+#include <vector>
+
+namespace dabs::analysis {
+namespace {
+
+constexpr int kTrialSteps = ThreadChoice::kWarmUp + 2 * ThreadChoice::kPairs;
+
+/// Runs the trial with a step time `time(threads, step)` per iteration (two iterations a step)
+/// and returns the thread counts it asked for.
+template <class Time>
+std::vector<int> runTrial(ThreadChoice& choice, Time time) {
+  std::vector<int> asked;
+  for (int step = 0; step < kTrialSteps; ++step) {
+    const int n = choice.next();
+    asked.push_back(n);
+    choice.record(2.0 * time(n, step), 2);
+  }
+  return asked;
+}
+
+TEST(ThreadChoiceTest, OneAvailableThreadIsDecidedAtOnce) {
+  ThreadChoice choice(1);
+  EXPECT_TRUE(choice.decided());
+  EXPECT_EQ(choice.next(), 1);
+  choice.record(1.0, 1);
+  EXPECT_FALSE(choice.measured());
+}
+
+TEST(ThreadChoiceTest, TrialWarmsUpOnOneThreadThenAlternatesInSwappedPairs) {
+  ThreadChoice choice(2);
+  const auto asked = runTrial(choice, [](int, int) { return 1.0; });
+  const std::vector<int> expected{1, 1,                           // warm-up
+                                  1, 2, 2, 1, 1, 2, 2, 1, 1, 2,   // pairs 0-4
+                                  2, 1, 1, 2, 2, 1, 1, 2, 2, 1};  // pairs 5-9
+  EXPECT_EQ(asked, expected);
+  EXPECT_TRUE(choice.decided());
+}
+
+TEST(ThreadChoiceTest, KeepsTheThreadsWhenTheySaveMoreThanTheMargin) {
+  ThreadChoice choice(2);
+  runTrial(choice, [](int n, int) { return n == 2 ? 0.6 : 1.0; });
+  ASSERT_TRUE(choice.measured());
+  EXPECT_NEAR(choice.ratio(), 0.6, 1e-12);
+  EXPECT_EQ(choice.next(), 2);
+}
+
+TEST(ThreadChoiceTest, OneThreadWhenTheGainIsWithinTheMargin) {
+  ThreadChoice choice(2);
+  runTrial(choice, [](int n, int) { return n == 2 ? 0.97 : 1.0; });
+  EXPECT_NEAR(choice.ratio(), 0.97, 1e-12);
+  EXPECT_EQ(choice.next(), 1);
+}
+
+TEST(ThreadChoiceTest, OneThreadWhenTheThreadsAreSlower) {
+  ThreadChoice choice(2);
+  runTrial(choice, [](int n, int) { return n == 2 ? 1.2 : 1.0; });
+  EXPECT_EQ(choice.next(), 1);
+}
+
+// Every step costs 10 % more than the one before, whatever the threads: within a pair the second
+// step is the dearer, and since the order swaps, the pairs' ratios are 1.1 and 1 / 1.1 in turn;
+// their median is (1.1 + 1 / 1.1) / 2 = 1.0045, no gain. Without the swap it would read 1 / 1.1
+// = 0.91 for the threads, past the margin.
+TEST(ThreadChoiceTest, ASteadyRiseOfTheStepsCostIsNoGain) {
+  ThreadChoice choice(2);
+  runTrial(choice, [](int, int step) {
+    double t = 1.0;
+    for (int i = 0; i < step; ++i) t *= 1.1;
+    return t;
+  });
+  EXPECT_NEAR(choice.ratio(), 0.5 * (1.1 + 1.0 / 1.1), 1e-12);
+  EXPECT_EQ(choice.next(), 1);
+}
+
+TEST(ThreadChoiceTest, ResetMeasuresAnew) {
+  ThreadChoice choice(2);
+  runTrial(choice, [](int n, int) { return n == 2 ? 0.6 : 1.0; });
+  ASSERT_EQ(choice.next(), 2);
+  choice.reset();
+  EXPECT_FALSE(choice.decided());
+  EXPECT_FALSE(choice.measured());
+  EXPECT_EQ(choice.next(), 1);
+  runTrial(choice, [](int n, int) { return n == 2 ? 1.5 : 1.0; });
+  EXPECT_EQ(choice.next(), 1);
+}
+
+}  // namespace
+}  // namespace dabs::analysis
