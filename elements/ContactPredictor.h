@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include <limits>
 #include <span>
 
 namespace dabs::elements {
@@ -26,6 +27,10 @@ class ContactPredictor {
   /// that takes its bodies' masses from its nodes. Infinity when the contactor has no mass or a
   /// power-law pair neither moves nor penetrates (nothing bounds the step).
   virtual double contactDuration(std::span<const double> nodeMasses, double gapRate) const = 0;
+  /// Longest step that may hold the first touch (time): a force that jumps at the touch (a
+  /// dashpot's C |gdot|) is averaged over the step that holds the jump, an error of first order
+  /// in that step. Infinity when nothing jumps.
+  virtual double touchStep() const { return std::numeric_limits<double>::infinity(); }
 
  protected:
   ContactPredictor() = default;

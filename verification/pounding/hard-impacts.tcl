@@ -581,7 +581,14 @@ proc contactStep {dt stepping Tc} {
 proc resolved {Tc dt stepping e} {
   set h [contactStep $dt $stepping $Tc]
   if {$::law ne "kelvin"} { return [expr {$h <= $Tc/$::resolvedSteps}] }
-  return [expr {$h <= $Tc/$::resolvedSteps && [dampingRatio $e]*$::pi/$Tc*$h <= 0.01}]
+  # Contact stepping takes the touch in a step of xi omega h = 0.01 (touchStep) when that is
+  # shorter than its contact step and not shorter than its shortest cut (0.01 maxStep, or a
+  # twentieth of the contact step when that is shorter).
+  set hTouch $h
+  set touch [expr {0.01*$Tc/($::pi*[dampingRatio $e])}]
+  set shortest [expr {min(0.01*$::maxStepDefault, 0.05*$h)}]
+  if {$stepping && $touch < $h && $touch >= $shortest} { set hTouch $touch }
+  return [expr {$h <= $Tc/$::resolvedSteps && [dampingRatio $e]*$::pi/$Tc*$hTouch <= 0.01 + 1e-12}]
 }
 
 # Runs outside the checks' reach, with the reason (reported as KNOWN, in the table too).

@@ -99,7 +99,24 @@ double ContactStepping::nextStep(double remaining, double dt) {
     if (tClose <= params_.lookAhead * remaining) pairNear = true;
     // (overshoot x tClose may pass the end of the output step by a fraction of a contact step;
     // the next output step is then that much shorter)
-    if (tClose < remaining) h = std::min(h, std::max(params_.overshoot * tClose, hMin));
+    if (tClose < remaining) {
+      // A touch whose force jumps (a dashpot) is taken in a step of at most touchStep when that is
+      // shorter than the contact's own steps: the step arrives half of it before the predicted
+      // touch, and the next one, cut at overshoot x the rest, holds the touch. The shortest cut
+      // is hMin, or a twentieth of the contact step for a contact shorter than 20 hMin steps.
+      const double touch = pair.touchStep();
+      double contactStep = params_.maxStep;
+      if (params_.perContact > 0) {
+        const double knownRate = std::isfinite(rate) ? rate : 0.0;
+        contactStep = std::min(
+            contactStep, pair.contactDuration(nodeMasses_[i], knownRate) / params_.perContact);
+      }
+      const double shortest = std::min(hMin, 0.05 * contactStep);
+      if (touch < contactStep && touch >= shortest && tClose > touch)
+        h = std::min(h, std::max(tClose - 0.5 * touch, shortest));
+      else
+        h = std::min(h, std::max(params_.overshoot * tClose, shortest));
+    }
     lastGap_[i] = gap;
     lastRate_[i] = rate;
     if (pairNear) {

@@ -49,6 +49,11 @@ struct ContactSteppingParams {
 ///   the impact is resolved whatever its stiffness (a step longer than the impact integrates it
 ///   in one or two steps of the trapezoid rule, whose release force then acts through the next
 ///   step's average and can throw the bodies apart faster than they met).
+/// - a touch whose force jumps (ContactPredictor::touchStep: a dashpot) is held by a step of at
+///   most touchStep where that is shorter than the contact step (maxStep, T_c / perContact): the
+///   step before ends half a touch step before the predicted touch (the trapezoid rule credits the
+///   step holding the jump with half its end force, an error of first order in that step);
+/// - the shortest cut is 0.01 maxStep, or a twentieth of the contact step where that is shorter;
 /// - the step after a release step that ended in tension (ContactPredictor::committedTension) is
 ///   no longer than the release step: the trapezoid rule carries that force through it as well.
 ///

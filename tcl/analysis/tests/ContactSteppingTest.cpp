@@ -25,7 +25,8 @@ constexpr double kZ0 = 0.1;  // height of the contactor above the target face at
 class OnePair {
  public:
   /// `masses`: the pair's -masses M1 M2 (none when empty); `nodeMass`: each node's mass.
-  explicit OnePair(std::array<double, 2> masses = {0.0, 0.0}, double nodeMass = 0.0) {
+  explicit OnePair(std::array<double, 2> masses = {0.0, 0.0}, double nodeMass = 0.0,
+                   double e = 1.0) {
     domain_.addNode(1, 3, 3, Eigen::Vector3d(0, 0, 0));
     domain_.addNode(2, 3, 3, Eigen::Vector3d(2, 0, 0));
     domain_.addNode(3, 3, 3, Eigen::Vector3d(2, 2, 0));
@@ -38,6 +39,7 @@ class OnePair {
     p.K = 1e5;
     p.M1 = masses[0];
     p.M2 = masses[1];
+    p.e = e;
     p.validate();
     auto pair = std::make_unique<contact::NodeToSurfaceContact3d<3>>(
         1, 10, std::array<int, 4>{1, 2, 3, 4}, p);
@@ -99,6 +101,36 @@ TEST(ContactSteppingTest, StepIsCutAtThePredictedContactTimesTheOvershoot) {
   model.commitGap(0.06);
   // t_close = 0.015 s < remaining 0.05 s: the step ends at 1.2 x 0.015 = 0.018 s.
   EXPECT_NEAR(stepping.nextStep(0.05, 0.05), 0.018, 1e-15);
+}
+
+// A Kelvin pair with a strong dashpot (e = 0.1, masses 1 and 1, K 1e5): the dashpot force jumps
+// to C v at the touch, and the step holding the touch is at most touchStep = 0.02 m / C (C h /
+// (2 m) = 1 %), here 3.8e-5 s, shorter than the contact step (maxStep 1e-3 s, no -perContact).
+// The gap fell from 0.1 to 0.002 over 0.01 s: t_close = 0.002 * 0.01 / 0.098 = 2.04e-4 s, and
+// the step ends half a touch step before it (not at 1.2 t_close = 2.45e-4 s); the gap then left,
+// 0.002 - 9.8 * h, predicts the touch half a touch step ahead, and the step holding it is 1.2
+// times that.
+TEST(ContactSteppingTest, ATouchWithADashpotJumpIsTakenInAShortStep) {
+  OnePair model({1.0, 1.0}, 0.0, 0.1);
+  ContactSteppingParams p = params(0.001);
+  p.perContact = 0;
+  ContactStepping stepping(p);
+  stepping.attach(model.domain());
+  const double logE = std::log(0.1);
+  const double xi = -logE / std::sqrt(std::numbers::pi * std::numbers::pi + logE * logE);
+  const double m = 0.5;
+  const double touch = 0.02 * m / (2.0 * xi * std::sqrt(1e5 * m));
+  model.commitGap(0.1);
+  ASSERT_DOUBLE_EQ(stepping.nextStep(0.01, 0.01), 0.01);
+  model.commitGap(0.002);
+  const double tClose = 0.002 * 0.01 / 0.098;
+  const double h = stepping.nextStep(0.01, 0.01);
+  EXPECT_NEAR(h, tClose - 0.5 * touch, 1e-15);
+  const double gap = 0.002 - 9.8 * h;
+  model.commitGap(gap);
+  const double tClose2 = gap * h / (0.002 - gap);
+  EXPECT_NEAR(tClose2, 0.5 * touch, 1e-12);
+  EXPECT_NEAR(stepping.nextStep(0.01, 0.01), 1.2 * tClose2, 1e-15);
 }
 
 TEST(ContactSteppingTest, APairAtTheTopOfABounceIsPredictedToCloseAgain) {
