@@ -323,15 +323,17 @@ Status NodeToSurfaceContact3d<Ndf>::update(const elements::Kinematics& kin) {
   if (!releasing && g.value() < 0.0 && Nn.value() > 0.0) natural_.normal = NormalBranch::Kelvin;
   approaching_ = gdot.value() <= 0.0;
   springAgrees_ = g.value() <= 0.0 && approaching_;
-  if (holding_ && heldNormal == NormalBranch::Kelvin && normal_.velocityDependent() &&
-      normal_.law() != ImpactLaw::Kelvin) {
-    // A power law's held closed force continues across the face, and with a rate term whose
-    // coefficient rises from the touch with infinite slope (Jankowski's c delta^(1/4)) it has a
-    // cusp there: an end state within that rise (a step much longer than the impact may need
-    // the damping force at a penetration of 1e-14 m) is out of Newton's reach, whose iterates
-    // jump back and forth across the face. As at Kelvin's dashpot jump (checkHeldStatus), the
-    // spring alone is held while the pair approaches once the iterates have crossed the face
-    // twice. (Kelvin's held force is linear across the face: no such cusp.)
+  if (holding_ && heldNormal == NormalBranch::Kelvin && normal_.law() == ImpactLaw::Jankowski &&
+      normal_.velocityDependent()) {
+    // Jankowski's held closed force continues across the face with a damping coefficient that
+    // rises from the touch with infinite slope, c |delta|^(1/4): a cusp at the face, compressive
+    // on both sides while the pair approaches. An end state within that rise (a step much longer
+    // than the impact may need the damping force at a penetration of 1e-14 m) is out of Newton's
+    // reach: its iterates jumped back and forth across the face, or settled outside it on the
+    // continuation's compression, which the state then contradicts. As at Kelvin's dashpot jump
+    // (checkHeldStatus), the spring alone is held while the pair approaches once the iterates
+    // cross the face. (Kelvin's held force is linear across the face, and hertzdamp's damping
+    // c delta^n gdot is smooth there.)
     const bool inside = g.value() < 0.0;
     if (inside != lastInside_) ++crossings_;
     lastInside_ = inside;

@@ -320,9 +320,9 @@ class NodeToSurfaceContact3d : public elements::FixedSizeElement<5, Ndf, 0u>,
     bool operator==(const Branches&) const = default;
   };
   static constexpr int kMaxSwitches = 8;
-  /// Sign changes of the gap under a held closed branch after which an approaching pair with a
-  /// rate term holds the spring alone (see update()).
-  static constexpr int kMaxCrossings = 2;
+  /// Sign changes of the gap under a held closed jankowski branch after which an approaching pair
+  /// holds the spring alone (see update()).
+  static constexpr int kMaxCrossings = 1;
   static std::uint8_t bit(NormalBranch b) noexcept {
     return static_cast<std::uint8_t>(1u << static_cast<unsigned>(b));
   }

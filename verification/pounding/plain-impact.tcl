@@ -72,7 +72,7 @@ foreach algorithm {Newton ModifiedNewton NewtonLineSearch KrylovNewton} {
 # 1 t face, 1 m/s, dt 0.01 s): his damping c delta^(1/4) rises from the touch with infinite slope,
 # and the end state of the impact step needs the damping force at a penetration of about 1e-14 m,
 # out of Newton's reach; its iterates jumped across the face until the step failed (code -3).
-# The pair holds the spring alone once they have crossed the face twice (checkHeldStatus's
+# The pair holds the spring alone once they cross the face (checkHeldStatus's
 # selection at Kelvin's dashpot jump): the run completes. Only completion is checked: a step
 # that does not resolve the impact cannot give its restitution (hard-impacts.tcl reports it).
 proc jankowskiInOneStep {} {
