@@ -209,12 +209,12 @@ class NodeToSurfaceContact3d : public elements::FixedSizeElement<5, Ndf, 0u>,
   /// m from -masses M1 M2 when both are given, else the contactor node's mass and the sum of the
   /// four face nodes' masses (a face without mass is fixed: m = M1).
   double contactDuration(std::span<const double> nodeMasses, double gapRate) const override;
-  /// Kelvin with a dashpot: the step over which the dashpot's jump C |gdot| at the touch moves at
-  /// most 1 % of the relative momentum, C h / (2 m) = 0.01 (xi omega h = 0.01), m = M1 M2 /
-  /// (M1 + M2) from -masses; infinity for the other laws (their force is zero at the touch;
-  /// Jankowski's damping rises from it as delta^(1/4), but a touch step made short for it moved
-  /// the hard-impact suite's errors at 20 steps a contact from -0.6 to +2 % and more).
-  double touchStep() const override;
+  /// The step over which the damping force's rise at the touch moves at most 1 % of the relative
+  /// momentum m v (m = M1 M2 / (M1 + M2) from -masses): Kelvin, the jump C v, C h / (2 m) = 0.01
+  /// (xi omega h = 0.01); Jankowski, c delta^(1/4) v with delta = v h, c v^(1/4) h^(5/4) /
+  /// (2 m) = 0.01, v = |gapRate|; infinity for hertz and hertzdamp (their force starts from zero
+  /// with zero slope).
+  double touchStep(double gapRate) const override;
   /// The second half of updateIfFar, for a pair whose far test (farTest()) the caller made: sets
   /// the trial state of a far pair with distance bound `bound` and returns true, or changes
   /// nothing and returns false when the step must be evaluated (a release step). Without a

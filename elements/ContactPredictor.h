@@ -28,9 +28,13 @@ class ContactPredictor {
   /// power-law pair neither moves nor penetrates (nothing bounds the step).
   virtual double contactDuration(std::span<const double> nodeMasses, double gapRate) const = 0;
   /// Longest step that may hold the first touch (time): a force that jumps at the touch (a
-  /// dashpot's C |gdot|) is averaged over the step that holds the jump, an error of first order
-  /// in that step. Infinity when nothing jumps.
-  virtual double touchStep() const { return std::numeric_limits<double>::infinity(); }
+  /// dashpot's C |gdot|) or rises from it with infinite slope is averaged over the step that holds
+  /// the touch, an error of first order in that step. `gapRate` is the gap's rate over the last
+  /// step (the approach speed, where the error depends on it). Infinity when nothing jumps.
+  virtual double touchStep(double gapRate) const {
+    (void)gapRate;
+    return std::numeric_limits<double>::infinity();
+  }
 
  protected:
   ContactPredictor() = default;

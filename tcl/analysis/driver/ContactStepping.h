@@ -49,11 +49,14 @@ struct ContactSteppingParams {
 ///   the impact is resolved whatever its stiffness (a step longer than the impact integrates it
 ///   in one or two steps of the trapezoid rule, whose release force then acts through the next
 ///   step's average and can throw the bodies apart faster than they met).
-/// - a touch whose force jumps (ContactPredictor::touchStep: a dashpot) is held by a step of at
-///   most touchStep where that is shorter than the contact step (maxStep, T_c / perContact): the
-///   step before ends half a touch step before the predicted touch (the trapezoid rule credits the
-///   step holding the jump with half its end force, an error of first order in that step);
-/// - the shortest cut is 0.01 maxStep, or a twentieth of the contact step where that is shorter;
+/// - a touch whose force jumps or rises with infinite slope (ContactPredictor::touchStep: a
+///   dashpot, Jankowski's damping) is held by a step of at most touchStep where that is shorter
+///   than the contact step (maxStep, T_c / perContact): the step before ends half a touch step
+///   before the predicted touch (the trapezoid rule credits the step holding the touch with half
+///   its end force, an error of first order in that step), and while such a pair is closed its
+///   steps grow by at most a factor 2 a step;
+/// - the shortest cut is 0.01 maxStep, or a twentieth of the contact step where that is shorter,
+///   and a remainder of the output step shorter than it is taken with the step before;
 /// - the step after a release step that ended in tension (ContactPredictor::committedTension) is
 ///   no longer than the release step: the trapezoid rule carries that force through it as well.
 ///
@@ -81,8 +84,9 @@ class ContactStepping {
   ContactSteppingParams params_;
   std::vector<const elements::ContactPredictor*> pairs_;  ///< the pairs (Element::contactPredictor)
   std::vector<double> lastGap_;
-  std::vector<double> lastRate_;  ///< per pair: the gap's rate over the step before the last
-  double previousStep_ = 0.0;     ///< the step before the last
+  std::vector<double> lastRate_;   ///< per pair: the gap's rate over the step before the last
+  std::vector<double> touchRate_;  ///< per pair: the approach rate when its touch was predicted
+  double previousStep_ = 0.0;      ///< the step before the last
   std::vector<std::vector<double>> nodeMasses_;  ///< per pair (perContact > 0): its nodes' masses
   double lastStep_ = 0.0;
   long contactSteps_ = 0;

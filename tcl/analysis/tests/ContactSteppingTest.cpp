@@ -109,7 +109,7 @@ TEST(ContactSteppingTest, StepIsCutAtThePredictedContactTimesTheOvershoot) {
 // The gap fell from 0.1 to 0.002 over 0.01 s: t_close = 0.002 * 0.01 / 0.098 = 2.04e-4 s, and
 // the step ends half a touch step before it (not at 1.2 t_close = 2.45e-4 s); the gap then left,
 // 0.002 - 9.8 * h, predicts the touch half a touch step ahead, and the step holding it is 1.2
-// times that.
+// times that; the steps in contact then grow by at most a factor 2 a step.
 TEST(ContactSteppingTest, ATouchWithADashpotJumpIsTakenInAShortStep) {
   OnePair model({1.0, 1.0}, 0.0, 0.1);
   ContactSteppingParams p = params(0.001);
@@ -130,7 +130,13 @@ TEST(ContactSteppingTest, ATouchWithADashpotJumpIsTakenInAShortStep) {
   model.commitGap(gap);
   const double tClose2 = gap * h / (0.002 - gap);
   EXPECT_NEAR(tClose2, 0.5 * touch, 1e-12);
-  EXPECT_NEAR(stepping.nextStep(0.01, 0.01), 1.2 * tClose2, 1e-15);
+  const double hTouch = stepping.nextStep(0.01, 0.01);
+  EXPECT_NEAR(hTouch, 1.2 * tClose2, 1e-15);
+  // Closed after the touch: the steps grow from the touch step by at most twice the last one.
+  model.commitGap(-1e-6);
+  EXPECT_NEAR(stepping.nextStep(0.01, 0.01), 2.0 * hTouch, 1e-15);
+  model.commitGap(-2e-6);
+  EXPECT_NEAR(stepping.nextStep(0.01, 0.01), 4.0 * hTouch, 1e-15);
 }
 
 TEST(ContactSteppingTest, APairAtTheTopOfABounceIsPredictedToCloseAgain) {
