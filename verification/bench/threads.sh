@@ -28,24 +28,13 @@ done
 mkdir -p "$out"
 out="$(cd "$out" && pwd)"
 
-spec() {
-  case "$1" in
-    bridge3) echo "bridge.tcl 3 4000 OUT" ;;
-    bridge10) echo "bridge.tcl 10 1000 OUT" ;;
-    bridge30) echo "bridge.tcl 30 1000 OUT" ;;
-    bridge100) echo "bridge.tcl 100 200 OUT" ;;
-    rcframe) echo "rcframe.tcl 1500 OUT" ;;
-    pushover) echo "pushover.tcl 140 OUT" ;;
-    linear-frame-once) echo "linear-frame.tcl 1500 OUT -factorOnce" ;;
-    *) echo "unknown case $1" >&2; exit 2 ;;
-  esac
-}
-median() { sort -g | awk '{v[NR]=$1} END {if (NR%2) print v[(NR+1)/2]; else print (v[NR/2]+v[NR/2+1])/2}'; }
+source "$here/opensees/cases.sh"
 
 printf '| case | 1 thread, analyze s | 2 threads: speed-up | auto: speed-up | auto chose | measured ratio | same results |\n'
 printf '|---|---:|---:|---:|---:|---:|---|\n'
 for c in "${cases[@]}"; do
-  args="$(spec "$c")"
+  s="$(spec "$c")"
+  args="${s%%|*}"
   script="$here/opensees/${args%% *}"; rest="${args#* }"
   declare -A times=([1]="" [2]="" [auto]="")
   orders=("1 2 auto" "2 auto 1" "auto 1 2")

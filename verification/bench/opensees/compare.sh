@@ -45,22 +45,7 @@ out="$(cd "$out" && pwd)"
 
 # case -> script and arguments (OUT: the run's result folder), recorder files with their number of
 # components per node or element
-spec() {
-  case "$1" in
-    bridge3) echo "bridge.tcl 3 4000 OUT|girder-disp.out:2 pier-disp.out:2 pier-force.out:6" ;;
-    bridge10) echo "bridge.tcl 10 1000 OUT|girder-disp.out:2 pier-disp.out:2 pier-force.out:6" ;;
-    bridge30) echo "bridge.tcl 30 1000 OUT|girder-disp.out:2 pier-disp.out:2 pier-force.out:6" ;;
-    bridge100) echo "bridge.tcl 100 200 OUT|girder-disp.out:2 pier-disp.out:2 pier-force.out:6" ;;
-    bridge1300) echo "bridge.tcl 1300 3 OUT|girder-disp.out:2 pier-disp.out:2 pier-force.out:6" ;;
-    rcframe) echo "rcframe.tcl 1500 OUT|disp.out:1 force.out:3" ;;
-    pushover) echo "pushover.tcl 140 OUT|tip.out:1 force.out:6" ;;
-    linear-frame) echo "linear-frame.tcl 1500 OUT|roof.out:2 base.out:6" ;;
-    linear-frame-once) echo "linear-frame.tcl 1500 OUT -factorOnce|roof.out:2 base.out:6" ;;
-    *) echo "unknown case $1" >&2; exit 2 ;;
-  esac
-}
-
-median() { sort -g | awk '{v[NR]=$1} END {if (NR%2) print v[(NR+1)/2]; else print (v[NR/2]+v[NR/2+1])/2}'; }
+source "$here/cases.sh"
 
 # run PROGRAM DIR SCRIPT ARGS...: prints "analysis_s process_s" and leaves the program's output in DIR/log
 run() {
