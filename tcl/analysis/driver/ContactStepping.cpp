@@ -64,7 +64,6 @@ void ContactStepping::reset() {
 
 double ContactStepping::nextStep(double remaining, double dt) {
   double h = remaining;
-  bool near = false;
   const double hMin = 0.01 * params_.maxStep;
   double shortestNear = hMin;
   for (std::size_t i = 0; i < pairs_.size(); ++i) {
@@ -99,41 +98,36 @@ double ContactStepping::nextStep(double remaining, double dt) {
       }
     }
     if (tClose <= params_.lookAhead * remaining) pairNear = true;
+    lastGap_[i] = gap;
+    lastRate_[i] = rate;
+    if (!(tClose < remaining) && !pairNear) continue;
+    // The pair's contact step: maxStep, and T_c / perContact from the gap rate over the last step
+    // (none before the first: a power law's pair then takes its speed from its penetration
+    // alone). The shortest cut is hMin, or a twentieth of the contact step for a contact shorter
+    // than 20 hMin steps.
+    const double knownRate = std::isfinite(rate) ? rate : 0.0;
+    double contactStep = params_.maxStep;
+    if (params_.perContact > 0)
+      contactStep = std::min(contactStep,
+                             pair.contactDuration(nodeMasses_[i], knownRate) / params_.perContact);
+    const double shortest = std::min(hMin, 0.05 * contactStep);
     // (overshoot x tClose may pass the end of the output step by a fraction of a contact step;
     // the next output step is then that much shorter)
     if (tClose < remaining) {
-      // A touch whose force jumps (a dashpot) is taken in a step of at most touchStep when that is
-      // shorter than the contact's own steps: the step arrives half of it before the predicted
-      // touch, and the next one, cut at overshoot x the rest, holds the touch. The shortest cut
-      // is hMin, or a twentieth of the contact step for a contact shorter than 20 hMin steps.
-      const double knownRate = std::isfinite(rate) ? rate : 0.0;
+      // A touch whose force jumps (a dashpot) or rises steeply (Jankowski) is taken in a step of
+      // at most touchStep when that is shorter than the contact step: the step arrives half of it
+      // before the predicted touch, and the next one, cut at overshoot x the rest, holds the
+      // touch.
       const double touch = pair.touchStep(knownRate);
       touchRate_[i] = knownRate;
-      double contactStep = params_.maxStep;
-      if (params_.perContact > 0) {
-        contactStep = std::min(
-            contactStep, pair.contactDuration(nodeMasses_[i], knownRate) / params_.perContact);
-      }
-      const double shortest = std::min(hMin, 0.05 * contactStep);
       if (touch < contactStep && touch >= shortest && tClose > touch)
         h = std::min(h, std::max(tClose - 0.5 * touch, shortest));
       else
         h = std::min(h, std::max(params_.overshoot * tClose, shortest));
     }
-    lastGap_[i] = gap;
-    lastRate_[i] = rate;
     if (pairNear) {
-      near = true;
-      double contactStep = params_.maxStep;
-      if (params_.perContact > 0) {
-        // the gap rate over the last step (none before the first: a power law's pair then takes
-        // its speed from its penetration alone)
-        const double knownRate = std::isfinite(rate) ? rate : 0.0;
-        contactStep = std::min(
-            contactStep, pair.contactDuration(nodeMasses_[i], knownRate) / params_.perContact);
-        h = std::min(h, contactStep);
-      }
-      shortestNear = std::min(shortestNear, 0.05 * contactStep);
+      h = std::min(h, contactStep);
+      shortestNear = std::min(shortestNear, shortest);
       // After a short touch step (a jump or a steep rise of the damping force), the steps in
       // contact grow from it by at most a factor 2: Jankowski's delta^(1/4) rise lasts beyond
       // the touch step, and a step of T_c / 20 right after it left its onset's error of first
@@ -143,7 +137,6 @@ double ContactStepping::nextStep(double remaining, double dt) {
         h = std::min(h, 2.0 * lastStep_);
     }
   }
-  if (near) h = std::min(h, params_.maxStep);
   // A remainder shorter than the shortest cut is taken with this step (a stiff contact's steps
   // may be far shorter than hMin: its remainder must be too, or it lands inside the contact).
   if (remaining - h < shortestNear) h = remaining;
