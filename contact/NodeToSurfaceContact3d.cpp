@@ -109,6 +109,7 @@ void NodeToSurfaceContact3d<Ndf>::commitState() {
 template <int Ndf>
 void NodeToSurfaceContact3d<Ndf>::revertToLastCommit() {
   releaseHold();
+  powerClosed_ = false;  // the last update's state is gone: the next one takes no scale
   if (farInBothStates_) {
     trial_.gap = committed_.gap;
     return;
@@ -122,6 +123,7 @@ void NodeToSurfaceContact3d<Ndf>::revertToStart() {
   trial_ = committed_ = initial_;
   farInBothStates_ = false;
   releaseHold();
+  powerClosed_ = false;
   forcesZero_ = false;
   clearForces();
 }
@@ -142,8 +144,9 @@ template <int Ndf>
 elements::Element::HeldStatus NodeToSurfaceContact3d<Ndf>::checkHeldStatus() {
   if (!holding_) return HeldStatus::Agrees;
   const bool contact = inContact(held_.normal);
-  const bool normalAgrees =
-      held_.normal == NormalBranch::Spring ? springAgrees_ : held_.normal == natural_.normal;
+  const bool normalAgrees = held_.normal == NormalBranch::Spring
+                                ? springAgrees_
+                                : held_.normal == natural_.normal || onRamp_;
   // A switch back to a branch held before in this step would cycle.
   const bool normalCycles = (triedNormal_ & bit(natural_.normal)) != 0;
   const bool frictionCycles = triedSliding_ == 3;
@@ -185,7 +188,14 @@ template <int Ndf>
 Status NodeToSurfaceContact3d<Ndf>::update(const elements::Kinematics& kin) {
   farInBothStates_ = false;
   natural_ = Branches{};
-  springAgrees_ = slideAgrees_ = approaching_ = false;
+  springAgrees_ = slideAgrees_ = approaching_ = onRamp_ = false;
+  // The last update's penetration on a closed power-law branch: this update's change from it
+  // is the step Newton took (newtonStepScale).
+  const double lastGap = trial_.gap;
+  const bool lastPowerClosed = powerClosed_;
+  const bool lastSmooth = smoothClosed_;
+  powerClosed_ = false;
+  stepScale_ = 1.0;
   NodeToSurfaceState t = committed_;
   t.force.setZero();
   t.dashpotPower = 0.0;
@@ -350,14 +360,39 @@ Status NodeToSurfaceContact3d<Ndf>::update(const elements::Kinematics& kin) {
       break;
     case NormalBranch::Spring: Nn = normal_.closedForce(g, AD(0.0)); break;
     case NormalBranch::Release:
-      // A held release branch inside the face goes on along its tangent at g = 0 (kelvin: N =
-      // N_r g / g_n; the release force has a pole at g = g_n): smooth and monotone, so Newton on
-      // the held equations cannot cycle between the release force and a closed state.
+      // A held release branch inside the face goes on smooth and monotone (the release force
+      // has a pole at g = g_n): kelvin along its tangent at g = 0, N = N_r g / g_n; a power law
+      // along a ramp from its tension at the face to zero just inside it, the end state in the
+      // jump from the closed force (NormalLaw::releaseForce, onReleaseRamp).
       Nn = normal_.releaseForce(g, committed_.gap, committed_.force(0), holding_);
       break;
   }
   const bool releaseForce = branch == NormalBranch::Release;
+  onRamp_ = releaseForce && holding_ && normal_.onReleaseRamp(g.value(), Nn.value());
   t.gap = g.value();
+  if (normal_.exponent() > 1.0 && inContact(branch) &&
+      (holding_ || (g.value() < 0.0 && Nn.value() > 0.0))) {
+    // A closed power law: inside the face, or held on either side (its odd continuation
+    // outside, where Newton closes in on the face as slowly).
+    powerClosed_ = true;
+    // Jankowski's damping has a cusp at the face; the spring alone and the other laws are
+    // smooth across it (NormalLaw::forceVariableStepScale).
+    smoothClosed_ = branch == NormalBranch::Spring || normal_.law() != ImpactLaw::Jankowski;
+    if (lastPowerClosed && lastGap != 0.0) {
+      // Newton is slow on the spring where it removes half of the penetration or more in two
+      // updates running; one such step alone is often the inertia's (a touch step's first
+      // iterate), where Newton's own step is the better one.
+      const double side = lastGap < 0.0 ? 1.0 : -1.0;  // the sign of the last penetration
+      const double delta = std::abs(lastGap), change = side * (lastGap - g.value());
+      shrinks_ = change <= -0.5 * delta ? static_cast<std::uint8_t>(std::min(shrinks_ + 1, 2)) : 0;
+      if (shrinks_ >= 2)
+        stepScale_ = normal_.forceVariableStepScale(delta, change, lastSmooth && smoothClosed_);
+    } else {
+      shrinks_ = 0;
+    }
+  } else {
+    shrinks_ = 0;
+  }
   // Dashpot power: (N - spring force) times the approach rate -gdot; when N is clipped this is
   // the released spring energy, so the energy balance stays closed.
   t.dashpotPower = (Nn.value() - normal_.elasticForce(g.value())) * (-gdot.value());

@@ -160,6 +160,11 @@ class NodeToSurfaceContact3d : public elements::FixedSizeElement<5, Ndf, 0u>,
   /// sliding). A held slide whose trial force reverses sticks at once (update()). Conflict
   /// after kMaxSwitches switches in a step.
   elements::Element::HeldStatus checkHeldStatus() override;
+  /// A power-law pair (spring k delta^n, n > 1) asks Newton for a longer step while Newton
+  /// shrinks its deep penetration slowly: NormalLaw::forceVariableStepScale of the change from
+  /// the last update's penetration to this one's, both on a closed branch (1 otherwise).
+  bool scalesNewtonSteps() const override { return normal_.exponent() > 1.0; }
+  double newtonStepScale() const override { return stepScale_; }
   /// Open contacts carry nothing, so the assembly skips them.
   bool isActive() const override { return !forcesZero_; }
   bool mayTurnInactive() const override { return true; }
@@ -284,6 +289,10 @@ class NodeToSurfaceContact3d : public elements::FixedSizeElement<5, Ndf, 0u>,
   std::uint8_t crossings_ = 0;     ///< held closed branch: updates whose gap changed sign
   bool lastInside_ = false;        ///< held closed branch: the last update's gap was < 0
   bool frictionHeld_ = false;      ///< held_.sliding is held (else the next contact update's)
+  bool powerClosed_ = false;       ///< last update: a power law's closed force (inside, or held)
+  bool smoothClosed_ = false;      ///< ... and one smooth across the face
+  double stepScale_ = 1.0;         ///< last update's newtonStepScale()
+  std::uint8_t shrinks_ = 0;       ///< updates running (up to 2) that halved the penetration
   /// trial_ equals committed_ but for the gap, both quietFar, and the matrices are zero: set by a
   /// full commit or revert of such a state, cleared by every other write of trial_.
   bool farInBothStates_ = false;
@@ -329,7 +338,7 @@ class NodeToSurfaceContact3d : public elements::FixedSizeElement<5, Ndf, 0u>,
   /// Commit and revert end the step: nothing is held and no branch has been tried.
   void releaseHold() noexcept {
     holding_ = false;
-    switches_ = triedNormal_ = triedSliding_ = crossings_ = 0;
+    switches_ = triedNormal_ = triedSliding_ = crossings_ = shrinks_ = 0;
   }
   static bool inContact(NormalBranch b) noexcept {
     return b == NormalBranch::Kelvin || b == NormalBranch::Spring;
@@ -345,6 +354,7 @@ class NodeToSurfaceContact3d : public elements::FixedSizeElement<5, Ndf, 0u>,
   bool springAgrees_ = false;  ///< last update: g <= 0 and gdot <= 0 (the spring branch agrees)
   bool approaching_ = false;   ///< last update: gdot <= 0 (on the face)
   bool slideAgrees_ = false;   ///< last update: trial friction force >= mu_k N (sliding agrees)
+  bool onRamp_ = false;        ///< last update: a held power-law release force on its ramp
   Eigen::Vector2d trialFriction_ = Eigen::Vector2d::Zero();   ///< last update's trial force
   Eigen::Vector2d slideDirection_ = Eigen::Vector2d::Zero();  ///< trial force when slide was held
 };

@@ -113,6 +113,14 @@ class Element {
   virtual void holdStatus() {}
   /// See HeldStatus; call after an update.
   virtual HeldStatus checkHeldStatus() { return HeldStatus::Agrees; }
+  /// True when the element may ask Newton for a longer step (newtonStepScale).
+  virtual bool scalesNewtonSteps() const { return false; }
+  /// The multiple of the step Newton just took (the change from the element's previous update
+  /// to its last one) that the element asks for: 1 for none. An element whose force is far from
+  /// linear in its deformation where Newton converges slowly on it (a contact spring k delta^n
+  /// from a deep penetration) asks for the step Newton on a variable in which it is linear would
+  /// take. Call after an update.
+  virtual double newtonStepScale() const { return 1.0; }
 
   /// The element's far-pair interface when it may sleep while far from contact (a contact pair
   /// with a search distance), else null. The analysis reaches such elements through it alone, so

@@ -190,6 +190,74 @@ TEST(NodeToSurfaceContact3dTest, LawReleaseStepForceGivesBackOnlyTheStoredEnergy
   }
 }
 
+TEST(NodeToSurfaceContact3dTest, LawReleaseEndStateInTheJumpIsHeldOnTheRamp) {
+  // A release step whose held release force converges just inside the face, with a tension
+  // between 0 and tail: the end state in the jump (NormalLaw::releaseForce), which agrees; deeper
+  // inside, where the ramp pushes, the state is closed and the branch switches.
+  for (ImpactLaw law : {ImpactLaw::Hertz, ImpactLaw::HertzDamp, ImpactLaw::Jankowski}) {
+    const double n = law == ImpactLaw::HertzDamp ? 1.3 : 1.5;
+    const double dn = 0.05, Nn = kK * std::pow(dn, n), tail = Nn * (n - 1) / (n + 1);
+    const double w = NormalLaw::kRampWidth * dn;
+    for (double g : {-0.5 * w, -3.0 * w}) {
+      auto e = make(lawParams(law));
+      TrialState s = zeroState(15);
+      s.u(2) = -0.15;  // delta_n = 0.05 at rest
+      ASSERT_TRUE(ok(e->update(s.kinematics())));
+      e->commitState();
+      s.u(2) = -0.08;  // g = +0.02: the release force
+      s.v(2) = 1.0;
+      ASSERT_TRUE(ok(e->update(s.kinematics())));
+      e->holdStatus();
+      s.u(2) = -0.1 + g;
+      ASSERT_TRUE(ok(e->update(s.kinematics())));
+      EXPECT_NEAR(e->trialState().force(0), -tail * (1.0 + g / w), kTol * Nn)
+          << NormalLaw::name(law);
+      EXPECT_LT(relativeDifference(e->tangentStiff(), numericalStiffness(*e, s, kFdStep)), kFdTol);
+      if (g > -w) {
+        EXPECT_EQ(e->trialState().status, ContactStatus::Open);
+        EXPECT_EQ(e->checkHeldStatus(), elements::Element::HeldStatus::Agrees);
+      } else {
+        EXPECT_EQ(e->checkHeldStatus(), elements::Element::HeldStatus::Switched);
+      }
+    }
+  }
+}
+
+TEST(NodeToSurfaceContact3dTest, LawAsksNewtonForTheStepOnItsForce) {
+  // Updates on the closed law that shrink the penetration from 0.01 to 0.004 to 0.0015: the
+  // second of two such halvings running asks for NormalLaw::forceVariableStepScale of its
+  // change; kelvin asks for nothing, nor does a small change, the first halving, or a pair
+  // whose last update was open.
+  for (ImpactLaw law : {ImpactLaw::Kelvin, ImpactLaw::Hertz, ImpactLaw::Jankowski}) {
+    const NodeToSurfaceParams p = lawParams(law);
+    auto e = make(p);
+    EXPECT_EQ(e->scalesNewtonSteps(), law != ImpactLaw::Kelvin);
+    TrialState s = zeroState(15);
+    s.u(2) = -0.05;  // g = +0.05: open
+    ASSERT_TRUE(ok(e->update(s.kinematics())));
+    e->commitState();
+    s.v(2) = -1.0;
+    s.u(2) = -0.11;  // delta = 0.01, after an open update: no step taken on the closed law
+    ASSERT_TRUE(ok(e->update(s.kinematics())));
+    EXPECT_EQ(e->newtonStepScale(), 1.0);
+    s.u(2) = -0.104;  // delta 0.004: the first halving
+    ASSERT_TRUE(ok(e->update(s.kinematics())));
+    EXPECT_EQ(e->newtonStepScale(), 1.0);
+    s.u(2) = -0.1015;  // delta 0.0015: the second
+    ASSERT_TRUE(ok(e->update(s.kinematics())));
+    const double expected = NormalLaw(NormalLaw::Params{p.K, p.e, p.M1, p.M2, p.law, p.n, p.v0})
+                                .forceVariableStepScale(0.004, -0.0025, law == ImpactLaw::Hertz);
+    EXPECT_NEAR(e->newtonStepScale(), expected, 1e-9) << NormalLaw::name(law);
+    if (law == ImpactLaw::Kelvin)
+      EXPECT_EQ(e->newtonStepScale(), 1.0);
+    else
+      EXPECT_GT(e->newtonStepScale(), 1.0);
+    s.u(2) = -0.1014;  // delta 0.0014: a fifteenth of it removed, no opinion
+    ASSERT_TRUE(ok(e->update(s.kinematics())));
+    EXPECT_EQ(e->newtonStepScale(), 1.0);
+  }
+}
+
 TEST(NodeToSurfaceContact3dTest, LawHeldClosedBranchEvaluatesTheLawUnclipped) {
   // Held in contact, a trial that opens the gap still gets the law's force (odd extension: a
   // pull of k g^n), smooth for Newton on the held equations.

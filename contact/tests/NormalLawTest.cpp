@@ -245,12 +245,77 @@ TEST(NormalLawTest, ReleaseForceMakesTheTrapezoidGiveBackTheStoredEnergy) {
       const double N = law.releaseForce(g, -dn, Nn, false);
       EXPECT_NEAR(0.5 * (Nn + N) * (dn + g), stored, 1e-12 * Nn * dn);
     }
-    // At g = 0: -(n-1)/(n+1) N_n (zero for kelvin); the held continuation matches value and slope.
-    EXPECT_NEAR(law.releaseForce(0.0, -dn, Nn, false), -(n - 1) / (n + 1) * Nn, 1e-12 * Nn);
-    const double s = 1e-7, h0 = law.releaseForce(-s, -dn, Nn, true);
-    const double slope = (law.releaseForce(s, -dn, Nn, false) - h0) / (2 * s);
-    EXPECT_NEAR(slope, 2 * Nn / ((n + 1) * -dn), 1e-5 * Nn / dn);
+    // At g = 0: -(n-1)/(n+1) N_n (zero for kelvin). Held inside the face: kelvin goes on with
+    // the release force's slope; a power law along the ramp from -tail at the face to zero at
+    // kRampWidth delta_n inside it, on which the end state is the one in the jump.
+    const double tail = (n - 1) / (n + 1) * Nn;
+    EXPECT_NEAR(law.releaseForce(0.0, -dn, Nn, false), -tail, 1e-12 * Nn);
+    if (which == ImpactLaw::Kelvin) {
+      const double s = 1e-7, h0 = law.releaseForce(-s, -dn, Nn, true);
+      const double slope = (law.releaseForce(s, -dn, Nn, false) - h0) / (2 * s);
+      EXPECT_NEAR(slope, 2 * Nn / ((n + 1) * -dn), 1e-5 * Nn / dn);
+      EXPECT_FALSE(law.onReleaseRamp(-1e-7, h0));
+      continue;
+    }
+    const double w = NormalLaw::kRampWidth * dn;
+    EXPECT_NEAR(law.releaseForce(-1e-15, -dn, Nn, true), -tail, 1e-9 * Nn);
+    EXPECT_NEAR(law.releaseForce(-0.5 * w, -dn, Nn, true), -0.5 * tail, 1e-12 * Nn);
+    EXPECT_NEAR(law.releaseForce(-w, -dn, Nn, true), 0.0, 1e-12 * Nn);
+    EXPECT_GT(law.releaseForce(-2.0 * w, -dn, Nn, true), 0.0);
+    EXPECT_TRUE(law.onReleaseRamp(-0.5 * w, law.releaseForce(-0.5 * w, -dn, Nn, true)));
+    EXPECT_FALSE(law.onReleaseRamp(-2.0 * w, law.releaseForce(-2.0 * w, -dn, Nn, true)));
   }
+}
+
+TEST(NormalLawTest, ForceVariableStepIsNewtonsStepOnTheForce) {
+  // One degree of freedom, r(delta) = k delta^n + m (delta - dp) - F (a spring and the inertia of
+  // a Newmark step), Newton from dp. The step in w = delta^n, computed here on r written in w,
+  // r(w) = k w + m (w^(1/n) - dp) - F: dw = -r / (k + m w^(1/n - 1) / n), and its penetration
+  // (w + dw)^(1/n) is where the scaled delta step must land.
+  NormalLaw::Params p{4e12, 1.0, 1.0, 1.0};
+  p.law = ImpactLaw::Hertz;
+  const NormalLaw law(p);
+  const double k = 4e12, n = 1.5, m = 4e4, F = 1e3;
+  int scaled = 0;
+  for (double dp : {1e-2, 1e-3, 1e-4}) {
+    double d = dp;
+    for (int it = 0; it < 6; ++it) {
+      const double r = k * std::pow(d, n) + m * (d - dp) - F;
+      const double change = -r / (n * k * std::pow(d, n - 1) + m);
+      const double scale = law.forceVariableStepScale(d, change, true);
+      const double w = std::pow(d, n);
+      const double dw = -r / (k + m * std::pow(w, 1.0 / n - 1.0) / n);
+      if (change <= -0.5 * d && w + dw > 0.0) {
+        EXPECT_NEAR(d + scale * change, std::pow(w + dw, 1.0 / n), 1e-9 * d) << dp << " " << it;
+        ++scaled;
+      } else if (change > -0.5 * d) {
+        EXPECT_EQ(scale, 1.0);
+      }
+      EXPECT_GE(scale, 1.0);
+      EXPECT_LE(scale, n);
+      d += scale * change;
+    }
+    // converged on the root within the six iterations (Newton alone needs 8 to 12 here)
+    EXPECT_NEAR(k * std::pow(d, n) + m * (d - dp), F, 1e-6 * F) << dp;
+  }
+  EXPECT_GT(scaled, 2);
+  // No opinion for a linear law, nor for a step that leaves more than half of the penetration.
+  NormalLaw::Params pk{1e6, 1.0, 1.0, 1.0};
+  EXPECT_EQ(NormalLaw(pk).forceVariableStepScale(1e-3, -0.9e-3, true), 1.0);
+  EXPECT_EQ(law.forceVariableStepScale(1e-3, -0.4e-3, true), 1.0);
+  // Where the step in w crosses the face: a force not smooth across it goes to a tenth of the
+  // penetration; a smooth one to where w + dw < 0 puts it on the other side, -|w + dw|^(1/n)
+  // (n = 2.5, where that needs a scale below n).
+  EXPECT_NEAR(law.forceVariableStepScale(1e-3, -0.7e-3, false), 0.9 / 0.7, 1e-12);
+  NormalLaw::Params p25{4e12, 1.0, 1.0, 1.0};
+  p25.law = ImpactLaw::Hertz;
+  p25.n = 2.5;
+  const double d0 = 1e-3, change = -1e-3;
+  const double wEnd = std::pow(d0, 2.5) + 2.5 * std::pow(d0, 1.5) * change;
+  ASSERT_LT(wEnd, 0.0);
+  const double scale = NormalLaw(p25).forceVariableStepScale(d0, change, true);
+  EXPECT_LT(scale, 2.5);
+  EXPECT_NEAR(d0 + scale * change, -std::pow(-wEnd, 1.0 / 2.5), 1e-12 * d0);
 }
 
 TEST(NormalLawTest, PowerLawsRejectBadInput) {

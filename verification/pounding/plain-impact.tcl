@@ -99,4 +99,54 @@ checkTrue "jankowski, k_h 1.263e10, dt 0.01: 10 steps after the approach complet
     [expr {$status eq "ok"}]
 checkTrue "jankowski, k_h 1.263e10, dt 0.01: the pair gave an impulse ($impulse)" \
     [expr {$status eq "ok" && $impulse > 0.0}]
+# Hertz's law in a step 4.5 times longer than the impact (k_h 3.994e12 kN/m^1.5, 1 t on a fixed
+# face, 1 m/s, dt 0.01 s): the step's first iterate penetrates 1.3e-3 m and its end state about
+# 4e-8 m, and Newton shrinks a delta^1.5 spring's penetration by a third an iteration (12
+# iterations in that step before the pair asked for the step of Newton on its force,
+# Element::newtonStepScale). Checked: the impact step takes at most 5 iterations, and its end
+# state is the root of the step's own equation, m a(u) = k_h (-g(u))^1.5 (the contact force on
+# the contactor) with Newmark's a(u) = 4 (u - u_n - h v_n) / h^2 - a_n, found here by bisection
+# (an independent calculation): a longer Newton step changes the path, not the answer.
+proc hertzInOneStep {} {
+  set k 3.994e12; set h 0.01; set z0 0.0537
+  wipe
+  model basic -ndm 3 -ndf 3
+  node 1 -1 -1 0; node 2 1 -1 0; node 3 1 1 0; node 4 -1 1 0
+  foreach n {1 2 3 4} { fix $n 1 1 1 }
+  node 5 0 0 $z0; fix 5 1 1 0; mass 5 0 0 1.0
+  element nodeToSurface 1 5 1 2 3 4 -law hertz -K $k -masses 1.0 1e9
+  constraints Plain; numberer Plain; system UmfPack
+  test NormDispIncr 1e-8 25
+  algorithm Newton; integrator Newmark 0.5 0.25; analysis Transient
+  timeSeries Constant 1
+  pattern Plain 1 1 { load 5 0 0 -50.0 }
+  analyze 2 $h
+  remove loadPattern 1
+  for {set i 0} {$i < 10} {incr i} {
+    set un [nodeDisp 5 3]; set vn [nodeVel 5 3]; set an [nodeAccel 5 3]
+    if {[analyze 1 $h] != 0} { return [list fail [getTime]] }
+    set u [nodeDisp 5 3]
+    if {$z0 + $u < 0.0} {
+      # m a(u) - N(u) increases with u: its root by bisection
+      set lo [expr {-$z0 - 0.01}]; set hi [expr {-$z0}]
+      for {set j 0} {$j < 200} {incr j} {
+        set mid [expr {0.5*($lo + $hi)}]
+        set acc [expr {4.0*($mid - $un - $h*$vn)/($h*$h) - $an}]
+        set r [expr {1.0*$acc - $k*(-($z0 + $mid))**1.5}]
+        if {$r > 0.0} { set hi $mid } else { set lo $mid }
+      }
+      return [list ok [getTime] [testIter] $u [expr {0.5*($lo + $hi)}]]
+    }
+  }
+  return [list none [getTime]]
+}
+lassign [hertzInOneStep] status t iter u root
+checkTrue "hertz, k_h 3.994e12, dt 0.01: the impact step completes and closes the pair ($status at $t)" \
+    [expr {$status eq "ok"}]
+if {$status eq "ok"} {
+  checkTrue "hertz, k_h 3.994e12, dt 0.01: at most 5 iterations in the impact step ($iter)" \
+      [expr {$iter <= 5}]
+  checkAbs "hertz, k_h 3.994e12, dt 0.01: the end state is the root of the step's equation (m)" \
+      $u $root 1e-8
+}
 finish

@@ -8,6 +8,8 @@ namespace dabs::analysis {
 /// Newton-Raphson (`algorithm Newton ?-initial|-initialThenCurrent?`) and modified Newton
 /// (`algorithm ModifiedNewton ?-initial?`, tangent formed once per step). With -initial the
 /// initial stiffness is factorised once and reused while the step coefficients stay the same.
+/// Newton (current tangent) lengthens a step when an element asks for it
+/// (Element::newtonStepScale: a power-law contact leaving a deep penetration).
 class NewtonRaphson final : public SolutionAlgorithm {
  public:
   enum class Tangent { Current, Initial, InitialThenCurrent };
@@ -18,6 +20,7 @@ class NewtonRaphson final : public SolutionAlgorithm {
  private:
   Tangent tangent_;
   bool modified_;
+  Eigen::VectorXd extraStep_;  ///< the part of a lengthened step added after the first update
 };
 
 }  // namespace dabs::analysis

@@ -90,6 +90,7 @@ void AnalysisModel::buildScatter() {
   };
 
   elements_.clear();
+  anyScalesSteps_ = false;
   std::vector<std::vector<std::pair<int, double>>> localEqs;
   std::vector<std::pair<int, double>> scratch;
   long sleeping = 0;
@@ -136,6 +137,8 @@ void AnalysisModel::buildScatter() {
     link.rates = !e->isLinear() || imposedMotion_ || e->mayTurnInactive() ||
                  !e->dampingTangent().isZero(0.0);
     link.switching = e->switchesStatus();
+    link.scalesSteps = e->scalesNewtonSteps();
+    anyScalesSteps_ = anyScalesSteps_ || link.scalesSteps;
     elements_.push_back(std::move(link));
   }
   for (NodeScatter& nl : nodes_) {
@@ -414,6 +417,17 @@ bool AnalysisModel::holdStatuses() {
       any = true;
     }
   return any;
+}
+
+double AnalysisModel::newtonStepScale() const {
+  double scale = 1.0;
+  if (!anyScalesSteps_) return scale;
+  // The smallest scale of those that ask for one: no element is carried past its own target.
+  for (std::size_t k = 0; k < awake_; ++k)
+    if (const ElementScatter& l = elements_[k]; l.scalesSteps && !l.sleeping)
+      if (const double s = l.element->newtonStepScale(); s > 1.0)
+        scale = scale > 1.0 ? std::min(scale, s) : s;
+  return scale;
 }
 
 elements::Element::HeldStatus AnalysisModel::checkHeldStatuses() {

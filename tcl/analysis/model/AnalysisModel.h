@@ -82,6 +82,9 @@ class AnalysisModel {
   /// Checks the held statuses after an update (Element::checkHeldStatus): Switched when some
   /// element switched (none conflicting), Conflict when one found no status that agrees.
   elements::Element::HeldStatus checkHeldStatuses();
+  /// After an update: the multiple of Newton's last step that the awake elements ask for
+  /// (Element::newtonStepScale), the smallest of those above 1, or 1 when none asks.
+  double newtonStepScale() const;
   /// Element updates since construction (a work count for benchmarks).
   long elementUpdates() const noexcept { return elementUpdates_; }
   /// Threads that update elements (1: the calling thread alone). Results do not depend on it.
@@ -173,6 +176,7 @@ class AnalysisModel {
   std::span<ElementScatter> awakeLinks() noexcept { return {elements_.data(), awake_}; }
   std::span<const ElementScatter> awakeLinks() const noexcept { return {elements_.data(), awake_}; }
   int threads_ = 1;
+  bool anyScalesSteps_ = false;               // some element may ask Newton for a longer step
   std::vector<Status> elementStatus_;         // per element, of the last updateElements
   std::map<int, Eigen::VectorXd> influence_;  // M r per excitation dof, formed once per build
   const Eigen::VectorXd& influence(int dof);

@@ -63,7 +63,8 @@ struct ElementScatter {
   bool ownDynamics = false;
   elements::FarPair* far = nullptr;  ///< a contact pair that may sleep (Element::farPair)
   bool sleeping = false;             ///< left out of the pattern and the iterations
-  bool switching = false;  ///< the element's force switches between laws (Element::HeldStatus)
+  bool switching = false;    ///< the element's force switches between laws (Element::HeldStatus)
+  bool scalesSteps = false;  ///< the element may ask Newton for a longer step (newtonStepScale)
 
   /// Gather and work buffers for n dofs (once).
   void allocateBuffers(int n) {
