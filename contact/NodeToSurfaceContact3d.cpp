@@ -379,12 +379,14 @@ Status NodeToSurfaceContact3d<Ndf>::update(const elements::Kinematics& kin) {
     // smooth across it (NormalLaw::forceVariableStepScale).
     smoothClosed_ = branch == NormalBranch::Spring || normal_.law() != ImpactLaw::Jankowski;
     if (lastPowerClosed && lastGap != 0.0) {
-      // Newton is slow on the spring where it removes half of the penetration or more in two
-      // updates running; one such step alone is often the inertia's (a touch step's first
-      // iterate), where Newton's own step is the better one.
+      // Newton is slow on the spring where it removes about 1/n of the penetration in two
+      // updates running (NormalLaw::slowShrink); one such step alone is often the inertia's (a
+      // touch step's first iterate), where Newton's own step is the better one.
       const double side = lastGap < 0.0 ? 1.0 : -1.0;  // the sign of the last penetration
       const double delta = std::abs(lastGap), change = side * (lastGap - g.value());
-      shrinks_ = change <= -0.5 * delta ? static_cast<std::uint8_t>(std::min(shrinks_ + 1, 2)) : 0;
+      shrinks_ = normal_.slowShrink(delta, change)
+                     ? static_cast<std::uint8_t>(std::min(shrinks_ + 1, 2))
+                     : 0;
       if (shrinks_ >= 2)
         stepScale_ = normal_.forceVariableStepScale(delta, change, lastSmooth && smoothClosed_);
     } else {

@@ -161,8 +161,9 @@ class NodeToSurfaceContact3d : public elements::FixedSizeElement<5, Ndf, 0u>,
   /// after kMaxSwitches switches in a step.
   elements::Element::HeldStatus checkHeldStatus() override;
   /// A power-law pair (spring k delta^n, n > 1) asks Newton for a longer step while Newton
-  /// shrinks its deep penetration slowly: NormalLaw::forceVariableStepScale of the change from
-  /// the last update's penetration to this one's, both on a closed branch (1 otherwise).
+  /// shrinks its deep penetration slowly (NormalLaw::slowShrink in this update and the last):
+  /// NormalLaw::forceVariableStepScale of the change from the last update's penetration to this
+  /// one's, both on a closed branch (1 otherwise).
   bool scalesNewtonSteps() const override { return normal_.exponent() > 1.0; }
   double newtonStepScale() const override { return stepScale_; }
   /// Open contacts carry nothing, so the assembly skips them.
@@ -292,7 +293,7 @@ class NodeToSurfaceContact3d : public elements::FixedSizeElement<5, Ndf, 0u>,
   bool powerClosed_ = false;       ///< last update: a power law's closed force (inside, or held)
   bool smoothClosed_ = false;      ///< ... and one smooth across the face
   double stepScale_ = 1.0;         ///< last update's newtonStepScale()
-  std::uint8_t shrinks_ = 0;       ///< updates running (up to 2) that halved the penetration
+  std::uint8_t shrinks_ = 0;       ///< updates running (up to 2) with NormalLaw::slowShrink
   /// trial_ equals committed_ but for the gap, both quietFar, and the matrices are zero: set by a
   /// full commit or revert of such a state, cleared by every other write of trial_.
   bool farInBothStates_ = false;

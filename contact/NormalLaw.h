@@ -113,23 +113,30 @@ class NormalLaw {
   /// that shrank a closed pair's penetration from `delta` (> 0) by `-change` (> 0); outside the
   /// face, on a held closed force's odd continuation, the distance to the face and its change.
   /// On a spring k delta^n with n > 1, Newton from a penetration far deeper than the end
-  /// state's removes only about 1/n of it an iteration (a third for n = 1.5: 12 to 14
-  /// iterations from a step's trial penetration of 1e-3 m to an end state of 1e-7 to 1e-9 m).
-  /// In w the spring is linear, and Newton's step in w is dw = n delta^(n-1) change exactly,
-  /// whatever else the residual holds (d/dw = d/ddelta delta / (n w)), so the penetration it
-  /// gives is delta^((n-1)/n) (delta + n change)^(1/n) when delta + n change > 0. Otherwise the
-  /// step in w crosses the face: for a force smooth across it (`smoothAcross`: the spring's odd
-  /// continuation, hertzdamp's damping k delta^n c_h gdot) to the same distance on the other
-  /// side; where it is not (Jankowski's damping c |delta|^(1/4) gdot, concave in w, whose cusp
-  /// at the face makes Newton in w overshoot) to a tenth of the penetration (Newton's own step
-  /// leaves a third of it for n = 1.5). Returns 1 (no opinion) for n <= 1 and where Newton
-  /// removed less than half of the penetration; otherwise the scale, in [1, n].
+  /// state's removes only 1/n of it an iteration (two thirds for n = 1.5, leaving a third: 12
+  /// to 14 iterations from a step's trial penetration of 1e-3 m to an end state of 1e-7 to
+  /// 1e-9 m). In w the spring is linear, and Newton's step in w is dw = n delta^(n-1) change
+  /// exactly, whatever else the residual holds (d/dw = d/ddelta delta / (n w)), so the
+  /// penetration it gives is delta^((n-1)/n) (delta + n change)^(1/n) when delta + n change > 0.
+  /// Otherwise the step in w crosses the face: for a force smooth across it (`smoothAcross`:
+  /// the spring's odd continuation, hertzdamp's damping c_h delta^n gdot) to the same distance
+  /// on the other side; where it is not (Jankowski's damping c |delta|^(1/4) gdot, concave in
+  /// w, whose cusp at the face makes Newton in w overshoot) to a tenth of the penetration
+  /// (Newton's own step leaves a third of it for n = 1.5). Returns 1 (no opinion) for n <= 1
+  /// and where Newton removed less than three quarters of the 1/n it removes far from the end
+  /// state (half of the penetration for n = 1.5); otherwise the scale, in [1, n].
   double forceVariableStepScale(double delta, double change, bool smoothAcross) const {
-    if (!(n_ > 1.0) || !(delta > 0.0) || !(change <= -0.5 * delta)) return 1.0;
+    if (!(n_ > 1.0) || !(delta > 0.0) || !slowShrink(delta, change)) return 1.0;
     const double rest = delta + n_ * change;
     const double size = std::pow(delta, (n_ - 1.0) / n_) * std::pow(std::abs(rest), 1.0 / n_);
     const double target = rest > 0.0 ? size : smoothAcross ? -size : 0.1 * delta;
     return std::clamp((target - delta) / change, 1.0, n_);
+  }
+  /// True when a Newton step that changed a penetration `delta` (> 0) by `change` removed at
+  /// least three quarters of delta / n (n > 1): the step of Newton far from the end state on a
+  /// spring k delta^n (forceVariableStepScale).
+  bool slowShrink(double delta, double change) const {
+    return n_ > 1.0 && change <= -0.75 * delta / n_;
   }
 
   /// Compressive normal force for gap g and gap rate gdot; zero when open or when it would pull.
@@ -150,7 +157,8 @@ class NormalLaw {
   /// N = -tail, tail = N_r (n - 1) / (n + 1): with the committed force at the start of the
   /// step, the trapezoid gives back the stored energy only if the end force pulls). `held`
   /// continues it inside the face (g < 0; the formula has a pole at gn): Kelvin along its
-  /// tangent at g = 0, N_r g / gn; a power law along the ramp N = -tail (1 + g / w),
+  /// tangent at g = 0, N_r g / gn (so does a power law with n <= 1, whose release force has no
+  /// jump at the face); a power law with n > 1 along the ramp N = -tail (1 + g / w),
   /// w = kRampWidth |gn|, which bridges the jump from the closed force (zero at the face) to
   /// the release force (-tail there). A release step whose end state lies in that jump, at the
   /// face with a tension between 0 and tail (Filippov's set-valued selection), has no end state
@@ -169,20 +177,23 @@ class NormalLaw {
     }
     const double Nr = std::min(Nn, elasticForce(gn));
     const double tail = Nr * (n_ - 1.0) / (n_ + 1.0);  // -N at g = 0
-    if (held && g < 0.0) return -tail * (1.0 - g / (kRampWidth * gn));
+    if (held && g < 0.0) {
+      if (n_ > 1.0) return -tail * (1.0 - g / (kRampWidth * gn));
+      return -tail + 2.0 * Nr / (n_ + 1.0) * g / gn;  // n <= 1: no jump, its tangent at g = 0
+    }
     return (-Nr * g + tail * gn) / (g - gn);
   }
   /// Width of the held release force's ramp inside the face, as a fraction of the committed
-  /// penetration |gn|: an end state on the ramp starts the next step with at most 0.1 % of the
-  /// released force (0.01^1.5) in the closed law, and the ramp's slope, 0.2 N_r / (0.01 |gn|),
-  /// is 20 times the spring's secant N_r / |gn| (the tangent continuation the held branch had
-  /// before, zero at (n - 1) / 2 |gn|, was a ramp 25 times as wide: an end state there would
-  /// start the next step with 12.5 % of it).
+  /// penetration |gn|. For n = 1.5: an end state on the ramp starts the next step with at most
+  /// 0.1 % of the released force (0.01^1.5) in the closed law, and the ramp's slope,
+  /// 0.2 N_r / (0.01 |gn|), is 20 times the spring's secant N_r / |gn| (the tangent
+  /// continuation the held branch had before, zero at (n - 1) / 2 |gn|, was a ramp 25 times as
+  /// wide: an end state there would start the next step with 12.5 % of it).
   static constexpr double kRampWidth = 0.01;
-  /// True when a power law's held release force N at gap g lies on its ramp inside the face
-  /// (-w <= g < 0, -tail <= N <= 0): the end state in the jump (releaseForce).
+  /// True when a power law's (n > 1) held release force N at gap g lies on its ramp inside the
+  /// face (-w <= g < 0, -tail <= N <= 0): the end state in the jump (releaseForce).
   bool onReleaseRamp(double g, double N) const {
-    return law_ != ImpactLaw::Kelvin && g < 0.0 && N <= 0.0;
+    return law_ != ImpactLaw::Kelvin && n_ > 1.0 && g < 0.0 && N <= 0.0;
   }
 
  private:

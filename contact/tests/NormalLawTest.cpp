@@ -316,6 +316,32 @@ TEST(NormalLawTest, ForceVariableStepIsNewtonsStepOnTheForce) {
   const double scale = NormalLaw(p25).forceVariableStepScale(d0, change, true);
   EXPECT_LT(scale, 2.5);
   EXPECT_NEAR(d0 + scale * change, -std::pow(-wEnd, 1.0 / 2.5), 1e-12 * d0);
+  // For n = 2.5 Newton far from the end state removes 1/n = 40 % of the penetration, less than
+  // half: the slow regime is judged against 1/n.
+  const double r25 = 1e-3 * (1.0 - 0.35);  // 35 % removed
+  const double w25 = std::pow(1e-3, 2.5) + 2.5 * std::pow(1e-3, 1.5) * (r25 - 1e-3);
+  const double s25 = NormalLaw(p25).forceVariableStepScale(1e-3, r25 - 1e-3, true);
+  EXPECT_GT(s25, 1.0);
+  EXPECT_NEAR(1e-3 + s25 * (r25 - 1e-3), std::pow(w25, 1.0 / 2.5), 1e-12);
+}
+
+TEST(NormalLawTest, PowerLawsWithoutAJumpKeepTheReleaseTangentInside) {
+  // n <= 1: the release force is zero (n = 1) or compressive (n < 1) at the face, no jump from
+  // the closed force's zero; held inside the face it goes on along its tangent at g = 0, and no
+  // state inside is taken for the end state in a jump.
+  for (double n : {1.0, 0.8}) {
+    NormalLaw::Params p{1e6, 1.0, 1.0, 1.0};
+    p.law = ImpactLaw::Hertz;
+    p.n = n;
+    const NormalLaw law(p);
+    const double dn = 0.02, Nn = 1e6 * std::pow(dn, n), tail = Nn * (n - 1) / (n + 1);
+    for (double g : {-1e-4, -5e-3}) {
+      const double N = law.releaseForce(g, -dn, Nn, true);
+      EXPECT_NEAR(N, -tail + 2.0 * Nn / (n + 1) * g / -dn, 1e-12 * Nn) << n;
+      EXPECT_FALSE(law.onReleaseRamp(g, N)) << n;
+    }
+    EXPECT_EQ(law.forceVariableStepScale(1e-3, -0.9e-3, true), 1.0);
+  }
 }
 
 TEST(NormalLawTest, PowerLawsRejectBadInput) {

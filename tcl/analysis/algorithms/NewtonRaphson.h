@@ -9,7 +9,8 @@ namespace dabs::analysis {
 /// (`algorithm ModifiedNewton ?-initial?`, tangent formed once per step). With -initial the
 /// initial stiffness is factorised once and reused while the step coefficients stay the same.
 /// Newton (current tangent) lengthens a step when an element asks for it
-/// (Element::newtonStepScale: a power-law contact leaving a deep penetration).
+/// (Element::newtonStepScale: a power-law contact leaving a deep penetration) and the
+/// integrator's update is additive (Integrator::additiveUpdate: the time-stepping ones).
 class NewtonRaphson final : public SolutionAlgorithm {
  public:
   enum class Tangent { Current, Initial, InitialThenCurrent };

@@ -33,6 +33,7 @@ class GeneralizedAlpha final : public Integrator {
   void domainChanged(LinearSystem& system) override;
   Status newStep(LinearSystem& system, double dt) override;
   Status update(LinearSystem& system, const Eigen::VectorXd& dx) override;
+  bool additiveUpdate() const override { return true; }
   AssemblyCoefficients coefficients(StiffnessKind k) const override;
   Status commit(LinearSystem& system) override;
   void revertToLastStep() override;

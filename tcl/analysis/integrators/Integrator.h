@@ -21,6 +21,10 @@ class Integrator {
   [[nodiscard]] virtual Status newStep(LinearSystem& system, double dt) = 0;
   /// Corrector: applies the solution dx of A dx = B.
   [[nodiscard]] virtual Status update(LinearSystem& system, const Eigen::VectorXd& dx) = 0;
+  /// True when update() is linear in dx and leaves the system alone, so that two updates with
+  /// dx1 and dx2 give the state of one with dx1 + dx2 (the time-stepping integrators; the static
+  /// ones count iterations or re-solve a constraint in update()).
+  virtual bool additiveUpdate() const { return false; }
   /// Tangent and residual coefficients of the current step.
   virtual AssemblyCoefficients coefficients(StiffnessKind k) const = 0;
   /// Commits the converged step (domain commit, which lets recorders record).

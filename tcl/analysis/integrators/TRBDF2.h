@@ -19,6 +19,7 @@ class TRBDF2 final : public Integrator {
   void domainChanged(LinearSystem& system) override;
   Status newStep(LinearSystem& system, double dt) override;
   Status update(LinearSystem& system, const Eigen::VectorXd& dx) override;
+  bool additiveUpdate() const override { return true; }
   AssemblyCoefficients coefficients(StiffnessKind k) const override;
   void revertToLastStep() override;
 

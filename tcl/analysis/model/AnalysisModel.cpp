@@ -422,7 +422,8 @@ bool AnalysisModel::holdStatuses() {
 double AnalysisModel::newtonStepScale() const {
   double scale = 1.0;
   if (!anyScalesSteps_) return scale;
-  // The smallest scale of those that ask for one: no element is carried past its own target.
+  // The smallest scale of those that ask for one, so that no asking element is carried past its
+  // own target (the whole increment is lengthened: elements that do not ask move with it).
   for (std::size_t k = 0; k < awake_; ++k)
     if (const ElementScatter& l = elements_[k]; l.scalesSteps && !l.sleeping)
       if (const double s = l.element->newtonStepScale(); s > 1.0)
