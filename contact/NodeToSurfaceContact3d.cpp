@@ -194,7 +194,7 @@ Status NodeToSurfaceContact3d<Ndf>::update(const elements::Kinematics& kin) {
   const double lastGap = trial_.gap;
   const bool lastPowerClosed = powerClosed_;
   const bool lastSmooth = smoothClosed_;
-  powerClosed_ = false;
+  powerClosed_ = false;  // until this update reaches the normal law (the open paths return early)
   stepScale_ = 1.0;
   NodeToSurfaceState t = committed_;
   t.force.setZero();
@@ -370,28 +370,21 @@ Status NodeToSurfaceContact3d<Ndf>::update(const elements::Kinematics& kin) {
   const bool releaseForce = branch == NormalBranch::Release;
   onRamp_ = releaseForce && holding_ && normal_.onReleaseRamp(g.value(), Nn.value());
   t.gap = g.value();
-  if (normal_.exponent() > 1.0 && inContact(branch) &&
-      (holding_ || (g.value() < 0.0 && Nn.value() > 0.0))) {
-    // A closed power law: inside the face, or held on either side (its odd continuation
-    // outside, where Newton closes in on the face as slowly).
-    powerClosed_ = true;
-    // Jankowski's damping has a cusp at the face; the spring alone and the other laws are
-    // smooth across it (NormalLaw::forceVariableStepScale).
-    smoothClosed_ = branch == NormalBranch::Spring || normal_.law() != ImpactLaw::Jankowski;
-    if (lastPowerClosed && lastGap != 0.0) {
-      // Newton is slow on the spring where it removes about 1/n of the penetration in two
-      // updates running (NormalLaw::slowShrink); one such step alone is often the inertia's (a
-      // touch step's first iterate), where Newton's own step is the better one.
-      const double side = lastGap < 0.0 ? 1.0 : -1.0;  // the sign of the last penetration
-      const double delta = std::abs(lastGap), change = side * (lastGap - g.value());
-      shrinks_ = normal_.slowShrink(delta, change)
-                     ? static_cast<std::uint8_t>(std::min(shrinks_ + 1, 2))
-                     : 0;
-      if (shrinks_ >= 2)
-        stepScale_ = normal_.forceVariableStepScale(delta, change, lastSmooth && smoothClosed_);
-    } else {
-      shrinks_ = 0;
-    }
+  // A closed power law: inside the face, or held on either side (its odd continuation outside,
+  // where Newton closes in on the face as slowly). Jankowski's damping has a cusp at the face;
+  // the spring alone and the other laws are smooth across it (NormalLaw::forceVariableStepScale).
+  powerClosed_ = normal_.exponent() > 1.0 && inContact(branch) &&
+                 (holding_ || (g.value() < 0.0 && Nn.value() > 0.0));
+  smoothClosed_ = branch == NormalBranch::Spring || normal_.law() != ImpactLaw::Jankowski;
+  if (powerClosed_ && lastPowerClosed && lastGap != 0.0) {
+    // Newton is slow on the spring where it removes about 1/n of the penetration in two updates
+    // running (NormalLaw::slowShrink); one such step alone is often the inertia's (a touch
+    // step's first iterate), where Newton's own step is the better one.
+    const double side = lastGap < 0.0 ? 1.0 : -1.0;  // the sign of the last penetration
+    const double delta = std::abs(lastGap), change = side * (lastGap - g.value());
+    shrinks_ = normal_.slowShrink(delta, change) ? std::uint8_t(std::min(shrinks_ + 1, 2)) : 0;
+    if (shrinks_ >= 2)
+      stepScale_ = normal_.forceVariableStepScale(delta, change, lastSmooth && smoothClosed_);
   } else {
     shrinks_ = 0;
   }

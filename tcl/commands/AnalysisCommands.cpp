@@ -2,7 +2,6 @@
 // Analysis commands: analysis, analyze, eigen, wipe, wipeAnalysis, reset, initialize, testIter,
 // threads, analysisStatistics; the strategy commands (constraints, numberer, system, test,
 // algorithm, integrator) are in StrategyCommands.cpp and listed here.
-#include <charconv>
 #include <chrono>
 #include <cstdio>
 #include <optional>
@@ -192,15 +191,10 @@ void testIterCmd(Runtime& rt, ArgReader& a) {
 // count) and returns the count in force (while auto is still measuring, the next step's).
 void threadsCmd(Runtime& rt, ArgReader& a) {
   if (a.hasMore()) {
-    const std::string word = a.word("n");
-    int n = 0;
-    if (word != "auto") {
-      const auto [end, error] = std::from_chars(word.data(), word.data() + word.size(), n);
-      if (error != std::errc() || end != word.data() + word.size() || n < 1 || n > 256)
-        a.failArgument("n", "must be 1 to 256 or auto");
-    }
+    const auto n = analysis::ThreadChoice::parseCount(a.word("n"));
+    if (!n) a.failArgument("n", "must be 1 to 256 or auto");
     a.finish();
-    rt.analysis->setThreads(n);  // 0: auto
+    rt.analysis->setThreads(*n);  // 0: auto
   }
   setResult(rt, std::to_string(rt.analysis->threads()));
 }

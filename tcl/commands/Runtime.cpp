@@ -3,7 +3,6 @@
 
 #include <cstdlib>
 #include <string>
-#include <string_view>
 
 #include "materials/InputError.h"
 #include "tcl/analysis/driver/AnalysisBuilder.h"
@@ -24,11 +23,9 @@ Runtime::Runtime(Tcl_Interp* interpreter)
   // not say `threads` themselves (an OpenSees script runs unchanged); another value is reported
   // and the analysis keeps the automatic choice (ThreadChoice).
   if (const char* env = std::getenv("DABS_THREADS")) {
-    char* end = nullptr;
-    const long n = std::strtol(env, &end, 10);
-    if (end != env && *end == '\0' && n >= 1 && n <= 256)
-      analysis->setThreads(static_cast<int>(n));
-    else if (std::string_view(env) != "auto")
+    if (const auto n = analysis::ThreadChoice::parseCount(env))
+      analysis->setThreads(*n);
+    else
       analysis->log(std::string("DABS_THREADS=\"") + env +
                     "\" ignored: expected a whole number from 1 to 256 or auto; the count is "
                     "chosen by measurement");

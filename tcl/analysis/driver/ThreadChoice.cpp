@@ -2,8 +2,18 @@
 #include "tcl/analysis/driver/ThreadChoice.h"
 
 #include <algorithm>
+#include <charconv>
 
 namespace dabs::analysis {
+
+std::optional<int> ThreadChoice::parseCount(std::string_view text) noexcept {
+  if (text == "auto") return 0;
+  int n = 0;
+  const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), n);
+  if (error != std::errc() || end != text.data() + text.size() || n < 1 || n > kMaxThreads)
+    return std::nullopt;
+  return n;
+}
 
 ThreadChoice::ThreadChoice(int available) noexcept : available_(std::max(available, 1)) { reset(); }
 

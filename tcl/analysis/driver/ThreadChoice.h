@@ -2,6 +2,8 @@
 #pragma once
 
 #include <array>
+#include <optional>
+#include <string_view>
 
 namespace dabs::analysis {
 
@@ -43,6 +45,12 @@ class ThreadChoice {
   static constexpr int kPairs = 10;
   /// The threads must save at least this share of a step's time (noise, and "never slower").
   static constexpr double kMargin = 0.05;
+  /// Most threads a script or DABS_THREADS may ask for.
+  static constexpr int kMaxThreads = 256;
+
+  /// A thread count as `threads` and DABS_THREADS take it: a whole number from 1 to kMaxThreads,
+  /// or `auto` (0); nothing for anything else.
+  static std::optional<int> parseCount(std::string_view text) noexcept;
 
  private:
   int available_;

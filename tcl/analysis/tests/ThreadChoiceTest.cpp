@@ -93,5 +93,13 @@ TEST(ThreadChoiceTest, ResetMeasuresAnew) {
   EXPECT_EQ(choice.next(), 1);
 }
 
+TEST(ThreadChoiceTest, ParsesACountFrom1To256OrAuto) {
+  EXPECT_EQ(ThreadChoice::parseCount("auto"), 0);
+  EXPECT_EQ(ThreadChoice::parseCount("1"), 1);
+  EXPECT_EQ(ThreadChoice::parseCount("256"), 256);
+  for (const char* bad : {"0", "257", "-2", "2.5", "2x", "", "Auto", " 2"})
+    EXPECT_FALSE(ThreadChoice::parseCount(bad).has_value()) << '"' << bad << '"';
+}
+
 }  // namespace
 }  // namespace dabs::analysis
