@@ -58,6 +58,7 @@ void ContactStepping::reset() {
   lastGap_.assign(pairs_.size(), std::numeric_limits<double>::quiet_NaN());
   lastRate_.assign(pairs_.size(), std::numeric_limits<double>::quiet_NaN());
   touchRate_.assign(pairs_.size(), std::numeric_limits<double>::quiet_NaN());
+  closedFor_.assign(pairs_.size(), 0.0);
   lastStep_ = 0.0;
   previousStep_ = 0.0;
 }
@@ -79,6 +80,7 @@ double ContactStepping::nextStep(double remaining, double dt) {
       pairNear = true;
       h = std::min(h, lastStep_);
     }
+    closedFor_[i] = pair.committedClosed() ? closedFor_[i] + lastStep_ : 0.0;
     const double last = lastGap_[i];  // NaN before the first step: no prediction
     const double rate = lastStep_ > 0.0 && std::isfinite(last) && std::isfinite(gap)
                             ? (gap - last) / lastStep_
@@ -128,13 +130,18 @@ double ContactStepping::nextStep(double remaining, double dt) {
     if (pairNear) {
       h = std::min(h, contactStep);
       shortestNear = std::min(shortestNear, shortest);
-      // After a short touch step (a jump or a steep rise of the damping force), the steps in
-      // contact grow from it by at most a factor 2: Jankowski's delta^(1/4) rise lasts beyond
-      // the touch step, and a step of T_c / 20 right after it left its onset's error of first
-      // order (e = 0.1: 6 % low at T_c / 34; with the growth 0.8 %).
-      if (pair.committedClosed() && lastStep_ > 0.0 && std::isfinite(touchRate_[i]) &&
-          pair.touchStep(touchRate_[i]) < contactStep)
-        h = std::min(h, 2.0 * lastStep_);
+      // After a short touch step (a jump or a steep rise of the damping force), a step in
+      // contact is no longer than the time the pair has been closed (or the touch step): the
+      // steps are graded from the touch, each at most doubling the contact's age. Jankowski's
+      // delta^(1/4) rise lasts beyond the touch step, and a step of T_c / 20 right after it left
+      // its onset's error of first order (e = 0.1: 6 % low at T_c / 34; graded 0.8 %). Grading
+      // on the contact's age, not on the last step, keeps a step cut short by the end of an
+      // output step from restarting the growth: three Jankowski impacts at 0.07 to 0.3 m/s under
+      // a 10 ms output step were 1.1 % high in e that way (hard-impact suite), 0.9 % graded.
+      if (pair.committedClosed() && std::isfinite(touchRate_[i])) {
+        const double touch = pair.touchStep(touchRate_[i]);
+        if (touch < contactStep) h = std::min(h, std::max(touch, closedFor_[i]));
+      }
     }
   }
   // A remainder shorter than the shortest cut is taken with this step (a stiff contact's steps

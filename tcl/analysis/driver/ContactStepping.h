@@ -53,8 +53,8 @@ struct ContactSteppingParams {
 ///   dashpot, Jankowski's damping) is held by a step of at most touchStep where that is shorter
 ///   than the contact step (maxStep, T_c / perContact): the step before ends half a touch step
 ///   before the predicted touch (the trapezoid rule credits the step holding the touch with half
-///   its end force, an error of first order in that step), and while such a pair is closed its
-///   steps grow by at most a factor 2 a step;
+///   its end force, an error of first order in that step), and while such a pair is closed a
+///   step is no longer than the time it has been closed (steps graded from the touch);
 /// - the shortest cut is 0.01 maxStep, or a twentieth of the contact step where that is shorter,
 ///   and a remainder of the output step shorter than it is taken with the step before;
 /// - the step after a release step that ended in tension (ContactPredictor::committedTension) is
@@ -86,6 +86,7 @@ class ContactStepping {
   std::vector<double> lastGap_;
   std::vector<double> lastRate_;   ///< per pair: the gap's rate over the step before the last
   std::vector<double> touchRate_;  ///< per pair: the approach rate when its touch was predicted
+  std::vector<double> closedFor_;  ///< per pair: how long it has been closed (committed steps)
   double previousStep_ = 0.0;      ///< the step before the last
   std::vector<std::vector<double>> nodeMasses_;  ///< per pair (perContact > 0): its nodes' masses
   double lastStep_ = 0.0;

@@ -109,7 +109,8 @@ TEST(ContactSteppingTest, StepIsCutAtThePredictedContactTimesTheOvershoot) {
 // The gap fell from 0.1 to 0.002 over 0.01 s: t_close = 0.002 * 0.01 / 0.098 = 2.04e-4 s, and
 // the step ends half a touch step before it (not at 1.2 t_close = 2.45e-4 s); the gap then left,
 // 0.002 - 9.8 * h, predicts the touch half a touch step ahead, and the step holding it is 1.2
-// times that; the steps in contact then grow by at most a factor 2 a step.
+// times that; a step in contact is then no longer than the time the pair has been closed (or
+// the touch step), and a step cut short by the output step's end does not restart that growth.
 TEST(ContactSteppingTest, ATouchWithADashpotJumpIsTakenInAShortStep) {
   OnePair model({1.0, 1.0}, 0.0, 0.1);
   ContactSteppingParams p = params(0.001);
@@ -132,11 +133,20 @@ TEST(ContactSteppingTest, ATouchWithADashpotJumpIsTakenInAShortStep) {
   EXPECT_NEAR(tClose2, 0.5 * touch, 1e-12);
   const double hTouch = stepping.nextStep(0.01, 0.01);
   EXPECT_NEAR(hTouch, 1.2 * tClose2, 1e-15);
-  // Closed after the touch: the steps grow from the touch step by at most twice the last one.
+  // Closed for hTouch (0.6 touch) after the touch step: the next step is the touch step.
   model.commitGap(-1e-6);
-  EXPECT_NEAR(stepping.nextStep(0.01, 0.01), 2.0 * hTouch, 1e-15);
+  const double h1 = stepping.nextStep(0.01, 0.01);
+  EXPECT_NEAR(h1, touch, 1e-15);
+  // Closed for hTouch + touch: the step is as long.
   model.commitGap(-2e-6);
-  EXPECT_NEAR(stepping.nextStep(0.01, 0.01), 4.0 * hTouch, 1e-15);
+  const double h2 = stepping.nextStep(0.01, 0.01);
+  EXPECT_NEAR(h2, hTouch + touch, 1e-15);
+  // The output step ends 1e-6 s later: that step is cut to it ...
+  model.commitGap(-3e-6);
+  EXPECT_NEAR(stepping.nextStep(1e-6, 0.01), 1e-6, 1e-18);
+  // ... and the next is the pair's age, hTouch + touch + h2 + 1e-6, not a growth from 1e-6.
+  model.commitGap(-4e-6);
+  EXPECT_NEAR(stepping.nextStep(0.01, 0.01), hTouch + touch + h2 + 1e-6, 1e-15);
 }
 
 TEST(ContactSteppingTest, APairAtTheTopOfABounceIsPredictedToCloseAgain) {
