@@ -148,15 +148,17 @@ class NodeToSurfaceContact3d : public elements::FixedSizeElement<5, Ndf, 0u>,
   /// cone, the sliding force inside it; the equations of the step are then smooth.
   void holdStatus() override;
   /// Compares the held branches with those the last update's state gives and holds those when
-  /// they differ. A switch back to a branch already held in the step would cycle; then two
-  /// set-valued selections apply, the limits of the law where it jumps (Filippov 1988): (1) a
-  /// pair with a dashpot that would switch between Kelvin inside the face and open or the
-  /// release force outside it, while approaching, holds the spring force alone; the dashpot
-  /// force jumps from 0 to C |gdot| at the face, and an end state of the step exists only
-  /// within that jump, with N between 0 and the Kelvin force (the spring alone agrees while the
-  /// pair penetrates and approaches, g <= 0 and gdot <= 0, where it is at most the Kelvin
-  /// force); (2) a pair that has held both stick and slide may slide while its trial force is
-  /// at least the kinetic limit mu_k N (the cone drops from mu_s N to mu_k N at the onset of
+  /// they differ; a pair closed at the last commit whose held contact separates with a force
+  /// that would pull holds the release force before open (the contact ends in this step; in a
+  /// step longer than the impact its end state lies outside the face). A switch back to a branch
+  /// already held in the step would cycle; then two set-valued selections apply, the limits of the
+  /// law where it jumps (Filippov 1988): (1) a pair with a dashpot that would switch between Kelvin
+  /// inside the face and open or the release force outside it, while approaching, holds the spring
+  /// force alone; the dashpot force jumps from 0 to C |gdot| at the face, and an end state of the
+  /// step exists only within that jump, with N between 0 and the Kelvin force (the spring alone
+  /// agrees while the pair penetrates and approaches, g <= 0 and gdot <= 0, where it is at most the
+  /// Kelvin force); (2) a pair that has held both stick and slide may slide while its trial force
+  /// is at least the kinetic limit mu_k N (the cone drops from mu_s N to mu_k N at the onset of
   /// sliding). A held slide whose trial force reverses sticks at once (update()). Conflict
   /// after kMaxSwitches switches in a step.
   elements::Element::HeldStatus checkHeldStatus() override;
