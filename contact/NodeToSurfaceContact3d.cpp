@@ -158,15 +158,18 @@ elements::Element::HeldStatus NodeToSurfaceContact3d<Ndf>::checkHeldStatus() {
   Branches next = natural_;
   if (normalAgrees) {
     next.normal = held_.normal;
-  } else if (inContact(held_.normal) && natural_.normal == NormalBranch::Open && closedAtCommit() &&
-             !approaching_ && (triedNormal_ & bit(NormalBranch::Release)) == 0) {
-    // Closed at the last commit, and the held contact's end state separates with a force that
-    // would pull: the contact ends in this step, its end state either outside the face on the
-    // release force or inside it with none. The release force first: open is free flight,
-    // which in a step much longer than the impact ends far outside the face and is contradicted
-    // there by the release force, a branch more (Kelvin, 1e9 kN/m on 1 t, 0.1 ms impacts under
-    // 10 ms steps: 12 Newton iterations in a release step; 9 this way). A release end state
-    // inside the face is contradicted in turn, by open or Kelvin.
+  } else if (inContact(held_.normal) && natural_.normal == NormalBranch::Open && separating_ &&
+             closedAtCommit() && committed_.gap < 0.0 && !(normal_.exponent() > 1.0) &&
+             (triedNormal_ & bit(NormalBranch::Release)) == 0) {
+    // Closed at the last commit, and the held contact's end state on the face separates with a
+    // force that would pull: the contact ends in this step, its end state either outside the
+    // face on the release force or inside it with none. The release force first: open is free
+    // flight, which in a step much longer than the impact ends far outside the face and is
+    // contradicted there by the release force, a branch more (Kelvin, 1e9 kN/m on 1 t, 0.1 ms
+    // impacts under 10 ms steps: 12 Newton iterations in a release step; 9 this way). A release
+    // end state inside the face is contradicted in turn (the release force continues there
+    // along its tangent, compressive). Not for a power law with n > 1, whose held release force
+    // inside the face is a ramp in tension that an end state may agree with.
     next.normal = NormalBranch::Release;
   } else if (normalCycles && normal_.velocityDependent()) {
     // Closed inside the face against no force (open) or the release force (which is zero at the
@@ -198,7 +201,7 @@ template <int Ndf>
 Status NodeToSurfaceContact3d<Ndf>::update(const elements::Kinematics& kin) {
   farInBothStates_ = false;
   natural_ = Branches{};
-  springAgrees_ = slideAgrees_ = approaching_ = onRamp_ = false;
+  springAgrees_ = slideAgrees_ = approaching_ = separating_ = onRamp_ = false;
   // The last update's penetration on a closed power-law branch: this update's change from it
   // is the step Newton took (newtonStepScale).
   const double lastGap = trial_.gap;
@@ -342,6 +345,7 @@ Status NodeToSurfaceContact3d<Ndf>::update(const elements::Kinematics& kin) {
   AD Nn = normal_.force(g, gdot);
   if (!releasing && g.value() < 0.0 && Nn.value() > 0.0) natural_.normal = NormalBranch::Kelvin;
   approaching_ = gdot.value() <= 0.0;
+  separating_ = !approaching_;
   springAgrees_ = g.value() <= 0.0 && approaching_;
   if (holding_ && heldNormal == NormalBranch::Kelvin && normal_.law() == ImpactLaw::Jankowski &&
       normal_.velocityDependent()) {

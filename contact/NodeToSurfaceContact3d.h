@@ -149,18 +149,18 @@ class NodeToSurfaceContact3d : public elements::FixedSizeElement<5, Ndf, 0u>,
   void holdStatus() override;
   /// Compares the held branches with those the last update's state gives and holds those when
   /// they differ; a pair closed at the last commit whose held contact separates with a force
-  /// that would pull holds the release force before open (the contact ends in this step; in a
-  /// step longer than the impact its end state lies outside the face). A switch back to a branch
-  /// already held in the step would cycle; then two set-valued selections apply, the limits of the
-  /// law where it jumps (Filippov 1988): (1) a pair with a dashpot that would switch between Kelvin
-  /// inside the face and open or the release force outside it, while approaching, holds the spring
-  /// force alone; the dashpot force jumps from 0 to C |gdot| at the face, and an end state of the
-  /// step exists only within that jump, with N between 0 and the Kelvin force (the spring alone
-  /// agrees while the pair penetrates and approaches, g <= 0 and gdot <= 0, where it is at most the
-  /// Kelvin force); (2) a pair that has held both stick and slide may slide while its trial force
-  /// is at least the kinetic limit mu_k N (the cone drops from mu_s N to mu_k N at the onset of
-  /// sliding). A held slide whose trial force reverses sticks at once (update()). Conflict
-  /// after kMaxSwitches switches in a step.
+  /// that would pull holds the release force before open (Kelvin, and power laws with n <= 1; the
+  /// contact ends in this step, and in a step longer than the impact its end state lies outside the
+  /// face). A switch back to a branch already held in the step would cycle; then two set-valued
+  /// selections apply, the limits of the law where it jumps (Filippov 1988): (1) a pair with a
+  /// dashpot that would switch between Kelvin inside the face and open or the release force outside
+  /// it, while approaching, holds the spring force alone; the dashpot force jumps from 0 to C
+  /// |gdot| at the face, and an end state of the step exists only within that jump, with N between
+  /// 0 and the Kelvin force (the spring alone agrees while the pair penetrates and approaches, g <=
+  /// 0 and gdot <= 0, where it is at most the Kelvin force); (2) a pair that has held both stick
+  /// and slide may slide while its trial force is at least the kinetic limit mu_k N (the cone drops
+  /// from mu_s N to mu_k N at the onset of sliding). A held slide whose trial force reverses sticks
+  /// at once (update()). Conflict after kMaxSwitches switches in a step.
   elements::Element::HeldStatus checkHeldStatus() override;
   /// A power-law pair (spring k delta^n, n > 1) asks Newton for a longer step while Newton
   /// shrinks its deep penetration slowly (NormalLaw::slowShrink in this update and the last):
@@ -356,6 +356,7 @@ class NodeToSurfaceContact3d : public elements::FixedSizeElement<5, Ndf, 0u>,
   Branches natural_{};         ///< the branches the last update's state gives
   bool springAgrees_ = false;  ///< last update: g <= 0 and gdot <= 0 (the spring branch agrees)
   bool approaching_ = false;   ///< last update: gdot <= 0 (on the face)
+  bool separating_ = false;    ///< last update: gdot > 0 (on the face; off it neither is set)
   bool slideAgrees_ = false;   ///< last update: trial friction force >= mu_k N (sliding agrees)
   bool onRamp_ = false;        ///< last update: a held power-law release force on its ramp
   Eigen::Vector2d trialFriction_ = Eigen::Vector2d::Zero();   ///< last update's trial force

@@ -299,9 +299,10 @@ TEST(NodeToSurfaceContact3dTest, HeldKelvinBranchPullsWhereTheStateWouldOpen) {
 }
 
 // Closed at the last commit (g_n = -0.05, N_n = K 0.05), the held Kelvin branch separating so
-// fast that its force pulls: the contact ends in this step, and the release force is held before
-// open. Inside the face the held release force goes on along its tangent at the face,
-// N = N_n g / g_n; that state is open in turn (the Kelvin force would pull), and open agrees.
+// fast that its force pulls (K 0.01 - C v = -K 0.01): the contact ends in this step, and the
+// release force is held before open. Inside the face the held release force goes on along its
+// tangent at the face, N = N_n g / g_n; that state is open in turn (the Kelvin force would pull),
+// and open agrees.
 TEST(NodeToSurfaceContact3dTest, AClosedPairWhoseHeldContactWouldPullHoldsTheReleaseForceFirst) {
   auto e = make(dampedFriction());
   TrialState s = penetrated(*e);  // g_n = -0.05
@@ -322,6 +323,28 @@ TEST(NodeToSurfaceContact3dTest, AClosedPairWhoseHeldContactWouldPullHoldsTheRel
   EXPECT_EQ(e->checkHeldStatus(), Held::Switched);  // inside the face and pulling: open
   ASSERT_TRUE(ok(e->update(s.kinematics())));
   EXPECT_EQ(e->resistingForce().norm(), 0.0);
+  EXPECT_EQ(e->checkHeldStatus(), Held::Agrees);
+}
+
+// The case the release force is held first for: the end state lies outside the face, where the
+// held release force, N = -N_n g / (g - g_n) (trapezoid work of the step = the stored energy),
+// agrees at once.
+TEST(NodeToSurfaceContact3dTest, AHeldReleaseForceOutsideTheFaceAgreesAfterTheHeldContactPulled) {
+  auto e = make(dampedFriction());
+  TrialState s = penetrated(*e);  // g_n = -0.05, N_n = K 0.05
+  const double Nn = kK * 0.05;
+  setU(s, 0, {0, 0, -0.11});  // g = -0.01, separating slowly: Kelvin compresses
+  s.v(2) = 0.1;
+  ASSERT_TRUE(ok(e->update(s.kinematics())));
+  e->holdStatus();
+  const NormalLaw law({kK, 0.6, 3.0, 5.0});
+  s.v(2) = 2.0 * kK * 0.01 / law.damping();  // the Kelvin force pulls
+  ASSERT_TRUE(ok(e->update(s.kinematics())));
+  EXPECT_EQ(e->checkHeldStatus(), Held::Switched);  // release
+  setU(s, 0, {0, 0, -0.09});                        // g = +0.01
+  ASSERT_TRUE(ok(e->update(s.kinematics())));
+  EXPECT_NEAR(e->trialState().force(0), -Nn * 0.01 / (0.01 + 0.05), kTol * kK);
+  EXPECT_EQ(e->trialState().status, ContactStatus::Open);
   EXPECT_EQ(e->checkHeldStatus(), Held::Agrees);
 }
 

@@ -248,7 +248,9 @@ int AnalysisBuilder::analyze(int numSteps, double dt) {
     while (result == 0 && StopRequest::signal == 0) {
       const double remaining = tEnd - domain_.committedTime();
       if (remaining <= 1e-9 * dt) break;
+      const double committedBefore = domain_.committedTime();
       result = advance(contactStepping_->nextStep(remaining, dt), factorizationsBefore);
+      if (domain_.committedTime() == committedBefore) contactStepping_->stepNotTaken();
     }
   }
   if (progress) progress(result == 0 ? numSteps : -1, numSteps);  // -1: stopped early

@@ -131,13 +131,14 @@ double ContactStepping::nextStep(double remaining, double dt) {
       h = std::min(h, contactStep);
       shortestNear = std::min(shortestNear, shortest);
       // After a short touch step (a jump or a steep rise of the damping force), a step in
-      // contact is no longer than the time the pair has been closed (or the touch step): the
-      // steps are graded from the touch, each at most doubling the contact's age. Jankowski's
-      // delta^(1/4) rise lasts beyond the touch step, and a step of T_c / 20 right after it left
-      // its onset's error of first order (e = 0.1: 6 % low at T_c / 34; graded 1.2 % high). Grading
-      // on the contact's age, not on the last step, keeps a step cut short by the end of an
-      // output step from restarting the growth: three Jankowski impacts at 0.07 to 0.3 m/s under
-      // a 10 ms output step were 1.1 % high in e that way (hard-impact suite), 0.9 % graded.
+      // contact is no longer than the pair's age in contact (from the start of the step that
+      // closed it), or the touch step: graded from the touch, each at most doubling that age.
+      // Jankowski's delta^(1/4) rise lasts beyond the touch step, and a step of T_c / 20 right
+      // after it left its onset's error of first order (e = 0.1: 6 % low at T_c / 34; graded 1.2 %
+      // high). Grading on the contact's age, not on the last step, keeps a step cut short by the
+      // end of an output step from restarting the growth: three Jankowski impacts at 0.07 to 0.3
+      // m/s under a 10 ms output step were 1.1 % high in e that way (hard-impact suite), 0.9 %
+      // graded.
       if (pair.committedClosed() && std::isfinite(touchRate_[i])) {
         const double touch = pair.touchStep(touchRate_[i]);
         if (touch < contactStep) h = std::min(h, std::max(touch, closedFor_[i]));

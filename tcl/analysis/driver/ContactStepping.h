@@ -54,7 +54,8 @@ struct ContactSteppingParams {
 ///   than the contact step (maxStep, T_c / perContact): the step before ends half a touch step
 ///   before the predicted touch (the trapezoid rule credits the step holding the touch with half
 ///   its end force, an error of first order in that step), and while such a pair is closed a
-///   step is no longer than the time it has been closed (steps graded from the touch);
+///   step is no longer than the pair's age in contact, the committed time since the start of the
+///   step that closed it (steps graded from the touch; a step not committed adds nothing);
 /// - the shortest cut is 0.01 maxStep, or a twentieth of the contact step where that is shorter,
 ///   and a remainder of the output step shorter than it is taken with the step before;
 /// - the step after a release step that ended in tension (ContactPredictor::committedTension) is
@@ -77,6 +78,9 @@ class ContactStepping {
   /// Length of the next step, at most `remaining` (the rest of the output step) unless a cut at a
   /// predicted contact ends just past it; `dt` is the output step, to count contact steps.
   double nextStep(double remaining, double dt);
+  /// The step nextStep chose last was not committed (the analysis stopped in it): the next call
+  /// predicts nothing from it and adds nothing to a pair's time in contact.
+  void stepNotTaken() noexcept { lastStep_ = 0.0; }
   /// Steps shorter than the output step that this object chose (for statistics).
   long contactSteps() const noexcept { return contactSteps_; }
 
@@ -86,8 +90,9 @@ class ContactStepping {
   std::vector<double> lastGap_;
   std::vector<double> lastRate_;   ///< per pair: the gap's rate over the step before the last
   std::vector<double> touchRate_;  ///< per pair: the approach rate when its touch was predicted
-  std::vector<double> closedFor_;  ///< per pair: how long it has been closed (committed steps)
-  double previousStep_ = 0.0;      ///< the step before the last
+  /// per pair: the committed steps since the start of the one at whose end it was first closed
+  std::vector<double> closedFor_;
+  double previousStep_ = 0.0;                    ///< the step before the last
   std::vector<std::vector<double>> nodeMasses_;  ///< per pair (perContact > 0): its nodes' masses
   double lastStep_ = 0.0;
   long contactSteps_ = 0;

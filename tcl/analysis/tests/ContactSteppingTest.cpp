@@ -133,12 +133,16 @@ TEST(ContactSteppingTest, ATouchWithADashpotJumpIsTakenInAShortStep) {
   EXPECT_NEAR(tClose2, 0.5 * touch, 1e-12);
   const double hTouch = stepping.nextStep(0.01, 0.01);
   EXPECT_NEAR(hTouch, 1.2 * tClose2, 1e-15);
-  // Closed for hTouch (0.6 touch) after the touch step: the next step is the touch step.
+  // Closed at the end of the touch step: its age in contact counts from that step's start,
+  // hTouch (0.6 touch), and the next step is the touch step.
   model.commitGap(-1e-6);
   const double h1 = stepping.nextStep(0.01, 0.01);
   EXPECT_NEAR(h1, touch, 1e-15);
-  // Closed for hTouch + touch: the step is as long.
+  // Age hTouch + touch: the step is as long. It is not committed (the analysis stopped in it),
+  // and the step chosen next is the same: it added nothing to the age.
   model.commitGap(-2e-6);
+  EXPECT_NEAR(stepping.nextStep(0.01, 0.01), hTouch + touch, 1e-15);
+  stepping.stepNotTaken();
   const double h2 = stepping.nextStep(0.01, 0.01);
   EXPECT_NEAR(h2, hTouch + touch, 1e-15);
   // The output step ends 1e-6 s later: that step is cut to it ...
