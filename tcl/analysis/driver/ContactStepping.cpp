@@ -60,6 +60,7 @@ void ContactStepping::reset() {
   touchRate_.assign(pairs_.size(), std::numeric_limits<double>::quiet_NaN());
   closedFor_.assign(pairs_.size(), 0.0);
   lastStep_ = 0.0;
+  lastTaken_ = true;
   previousStep_ = 0.0;
 }
 
@@ -80,7 +81,7 @@ double ContactStepping::nextStep(double remaining, double dt) {
       pairNear = true;
       h = std::min(h, lastStep_);
     }
-    closedFor_[i] = pair.committedClosed() ? closedFor_[i] + lastStep_ : 0.0;
+    closedFor_[i] = pair.committedClosed() ? closedFor_[i] + (lastTaken_ ? lastStep_ : 0.0) : 0.0;
     const double last = lastGap_[i];  // NaN before the first step: no prediction
     const double rate = lastStep_ > 0.0 && std::isfinite(last) && std::isfinite(gap)
                             ? (gap - last) / lastStep_
@@ -150,6 +151,7 @@ double ContactStepping::nextStep(double remaining, double dt) {
   if (remaining - h < shortestNear) h = remaining;
   previousStep_ = lastStep_;
   lastStep_ = h;
+  lastTaken_ = true;
   if (h < 0.999 * dt) ++contactSteps_;
   return h;
 }

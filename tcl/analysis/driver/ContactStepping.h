@@ -78,9 +78,9 @@ class ContactStepping {
   /// Length of the next step, at most `remaining` (the rest of the output step) unless a cut at a
   /// predicted contact ends just past it; `dt` is the output step, to count contact steps.
   double nextStep(double remaining, double dt);
-  /// The step nextStep chose last was not committed (the analysis stopped in it): the next call
-  /// predicts nothing from it and adds nothing to a pair's time in contact.
-  void stepNotTaken() noexcept { lastStep_ = 0.0; }
+  /// The step nextStep chose last was not committed (the analysis stopped in it): it adds
+  /// nothing to a pair's age in contact.
+  void stepNotTaken() noexcept { lastTaken_ = false; }
   /// Steps shorter than the output step that this object chose (for statistics).
   long contactSteps() const noexcept { return contactSteps_; }
 
@@ -95,6 +95,7 @@ class ContactStepping {
   double previousStep_ = 0.0;                    ///< the step before the last
   std::vector<std::vector<double>> nodeMasses_;  ///< per pair (perContact > 0): its nodes' masses
   double lastStep_ = 0.0;
+  bool lastTaken_ = true;  ///< lastStep_ was committed (stepNotTaken)
   long contactSteps_ = 0;
 };
 
