@@ -13,6 +13,7 @@
 #include "materials/InputError.h"
 #include "tcl/analysis/driver/AnalysisBuilder.h"
 #include "tcl/analysis/driver/StopRequest.h"
+#include "tcl/analysis/driver/ThreadChoice.h"
 #include "tcl/commands/Registry.h"
 #include "tcl/commands/SignalExit.h"
 #include "tcl/commands/StrategyCommands.h"
@@ -192,7 +193,9 @@ void testIterCmd(Runtime& rt, ArgReader& a) {
 void threadsCmd(Runtime& rt, ArgReader& a) {
   if (a.hasMore()) {
     const auto n = analysis::ThreadChoice::parseCount(a.word("n"));
-    if (!n) a.failArgument("n", "must be 1 to 256 or auto");
+    if (!n)
+      a.failArgument(
+          "n", "must be 1 to " + std::to_string(analysis::ThreadChoice::kMaxThreads) + " or auto");
     a.finish();
     rt.analysis->setThreads(*n);  // 0: auto
   }

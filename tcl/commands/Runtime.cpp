@@ -6,6 +6,7 @@
 
 #include "materials/InputError.h"
 #include "tcl/analysis/driver/AnalysisBuilder.h"
+#include "tcl/analysis/driver/ThreadChoice.h"
 #include "tcl/commands/CommandTable.h"
 
 namespace dabs::tcl {
@@ -27,8 +28,9 @@ Runtime::Runtime(Tcl_Interp* interpreter)
       analysis->setThreads(*n);
     else
       analysis->log(std::string("DABS_THREADS=\"") + env +
-                    "\" ignored: expected a whole number from 1 to 256 or auto; the count is "
-                    "chosen by measurement");
+                    "\" ignored: expected a whole number from 1 to " +
+                    std::to_string(analysis::ThreadChoice::kMaxThreads) +
+                    " or auto; the count is chosen by measurement");
   }
 }
 

@@ -101,9 +101,9 @@ checkTrue "jankowski, k_h 1.263e10, dt 0.01: the pair gave an impulse ($impulse)
     [expr {$status eq "ok" && $impulse > 0.0}]
 # Hertz's law in a step 340 times longer than the impact (k_h 3.994e12 kN/m^1.5, 1 t on a fixed
 # face, 1 m/s: a contact of 2.9e-5 s; dt 0.01 s): the step's first iterate penetrates 1.3e-3 m
-# and its end state about 4e-8 m, and Newton shrinks a delta^1.5 spring's penetration only to a third an iteration (12
-# iterations in that step before the pair asked for the step of Newton on its force,
-# Element::newtonStepScale). Checked: the impact step takes at most 5 iterations, and its end
+# and its end state about 4e-8 m, and Newton shrinks a delta^1.5 spring's penetration only to a
+# third an iteration (12 iterations in that step before the pair asked for the step of Newton on
+# its force, Element::newtonStepScale). Checked: the impact step takes at most 5 iterations, and its end
 # state is the root of the step's own equation, m a(u) = k_h (-g(u))^1.5 (the contact force on
 # the contactor) with Newmark's a(u) = 4 (u - u_n - h v_n) / h^2 - a_n, found here by bisection
 # (an independent calculation): a longer Newton step changes the path, not the answer.
