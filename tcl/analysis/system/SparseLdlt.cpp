@@ -32,17 +32,13 @@ void SparseLdlt::analyze(const Eigen::SparseMatrix<double>& A) {
   cp_.assign(n + 1, 0);
   for (std::size_t j = 0; j < n; ++j) cp_[j + 1] = cp_[j] + count[j + 1];
   ci_.assign(static_cast<std::size_t>(cp_[n]), 0);
-  cx_.assign(static_cast<std::size_t>(cp_[n]), 0.0);
-  valueTo_.assign(static_cast<std::size_t>(A.nonZeros()), -1);
   std::vector<int> next(cp_.begin(), cp_.end() - 1);
   for (int j = 0; j < n_; ++j)
     for (Eigen::SparseMatrix<double>::InnerIterator it(A, j); it; ++it) {
       const int pi = perm_[static_cast<std::size_t>(it.row())],
                 pj = perm_[static_cast<std::size_t>(j)];
       if (pi > pj) continue;
-      const int place = next[static_cast<std::size_t>(pj)]++;
-      ci_[static_cast<std::size_t>(place)] = pi;
-      valueTo_[static_cast<std::size_t>(&it.value() - A.valuePtr())] = place;
+      ci_[static_cast<std::size_t>(next[static_cast<std::size_t>(pj)]++)] = pi;
     }
 
   // Elimination tree and column counts of L (Davis 2005, ldl_symbolic): row k of L has a
@@ -93,69 +89,128 @@ void SparseLdlt::analyze(const Eigen::SparseMatrix<double>& A) {
   lx_.assign(size, 0.0);  // the unused upper part of each block stays zero
   gather_ = Eigen::VectorXd::Zero(maxHeight);
   d_ = Eigen::VectorXd::Zero(n_);
-  y_.assign(n, 0.0);
   work_ = Eigen::VectorXd::Zero(n_);
 
-  // The pattern of every row of L, in an order in which each entry's updates come before it (the
-  // reversed tree paths of ldl_numeric). It depends on the pattern alone, so it is found once here
-  // rather than at every factorisation.
-  rowStart_.assign(n + 1, 0);
-  rowPattern_.assign(static_cast<std::size_t>(factorNonZeros_), 0);
-  std::vector<int> stack(n, 0);
+  // The rows of every column of L, ascending: row k of L has a nonzero in column i for every i
+  // on the tree paths from the entries of column k of the upper triangle up to k (ldl_symbolic
+  // again), and k grows. A supernode's block rows are those of its first column.
+  std::fill(lnz_.begin(), lnz_.end(), 0);
   flag_.assign(n, -1);
-  int filled = 0;
   for (int k = 0; k < n_; ++k) {
-    const auto uk = static_cast<std::size_t>(k);
-    int top = n_;
-    flag_[uk] = k;
-    for (int p = cp_[uk]; p < cp_[uk + 1]; ++p) {
-      int len = 0;
+    flag_[static_cast<std::size_t>(k)] = k;
+    for (int p = cp_[static_cast<std::size_t>(k)]; p < cp_[static_cast<std::size_t>(k) + 1]; ++p)
       for (int i = ci_[static_cast<std::size_t>(p)]; flag_[static_cast<std::size_t>(i)] != k;
            i = parent_[static_cast<std::size_t>(i)]) {
-        stack[static_cast<std::size_t>(len++)] = i;
-        flag_[static_cast<std::size_t>(i)] = k;
+        const auto ui = static_cast<std::size_t>(i);
+        li_[static_cast<std::size_t>(colStart_[ui] + lnz_[ui]++)] = k;
+        flag_[ui] = k;
       }
-      while (len > 0)
-        stack[static_cast<std::size_t>(--top)] = stack[static_cast<std::size_t>(--len)];
-    }
-    for (; top < n_; ++top)
-      rowPattern_[static_cast<std::size_t>(filled++)] = stack[static_cast<std::size_t>(top)];
-    rowStart_[uk + 1] = filled;
   }
+  colSuper_.assign(n, 0);
+  for (std::size_t s = 0; s < ns; ++s)
+    for (int j = superFirst_[s]; j < superFirst_[s + 1]; ++j)
+      colSuper_[static_cast<std::size_t>(j)] = static_cast<int>(s);
+
+  // Each value of A on or above the diagonal of P A P^T (the triangle the tree was formed from)
+  // goes straight to its mirror place in L's blocks (row r of column k of supernode s:
+  // superStart_[s] + k h + r); the entries below are their mirror images and are not read.
+  scatter_.clear();
+  for (int j = 0; j < n_; ++j)
+    for (Eigen::SparseMatrix<double>::InnerIterator it(A, j); it; ++it) {
+      const int col = perm_[static_cast<std::size_t>(it.row())],
+                row = perm_[static_cast<std::size_t>(j)];
+      if (row < col) continue;
+      const auto s = static_cast<std::size_t>(colSuper_[static_cast<std::size_t>(col)]);
+      const int f = superFirst_[s], w = superFirst_[s + 1] - f, h = superHeight_[s];
+      int local = row - f;
+      if (local >= w) {
+        const int* rows = li_.data() + superStart_[s];
+        local = static_cast<int>(std::lower_bound(rows + w, rows + h, row) - rows);
+      }
+      scatter_.emplace_back(static_cast<int>(&it.value() - A.valuePtr()),
+                            superStart_[s] + (col - f) * h + local);
+    }
+  relative_.assign(n, 0);
+  nextUpdate_.assign(ns, -1);
+  firstUpdate_.assign(ns, -1);
+  updateRow_.assign(ns, 0);
 }
 
 Status SparseLdlt::factorize(const Eigen::SparseMatrix<double>& A) {
+  // Supernodal left-looking L D L^T (the arrangement of Ng & Peyton 1993, "Block sparse Cholesky
+  // algorithms on advanced uniprocessor computers", SIAM J. Sci. Comput. 14(5), with D): each
+  // supernode's block gathers its columns of A, subtracts the updates of the supernodes below it
+  // in the tree whose rows reach its columns, one dense product each, and is factorised densely.
+  // A descendant waits in the list of the supernode that holds its next row (updateRow_), so
+  // every block is visited once per supernode it updates.
+  std::fill(lx_.begin(), lx_.end(), 0.0);
   const double* values = A.valuePtr();
-  const auto nnz = valueTo_.size();
-  for (std::size_t k = 0; k < nnz; ++k)
-    if (valueTo_[k] >= 0) cx_[static_cast<std::size_t>(valueTo_[k])] = values[k];
-
-  // Row k of L by a sparse triangular solve with the rows above it (Davis 2005, ldl_numeric),
-  // over the row pattern found by analyze().
-  std::fill(lnz_.begin(), lnz_.end(), 0);
-  for (int k = 0; k < n_; ++k) {
-    const auto uk = static_cast<std::size_t>(k);
-    for (int p = cp_[uk]; p < cp_[uk + 1]; ++p)
-      y_[static_cast<std::size_t>(ci_[static_cast<std::size_t>(p)])] +=
-          cx_[static_cast<std::size_t>(p)];
-    double dk = y_[uk];
-    y_[uk] = 0.0;
-    for (int r = rowStart_[uk]; r < rowStart_[uk + 1]; ++r) {
-      const auto ui = static_cast<std::size_t>(rowPattern_[static_cast<std::size_t>(r)]);
-      const double yi = y_[ui];
-      y_[ui] = 0.0;
-      const int end = colStart_[ui] + lnz_[ui];
-      for (int p = colStart_[ui]; p < end; ++p)
-        y_[static_cast<std::size_t>(li_[static_cast<std::size_t>(p)])] -=
-            lx_[static_cast<std::size_t>(p)] * yi;
-      const double lki = yi / d_(static_cast<Eigen::Index>(ui));
-      dk -= lki * yi;
-      li_[static_cast<std::size_t>(end)] = k;
-      lx_[static_cast<std::size_t>(end)] = lki;
-      ++lnz_[ui];
+  for (const auto& [from, to] : scatter_)
+    lx_[static_cast<std::size_t>(to)] = values[static_cast<std::size_t>(from)];
+  const std::size_t ns = superFirst_.size() > 0 ? superFirst_.size() - 1 : 0;
+  std::fill(firstUpdate_.begin(), firstUpdate_.end(), -1);
+  double* dd = d_.data();
+  double* product = gather_.data();  // one column of a descendant's update
+  for (std::size_t s = 0; s < ns; ++s) {
+    const int f = superFirst_[s], w = superFirst_[s + 1] - f, h = superHeight_[s];
+    double* block = lx_.data() + superStart_[s];
+    const int* rows = li_.data() + superStart_[s];
+    for (int r = 0; r < h; ++r) relative_[static_cast<std::size_t>(r < w ? f + r : rows[r])] = r;
+    // Updates from the descendants: with Lk their rows from the first in s's columns down,
+    // block(rows, cols) -= Lk D Lk(cols)^T over the rows of Lk in s's columns.
+    for (int k = firstUpdate_[s]; k >= 0;) {
+      const auto uk = static_cast<std::size_t>(k);
+      const int next = nextUpdate_[uk];
+      const int fk = superFirst_[uk], wk = superFirst_[uk + 1] - fk, hk = superHeight_[uk];
+      const double* blockK = lx_.data() + superStart_[uk];
+      const int* rowsK = li_.data() + superStart_[uk];
+      const int begin = updateRow_[uk];
+      int end = begin;
+      while (end < hk && rowsK[end] < f + w) ++end;
+      for (int c = begin; c < end; ++c) {
+        // Column rowsK[c] of s, rows from rowsK[c] down: product = Lk(c.., :) D Lk(c, :)^T, one
+        // contiguous multiply-add per column of the descendant (short columns: plain loops beat
+        // a library product's set-up here).
+        const int rowsFromC = hk - c;
+        std::fill(product, product + rowsFromC, 0.0);
+        for (int q = 0; q < wk; ++q) {
+          const double* colK = blockK + static_cast<std::ptrdiff_t>(q) * hk + c;
+          const double scaled = colK[0] * dd[fk + q];
+          for (int r = 0; r < rowsFromC; ++r) product[r] += scaled * colK[r];
+        }
+        double* column = block + static_cast<std::ptrdiff_t>(rowsK[c] - f) * h;
+        for (int r = 0; r < rowsFromC; ++r)
+          column[relative_[static_cast<std::size_t>(rowsK[c + r])]] -= product[r];
+      }
+      // The descendant waits next for the supernode of its first row below s's columns.
+      updateRow_[uk] = end;
+      if (end < hk) {
+        const auto t = static_cast<std::size_t>(colSuper_[static_cast<std::size_t>(rowsK[end])]);
+        nextUpdate_[uk] = firstUpdate_[t];
+        firstUpdate_[t] = k;
+      }
+      k = next;
     }
-    if (!(dk != 0.0) || !std::isfinite(dk)) return Status::Singular;
-    d_(k) = dk;
+    // Dense L D L^T of the block, column by column: the pivot, the column of L below it, and the
+    // update of the block's later columns (their rows from the diagonal down).
+    for (int k = 0; k < w; ++k) {
+      double* col = block + static_cast<std::ptrdiff_t>(k) * h;
+      const double dk = col[k];
+      if (!(dk != 0.0) || !std::isfinite(dk)) return Status::Singular;
+      dd[f + k] = dk;
+      for (int r = k + 1; r < h; ++r) col[r] /= dk;
+      for (int j = k + 1; j < w; ++j) {
+        const double ljk = col[j] * dk;
+        double* target = block + static_cast<std::ptrdiff_t>(j) * h;
+        for (int r = j; r < h; ++r) target[r] -= ljk * col[r];
+      }
+    }
+    if (h > w) {
+      updateRow_[s] = w;
+      const auto t = static_cast<std::size_t>(colSuper_[static_cast<std::size_t>(rows[w])]);
+      nextUpdate_[s] = firstUpdate_[t];
+      firstUpdate_[t] = static_cast<int>(s);
+    }
   }
   return Status::Ok;
 }

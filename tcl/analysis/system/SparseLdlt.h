@@ -3,18 +3,21 @@
 
 #include <Eigen/Core>
 #include <Eigen/SparseCore>
+#include <utility>
 #include <vector>
 
 #include "materials/Status.h"
 
 namespace dabs::analysis {
 
-/// Sparse L D L^T of a symmetric matrix, by the up-looking row algorithm of Davis (2005),
-/// "Algorithm 849: A concise sparse Cholesky factorization package", ACM TOMS 31(4).
+/// Sparse L D L^T of a symmetric matrix: AMD order, elimination tree and column counts as in
+/// Davis (2005), "Algorithm 849: A concise sparse Cholesky factorization package", ACM TOMS 31(4);
+/// the numeric factorisation by supernodes, left-looking (Ng & Peyton 1993, "Block sparse
+/// Cholesky algorithms on advanced uniprocessor computers", SIAM J. Sci. Comput. 14(5)).
 ///
 /// analyze() takes the matrix's full (symmetric) pattern once: the AMD fill-reducing order, the
-/// upper triangle of the permuted matrix, a map from each value of the given matrix to its place
-/// there, the elimination tree and the column counts of L. factorize() then gathers the values
+/// elimination tree, the column counts and the rows of L, the supernodes, and a map from each
+/// value of the given matrix to its place in L's storage. factorize() then scatters the values
 /// through that map and factorises with no permutation pass and no allocation, and solve()
 /// allocates nothing once x has its size. No pivoting: stable for definite matrices.
 ///
@@ -22,8 +25,9 @@ namespace dabs::analysis {
 /// (column j+1 is j's parent and has one entry fewer; Liu, Ng & Peyton 1993, "On finding
 /// supernodes for sparse matrix computations", SIAM J. Matrix Anal. Appl. 14(1)) share one dense
 /// column-major block whose rows are the supernode's own columns and then its common rows below.
-/// The factorisation fills the columns of the blocks as the row algorithm finds them; the solve
-/// gathers a supernode's rows once into a dense work vector and updates it column by column with
+/// The factorisation updates a block by each descendant block with one dense product per column
+/// and factorises it densely, instead of one short sparse loop per entry of L; the solve gathers a
+/// supernode's rows once into a dense work vector and updates it column by column with
 /// contiguous vector operations, so it reads each row index once per supernode instead of once per
 /// entry (a 6-dof node gives at least 6 columns).
 class SparseLdlt {
@@ -49,25 +53,26 @@ class SparseLdlt {
 
  private:
   int n_ = 0;
-  std::vector<int> perm_;     ///< new index of old row i
-  std::vector<int> valueTo_;  ///< place of A's value k in the permuted upper triangle, or -1
-  std::vector<int> cp_, ci_;  ///< permuted upper triangle, compressed columns
-  std::vector<double> cx_;
-  std::vector<int> parent_;  ///< elimination tree
-  /// L's strictly lower part: column j's row indices and values start at colStart_[j] in li_ and
-  /// lx_ (inside its supernode's block, below the block's diagonal), lnz_[j] of them after a
-  /// factorisation.
+  std::vector<int> perm_;  ///< new index of old row i
+  /// (index in A's values, place in lx_) of each value on or above the diagonal of P A P^T
+  std::vector<std::pair<int, int>> scatter_;
+  std::vector<int> cp_, ci_;  ///< pattern of the permuted upper triangle, compressed columns
+  std::vector<int> parent_;   ///< elimination tree
+  /// L's strictly lower part: column j's row indices (ascending) and values start at
+  /// colStart_[j] in li_ and lx_ (inside its supernode's block, below the block's diagonal).
   std::vector<int> colStart_, li_;
   std::vector<double> lx_;
   int factorNonZeros_ = 0;
   /// Supernode s holds columns superFirst_[s] .. superFirst_[s+1]-1; its block (height
   /// superHeight_[s], column-major) starts at superStart_[s] in lx_ and li_.
   std::vector<int> superFirst_, superHeight_, superStart_;
+  std::vector<int> colSuper_;  ///< supernode of each column
   Eigen::VectorXd d_;
-  std::vector<int> rowStart_, rowPattern_;  ///< pattern of each row of L, in update order
-  // Workspace of the symbolic and numeric factorisation and of the solve.
-  std::vector<int> lnz_, flag_;
-  std::vector<double> y_;
+  // Workspace of the factorisation: the block row of each row index in the supernode being
+  // factorised; per supernode, the first of the descendants waiting to update it and the next
+  // one in the list of the supernode it waits for, and the first of its rows not yet applied.
+  std::vector<int> relative_, firstUpdate_, nextUpdate_, updateRow_;
+  std::vector<int> lnz_, flag_;    ///< workspace of the symbolic analysis
   Eigen::VectorXd work_, gather_;  ///< gather_: the tallest supernode's rows
 };
 
