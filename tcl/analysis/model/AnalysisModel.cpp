@@ -199,6 +199,11 @@ void AnalysisModel::buildScatter() {
   P_ = Eigen::VectorXd::Zero(neq_);
   influence_.clear();
   elementStatus_.assign(elements_.size(), Status::Ok);
+  materialsAtBuild_.clear();
+  for (std::size_t k = 0; k < awake_; ++k)
+    materialsAtBuild_.push_back(elements_[k].element->materialUpdates());
+  updateCalls_ = 0;
+  unitsFormedAt_ = -1;
 }
 
 void AnalysisModel::buildSleepers() {
@@ -391,11 +396,18 @@ Status AnalysisModel::updateElements() {
   // results are bit-identical at any thread count.
   // Sleeping contact pairs (far apart) are skipped: checkSleepingPairs looks at them once a step.
   if (threads_ > 1 && count > 1) {
-#pragma omp parallel for schedule(dynamic, 4) num_threads(threads_)
-    for (std::ptrdiff_t k = 0; k < count; ++k) {
-      ElementScatter& l = elements_[static_cast<std::size_t>(k)];
-      if (!l.sleeping) elementStatus_[static_cast<std::size_t>(k)] = l.update(time_, dt);
-    }
+    // The costs are measured (material updates per update), so the lists are formed again after
+    // the first update and whenever the updates since the build have grown sixteenfold.
+    if (unitsFormedAt_ < 0 || (unitsFormedAt_ == 0 && updateCalls_ > 0) ||
+        (unitsFormedAt_ > 0 && updateCalls_ >= 16 * unitsFormedAt_))
+      formUnits();
+    const int units = units_.size();
+#pragma omp parallel for schedule(static, 1) num_threads(threads_)
+    for (int u = 0; u < units; ++u)
+      for (const int k : units_.unit(u)) {
+        ElementScatter& l = elements_[static_cast<std::size_t>(k)];
+        if (!l.sleeping) elementStatus_[static_cast<std::size_t>(k)] = l.update(time_, dt);
+      }
   } else {
     for (std::ptrdiff_t k = 0; k < count; ++k) {
       ElementScatter& l = elements_[static_cast<std::size_t>(k)];
@@ -403,10 +415,25 @@ Status AnalysisModel::updateElements() {
     }
   }
   elementUpdates_ += count;
+  ++updateCalls_;
   // The awake links' statuses (a sleeper's entry is never written).
   for (std::size_t k = 0; k < awake_; ++k)
     if (const Status s = elementStatus_[k]; !ok(s)) return s;
   return Status::Ok;
+}
+
+void AnalysisModel::formUnits() {
+  // An element's cost: the fibers (section materials) it evaluated per update since the build,
+  // plus the rest of an update in fiber evaluations. On the 10-span benchmark bridge a girder,
+  // bearing or gap update takes about 1/70 of a 1,700-fiber pier's (perf, 300 steps): about 25.
+  constexpr double kUpdateInFibers = 25.0;
+  const double calls = static_cast<double>(std::max(updateCalls_, 1L));
+  costs_.assign(awake_, kUpdateInFibers);
+  for (std::size_t k = 0; k < awake_ && k < materialsAtBuild_.size(); ++k)
+    costs_[k] +=
+        static_cast<double>(elements_[k].element->materialUpdates() - materialsAtBuild_[k]) / calls;
+  units_.form(costs_, threads_);
+  unitsFormedAt_ = updateCalls_;
 }
 
 bool AnalysisModel::holdStatuses() {

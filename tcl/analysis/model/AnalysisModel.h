@@ -20,6 +20,7 @@
 #include "tcl/analysis/model/Scatter.h"
 #include "tcl/analysis/model/SleepingPairs.h"
 #include "tcl/analysis/model/TangentAssembler.h"
+#include "tcl/analysis/model/WorkUnits.h"
 #include "tcl/domain/Domain.h"
 
 namespace dabs::analysis {
@@ -88,7 +89,11 @@ class AnalysisModel {
   /// Element updates since construction (a work count for benchmarks).
   long elementUpdates() const noexcept { return elementUpdates_; }
   /// Threads that update elements (1: the calling thread alone). Results do not depend on it.
-  void setThreads(int threads) noexcept { threads_ = threads < 1 ? 1 : threads; }
+  void setThreads(int threads) noexcept {
+    const int count = threads < 1 ? 1 : threads;
+    if (count != threads_) unitsFormedAt_ = -1;  // one list per thread
+    threads_ = count;
+  }
   /// Threads the process may use for the element updates (1 without OpenMP).
   static int availableThreads() noexcept;
 
@@ -176,6 +181,14 @@ class AnalysisModel {
   std::span<ElementScatter> awakeLinks() noexcept { return {elements_.data(), awake_}; }
   std::span<const ElementScatter> awakeLinks() const noexcept { return {elements_.data(), awake_}; }
   int threads_ = 1;
+  // The awake elements' lists, one per thread (WorkUnits), from the elements' material updates.
+  WorkUnits units_;
+  long unitsFormedAt_ = -1;             ///< updateCalls_ when units_ was formed; -1: to form
+  long updateCalls_ = 0;                ///< updateElements calls since the last build
+  std::vector<long> materialsAtBuild_;  ///< each element's material update count at the build
+  std::vector<double> costs_;           ///< work buffer of formUnits
+  /// Forms units_ from the elements' material updates per update since the build.
+  void formUnits();
   bool anyScalesSteps_ = false;               // some element may ask Newton for a longer step
   std::vector<Status> elementStatus_;         // per element, of the last updateElements
   std::map<int, Eigen::VectorXd> influence_;  // M r per excitation dof, formed once per build
