@@ -10,10 +10,10 @@ namespace dabs::analysis {
 /// longest-processing-time-first rule of list scheduling (Graham 1969, "Bounds on multiprocessing
 /// timing anomalies", SIAM J. Appl. Math. 17(2)): items by estimated cost, heaviest first, each to
 /// the list with the least cost so far; the longest list is at most 4/3 of the best split's. The
-/// lists stay the same from iteration to iteration, so each thread's elements (a fiber pier's
-/// states are tens of kilobytes) stay in its core's cache, which a first-come schedule loses by
-/// moving elements between cores. Elements share nothing, so the lists change the time only, never
-/// a result.
+/// lists stay the same from iteration to iteration, so each thread updates the same elements every
+/// time and their states (a fiber pier's are tens of kilobytes) stay in the cache of the core it
+/// runs on, while the system keeps it there; a first-come schedule moves elements between cores.
+/// Elements share nothing, so the lists change the time only, never a result.
 class WorkUnits {
  public:
   /// Shares items 0 .. costs.size()-1 among `threads` lists (equal costs: the lower index first),

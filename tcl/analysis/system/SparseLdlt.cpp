@@ -140,7 +140,8 @@ Status SparseLdlt::factorize(const Eigen::SparseMatrix<double>& A) {
   // Supernodal left-looking L D L^T (the arrangement of Ng & Peyton 1993, "Block sparse Cholesky
   // algorithms on advanced uniprocessor computers", SIAM J. Sci. Comput. 14(5), with D): each
   // supernode's block gathers its columns of A, subtracts the updates of the supernodes below it
-  // in the tree whose rows reach its columns, one dense product each, and is factorised densely.
+  // in the tree whose rows reach its columns (one dense column product for each of its columns a
+  // descendant reaches), and is factorised densely.
   // A descendant waits in the list of the supernode that holds its next row (updateRow_), so
   // every block is visited once per supernode it updates.
   std::fill(lx_.begin(), lx_.end(), 0.0);

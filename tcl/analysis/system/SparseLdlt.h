@@ -17,9 +17,10 @@ namespace dabs::analysis {
 ///
 /// analyze() takes the matrix's full (symmetric) pattern once: the AMD fill-reducing order, the
 /// elimination tree, the column counts and the rows of L, the supernodes, and a map from each
-/// value of the given matrix to its place in L's storage. factorize() then scatters the values
-/// through that map and factorises with no permutation pass and no allocation, and solve()
-/// allocates nothing once x has its size. No pivoting: stable for definite matrices.
+/// value of the given matrix on or above the diagonal of P A P^T to its mirror place in L's
+/// storage. factorize() then scatters the values through that map and factorises with no
+/// permutation pass and no allocation, and solve() allocates nothing once x has its size. No
+/// pivoting: stable for definite matrices.
 ///
 /// L is stored by supernodes: consecutive columns with the same pattern below the diagonal block
 /// (column j+1 is j's parent and has one entry fewer; Liu, Ng & Peyton 1993, "On finding
