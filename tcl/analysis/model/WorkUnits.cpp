@@ -21,13 +21,15 @@ void WorkUnits::form(std::span<const double> costs, int threads) {
     load[least] += costs[static_cast<std::size_t>(k)];
     owner[static_cast<std::size_t>(k)] = static_cast<int>(least);
   }
-  order_.clear();
-  first_.assign(1, 0);
-  for (std::size_t u = 0; u < lists; ++u) {
-    for (std::size_t k = 0; k < costs.size(); ++k)
-      if (owner[k] == static_cast<int>(u)) order_.push_back(static_cast<int>(k));
-    first_.push_back(static_cast<int>(order_.size()));
-  }
+  // The lists one after the other, each in ascending order: a counting sort by owner.
+  first_.assign(lists + 1, 0);
+  for (const int o : owner) ++first_[static_cast<std::size_t>(o) + 1];
+  for (std::size_t u = 0; u < lists; ++u) first_[u + 1] += first_[u];
+  order_.assign(costs.size(), 0);
+  std::vector<int> next(first_.begin(), first_.end() - 1);
+  for (std::size_t k = 0; k < costs.size(); ++k)
+    order_[static_cast<std::size_t>(next[static_cast<std::size_t>(owner[k])]++)] =
+        static_cast<int>(k);
 }
 
 }  // namespace dabs::analysis
