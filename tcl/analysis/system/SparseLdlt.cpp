@@ -4,6 +4,9 @@
 #include <Eigen/OrderingMethods>
 #include <algorithm>
 #include <cmath>
+#include <limits>
+#include <stdexcept>
+#include <string>
 
 namespace dabs::analysis {
 
@@ -76,6 +79,12 @@ void SparseLdlt::analyze(const Eigen::SparseMatrix<double>& A) {
   for (std::size_t s = 0; s < ns; ++s) {
     const int f = superFirst_[s], w = superFirst_[s + 1] - f;
     const int h = lnz_[static_cast<std::size_t>(f)] + 1;
+    // Offsets into the blocks are ints: a factor past 2^31 - 1 entries (16 GiB of values) is
+    // refused rather than addressed wrongly.
+    if (size + static_cast<std::size_t>(h) * static_cast<std::size_t>(w) >
+        static_cast<std::size_t>(std::numeric_limits<int>::max()))
+      throw std::length_error("sparse LDL^T of " + std::to_string(n_) +
+                              " equations: its factor needs more than 2^31 - 1 entries");
     superHeight_[s] = h;
     superStart_[s] = static_cast<int>(size);
     for (int k = 0; k < w; ++k) {
