@@ -432,7 +432,13 @@ void AnalysisModel::formUnits() {
   for (std::size_t k = 0; k < awake_ && k < materialsAtBuild_.size(); ++k)
     costs_[k] +=
         static_cast<double>(elements_[k].element->materialUpdates() - materialsAtBuild_[k]) / calls;
-  units_.form(costs_, threads_);
+  // One list per thread of the team OpenMP will give (OMP_THREAD_LIMIT may cap it below the
+  // count asked for; every list runs whatever the team, but only a list per thread balances).
+  int team = threads_;
+#ifdef _OPENMP
+  team = std::min(team, std::max(omp_get_thread_limit(), 1));
+#endif
+  units_.form(costs_, team);
   unitsFormedAt_ = updateCalls_;
 }
 
