@@ -7,28 +7,31 @@
 namespace dabs::analysis {
 
 void WorkUnits::form(std::span<const double> costs, int threads) {
+  // Buffers are members and the sort is in place, so forming again allocates nothing once the
+  // sizes are reached (the analysis allocates nothing per step).
   const auto lists = static_cast<std::size_t>(std::max(threads, 1));
-  std::vector<int> byCost(costs.size());
-  std::iota(byCost.begin(), byCost.end(), 0);
-  std::stable_sort(byCost.begin(), byCost.end(), [&](int a, int b) {
-    return costs[static_cast<std::size_t>(a)] > costs[static_cast<std::size_t>(b)];
+  byCost_.resize(costs.size());
+  std::iota(byCost_.begin(), byCost_.end(), 0);
+  std::sort(byCost_.begin(), byCost_.end(), [&](int a, int b) {
+    const double ca = costs[static_cast<std::size_t>(a)], cb = costs[static_cast<std::size_t>(b)];
+    return ca > cb || (ca == cb && a < b);  // equal costs in index order
   });
-  std::vector<double> load(lists, 0.0);
-  std::vector<int> owner(costs.size(), 0);
-  for (const int k : byCost) {
-    const auto least = static_cast<std::size_t>(std::min_element(load.begin(), load.end()) -
-                                                load.begin());  // the first of equal loads
-    load[least] += costs[static_cast<std::size_t>(k)];
-    owner[static_cast<std::size_t>(k)] = static_cast<int>(least);
+  load_.assign(lists, 0.0);
+  owner_.assign(costs.size(), 0);
+  for (const int k : byCost_) {
+    const auto least = static_cast<std::size_t>(std::min_element(load_.begin(), load_.end()) -
+                                                load_.begin());  // the first of equal loads
+    load_[least] += costs[static_cast<std::size_t>(k)];
+    owner_[static_cast<std::size_t>(k)] = static_cast<int>(least);
   }
   // The lists one after the other, each in ascending order: a counting sort by owner.
   first_.assign(lists + 1, 0);
-  for (const int o : owner) ++first_[static_cast<std::size_t>(o) + 1];
+  for (const int o : owner_) ++first_[static_cast<std::size_t>(o) + 1];
   for (std::size_t u = 0; u < lists; ++u) first_[u + 1] += first_[u];
-  order_.assign(costs.size(), 0);
-  std::vector<int> next(first_.begin(), first_.end() - 1);
+  order_.resize(costs.size());
+  next_.assign(first_.begin(), first_.end() - 1);
   for (std::size_t k = 0; k < costs.size(); ++k)
-    order_[static_cast<std::size_t>(next[static_cast<std::size_t>(owner[k])]++)] =
+    order_[static_cast<std::size_t>(next_[static_cast<std::size_t>(owner_[k])]++)] =
         static_cast<int>(k);
 }
 

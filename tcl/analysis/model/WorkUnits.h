@@ -31,6 +31,9 @@ class WorkUnits {
  private:
   std::vector<int> order_;  ///< the lists one after the other
   std::vector<int> first_;  ///< list u is order_[first_[u] .. first_[u+1])
+  // Work buffers of form: items by cost, each list's cost, each item's list, next free place.
+  std::vector<int> byCost_, owner_, next_;
+  std::vector<double> load_;
 };
 
 }  // namespace dabs::analysis
