@@ -103,10 +103,10 @@ checkTrue "jankowski, k_h 1.263e10, dt 0.01: the pair gave an impulse ($impulse)
 # face, 1 m/s: a contact of 2.9e-5 s; dt 0.01 s): the step's first iterate penetrates 1.3e-3 m
 # and its end state about 4e-8 m, and Newton shrinks a delta^1.5 spring's penetration only to a
 # third an iteration (12 iterations in that step before the pair asked for the step of Newton on
-# its force, Element::newtonStepScale). Checked: the impact step takes at most 5 iterations, and its end
-# state is the root of the step's own equation, m a(u) = k_h (-g(u))^1.5 (the contact force on
-# the contactor) with Newmark's a(u) = 4 (u - u_n - h v_n) / h^2 - a_n, found here by bisection
-# (an independent calculation): a longer Newton step changes the path, not the answer.
+# its force, Element::newtonStepScale). Checked: the impact step takes at most 5 iterations, and
+# its end state is the root of the step's own equation, m a(u) = k_h (-g(u))^1.5 (the contact
+# force on the contactor) with Newmark's a(u) = 4 (u - u_n - h v_n) / h^2 - a_n, found here by
+# bisection (an independent calculation): a longer Newton step changes the path, not the answer.
 proc hertzInOneStep {} {
   set k 3.994e12; set h 0.01; set z0 0.0537
   wipe

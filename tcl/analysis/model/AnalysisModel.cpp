@@ -398,9 +398,7 @@ Status AnalysisModel::updateElements() {
   if (threads_ > 1 && count > 1) {
     // The costs are measured (material updates per update), so the lists are formed again after
     // the first update and whenever the updates since the build have grown sixteenfold.
-    if (unitsFormedAt_ < 0 || (unitsFormedAt_ == 0 && updateCalls_ > 0) ||
-        (unitsFormedAt_ > 0 && updateCalls_ >= 16 * unitsFormedAt_))
-      formUnits();
+    if (unitsFormedAt_ < 0 || updateCalls_ >= std::max(16 * unitsFormedAt_, 1L)) formUnits();
     const int units = units_.size();
 #pragma omp parallel for schedule(static, 1) num_threads(threads_)
     for (int u = 0; u < units; ++u)
@@ -429,7 +427,7 @@ void AnalysisModel::formUnits() {
   constexpr double kUpdateInFibers = 25.0;
   const double calls = static_cast<double>(std::max(updateCalls_, 1L));
   costs_.assign(awake_, kUpdateInFibers);
-  for (std::size_t k = 0; k < awake_ && k < materialsAtBuild_.size(); ++k)
+  for (std::size_t k = 0; k < awake_; ++k)  // materialsAtBuild_: one count per awake element
     costs_[k] +=
         static_cast<double>(elements_[k].element->materialUpdates() - materialsAtBuild_[k]) / calls;
   // One list per thread of the team OpenMP will give (OMP_THREAD_LIMIT may cap it below the

@@ -32,32 +32,31 @@ void SparseLdlt::analyze(const Eigen::SparseMatrix<double>& A) {
                 pj = perm_[static_cast<std::size_t>(j)];
       if (pi <= pj) ++count[static_cast<std::size_t>(pj) + 1];
     }
-  cp_.assign(n + 1, 0);
-  for (std::size_t j = 0; j < n; ++j) cp_[j + 1] = cp_[j] + count[j + 1];
-  ci_.assign(static_cast<std::size_t>(cp_[n]), 0);
-  std::vector<int> next(cp_.begin(), cp_.end() - 1);
+  std::vector<int> cp(n + 1, 0);  // the permuted upper triangle's pattern, compressed columns
+  for (std::size_t j = 0; j < n; ++j) cp[j + 1] = cp[j] + count[j + 1];
+  std::vector<int> ci(static_cast<std::size_t>(cp[n]), 0);
+  std::vector<int> next(cp.begin(), cp.end() - 1);
   for (int j = 0; j < n_; ++j)
     for (Eigen::SparseMatrix<double>::InnerIterator it(A, j); it; ++it) {
       const int pi = perm_[static_cast<std::size_t>(it.row())],
                 pj = perm_[static_cast<std::size_t>(j)];
       if (pi > pj) continue;
-      ci_[static_cast<std::size_t>(next[static_cast<std::size_t>(pj)]++)] = pi;
+      ci[static_cast<std::size_t>(next[static_cast<std::size_t>(pj)]++)] = pi;
     }
 
   // Elimination tree and column counts of L (Davis 2005, ldl_symbolic): row k of L has a
   // nonzero in column i for every node i on the tree paths from the entries of column k of the
   // upper triangle up to k.
   parent_.assign(n, -1);
-  lnz_.assign(n, 0);
-  flag_.assign(n, -1);
+  std::vector<int> lnz(n, 0), flag(n, -1);  // column counts of L; marks of the tree walks
   for (int k = 0; k < n_; ++k) {
-    flag_[static_cast<std::size_t>(k)] = k;
-    for (int p = cp_[static_cast<std::size_t>(k)]; p < cp_[static_cast<std::size_t>(k) + 1]; ++p) {
-      for (int i = ci_[static_cast<std::size_t>(p)]; flag_[static_cast<std::size_t>(i)] != k;
+    flag[static_cast<std::size_t>(k)] = k;
+    for (int p = cp[static_cast<std::size_t>(k)]; p < cp[static_cast<std::size_t>(k) + 1]; ++p) {
+      for (int i = ci[static_cast<std::size_t>(p)]; flag[static_cast<std::size_t>(i)] != k;
            i = parent_[static_cast<std::size_t>(i)]) {
         if (parent_[static_cast<std::size_t>(i)] == -1) parent_[static_cast<std::size_t>(i)] = k;
-        ++lnz_[static_cast<std::size_t>(i)];
-        flag_[static_cast<std::size_t>(i)] = k;
+        ++lnz[static_cast<std::size_t>(i)];
+        flag[static_cast<std::size_t>(i)] = k;
       }
     }
   }
@@ -66,7 +65,7 @@ void SparseLdlt::analyze(const Eigen::SparseMatrix<double>& A) {
   superFirst_.assign(1, 0);
   for (int j = 1; j < n_; ++j) {
     const auto uj = static_cast<std::size_t>(j);
-    if (!(parent_[uj - 1] == j && lnz_[uj - 1] == lnz_[uj] + 1)) superFirst_.push_back(j);
+    if (!(parent_[uj - 1] == j && lnz[uj - 1] == lnz[uj] + 1)) superFirst_.push_back(j);
   }
   if (n_ > 0) superFirst_.push_back(n_);
   const std::size_t ns = superFirst_.size() - 1;
@@ -78,7 +77,7 @@ void SparseLdlt::analyze(const Eigen::SparseMatrix<double>& A) {
   factorNonZeros_ = 0;
   for (std::size_t s = 0; s < ns; ++s) {
     const int f = superFirst_[s], w = superFirst_[s + 1] - f;
-    const int h = lnz_[static_cast<std::size_t>(f)] + 1;
+    const int h = lnz[static_cast<std::size_t>(f)] + 1;
     // Offsets into the blocks are ints: a factor past 2^31 - 1 entries (16 GiB of values) is
     // refused rather than addressed wrongly.
     if (size + static_cast<std::size_t>(h) * static_cast<std::size_t>(w) >
@@ -89,7 +88,7 @@ void SparseLdlt::analyze(const Eigen::SparseMatrix<double>& A) {
     superStart_[s] = static_cast<int>(size);
     for (int k = 0; k < w; ++k) {
       colStart_[static_cast<std::size_t>(f + k)] = static_cast<int>(size) + k * h + k + 1;
-      factorNonZeros_ += lnz_[static_cast<std::size_t>(f + k)];
+      factorNonZeros_ += lnz[static_cast<std::size_t>(f + k)];
     }
     size += static_cast<std::size_t>(h) * static_cast<std::size_t>(w);
     maxHeight = std::max(maxHeight, h);
@@ -103,16 +102,16 @@ void SparseLdlt::analyze(const Eigen::SparseMatrix<double>& A) {
   // The rows of every column of L, ascending: row k of L has a nonzero in column i for every i
   // on the tree paths from the entries of column k of the upper triangle up to k (ldl_symbolic
   // again), and k grows. A supernode's block rows are those of its first column.
-  std::fill(lnz_.begin(), lnz_.end(), 0);
-  flag_.assign(n, -1);
+  std::fill(lnz.begin(), lnz.end(), 0);
+  flag.assign(n, -1);
   for (int k = 0; k < n_; ++k) {
-    flag_[static_cast<std::size_t>(k)] = k;
-    for (int p = cp_[static_cast<std::size_t>(k)]; p < cp_[static_cast<std::size_t>(k) + 1]; ++p)
-      for (int i = ci_[static_cast<std::size_t>(p)]; flag_[static_cast<std::size_t>(i)] != k;
+    flag[static_cast<std::size_t>(k)] = k;
+    for (int p = cp[static_cast<std::size_t>(k)]; p < cp[static_cast<std::size_t>(k) + 1]; ++p)
+      for (int i = ci[static_cast<std::size_t>(p)]; flag[static_cast<std::size_t>(i)] != k;
            i = parent_[static_cast<std::size_t>(i)]) {
         const auto ui = static_cast<std::size_t>(i);
-        li_[static_cast<std::size_t>(colStart_[ui] + lnz_[ui]++)] = k;
-        flag_[ui] = k;
+        li_[static_cast<std::size_t>(colStart_[ui] + lnz[ui]++)] = k;
+        flag[ui] = k;
       }
   }
   colSuper_.assign(n, 0);

@@ -57,8 +57,7 @@ class SparseLdlt {
   std::vector<int> perm_;  ///< new index of old row i
   /// (index in A's values, place in lx_) of each value on or above the diagonal of P A P^T
   std::vector<std::pair<int, int>> scatter_;
-  std::vector<int> cp_, ci_;  ///< pattern of the permuted upper triangle, compressed columns
-  std::vector<int> parent_;   ///< elimination tree
+  std::vector<int> parent_;  ///< elimination tree
   /// L's strictly lower part: column j's row indices (ascending) and values start at
   /// colStart_[j] in li_ and lx_ (inside its supernode's block, below the block's diagonal).
   std::vector<int> colStart_, li_;
@@ -73,7 +72,6 @@ class SparseLdlt {
   // factorised; per supernode, the first of the descendants waiting to update it and the next
   // one in the list of the supernode it waits for, and the first of its rows not yet applied.
   std::vector<int> relative_, firstUpdate_, nextUpdate_, updateRow_;
-  std::vector<int> lnz_, flag_;    ///< workspace of the symbolic analysis
   Eigen::VectorXd work_, gather_;  ///< gather_: the tallest supernode's rows
 };
 
