@@ -11,6 +11,7 @@
 #endif
 
 #include <algorithm>
+#include <atomic>
 #include <limits>
 #include <map>
 #include <span>
@@ -395,22 +396,32 @@ Status AnalysisModel::updateElements() {
   // threads: elements share nothing, read only their nodes, and the assembly stays serial, so
   // results are bit-identical at any thread count.
   // Sleeping contact pairs (far apart) are skipped: checkSleepingPairs looks at them once a step.
+  auto updateOne = [&](std::ptrdiff_t k) {
+    ElementScatter& l = elements_[static_cast<std::size_t>(k)];
+    if (!l.sleeping) elementStatus_[static_cast<std::size_t>(k)] = l.update(time_, dt);
+  };
   if (threads_ > 1 && count > 1) {
     // The costs are measured (material updates per update), so the lists are formed again after
-    // the first update and whenever the updates since the build have grown sixteenfold.
+    // the first update and whenever the updates since the build have grown sixteenfold. Each
+    // thread runs its own list, then takes light items from the shared pool until it is empty.
     if (unitsFormedAt_ < 0 || updateCalls_ >= std::max(16 * unitsFormedAt_, 1L)) formUnits();
     const int units = units_.size();
-#pragma omp parallel for schedule(static, 1) num_threads(threads_)
-    for (int u = 0; u < units; ++u)
-      for (const int k : units_.unit(u)) {
-        ElementScatter& l = elements_[static_cast<std::size_t>(k)];
-        if (!l.sleeping) elementStatus_[static_cast<std::size_t>(k)] = l.update(time_, dt);
-      }
-  } else {
-    for (std::ptrdiff_t k = 0; k < count; ++k) {
-      ElementScatter& l = elements_[static_cast<std::size_t>(k)];
-      if (!l.sleeping) elementStatus_[static_cast<std::size_t>(k)] = l.update(time_, dt);
+    const std::span<const int> pool = units_.shared();
+    const auto poolSize = static_cast<int>(pool.size());
+    constexpr int kChunk = WorkUnits::kSharedChunk;
+    std::atomic<int> nextShared{0};
+#pragma omp parallel num_threads(threads_)
+    {
+#pragma omp for schedule(static, 1) nowait
+      for (int u = 0; u < units; ++u)
+        for (const int k : units_.unit(u)) updateOne(k);
+      for (int b = nextShared.fetch_add(kChunk, std::memory_order_relaxed); b < poolSize;
+           b = nextShared.fetch_add(kChunk, std::memory_order_relaxed))
+        for (int i = b; i < std::min(b + kChunk, poolSize); ++i)
+          updateOne(pool[static_cast<std::size_t>(i)]);
     }
+  } else {
+    for (std::ptrdiff_t k = 0; k < count; ++k) updateOne(k);
   }
   elementUpdates_ += count;
   ++updateCalls_;

@@ -18,7 +18,16 @@ void WorkUnits::form(std::span<const double> costs, int threads) {
   });
   load_.assign(lists, 0.0);
   owner_.assign(costs.size(), 0);
+  // With one list there is no one to share with; otherwise the pool takes the light items.
+  const double light = lists > 1 && !byCost_.empty()
+                           ? costs[static_cast<std::size_t>(byCost_.front())] * kLightFraction
+                           : 0.0;
+  shared_.clear();
   for (const int k : byCost_) {
+    if (costs[static_cast<std::size_t>(k)] < light) {
+      owner_[static_cast<std::size_t>(k)] = -1;
+      continue;
+    }
     const auto least = static_cast<std::size_t>(std::min_element(load_.begin(), load_.end()) -
                                                 load_.begin());  // the first of equal loads
     load_[least] += costs[static_cast<std::size_t>(k)];
@@ -26,13 +35,17 @@ void WorkUnits::form(std::span<const double> costs, int threads) {
   }
   // The lists one after the other, each in ascending order: a counting sort by owner.
   first_.assign(lists + 1, 0);
-  for (const int o : owner_) ++first_[static_cast<std::size_t>(o) + 1];
+  for (const int o : owner_)
+    if (o >= 0) ++first_[static_cast<std::size_t>(o) + 1];
   for (std::size_t u = 0; u < lists; ++u) first_[u + 1] += first_[u];
-  order_.resize(costs.size());
+  order_.resize(static_cast<std::size_t>(first_.back()));
   next_.assign(first_.begin(), first_.end() - 1);
-  for (std::size_t k = 0; k < costs.size(); ++k)
-    order_[static_cast<std::size_t>(next_[static_cast<std::size_t>(owner_[k])]++)] =
-        static_cast<int>(k);
+  for (std::size_t k = 0; k < costs.size(); ++k) {
+    if (const int o = owner_[k]; o >= 0)
+      order_[static_cast<std::size_t>(next_[static_cast<std::size_t>(o)]++)] = static_cast<int>(k);
+    else
+      shared_.push_back(static_cast<int>(k));
+  }
 }
 
 }  // namespace dabs::analysis
