@@ -1004,6 +1004,13 @@ proc monitorSetup {} {
   variable ::run::endElements
   array unset endElements
   foreach bt $allBearings { set endElements($bt) [endBearings $bt] }
+  # the piers whose drift monitorStep follows (not abutments): number, cap and footing nodes,
+  # height
+  variable ::run::driftPiers {}
+  for {set p 1} {$p <= $::nSpans + 1} {incr p} {
+    set b [pierBase $p]
+    if {![isAbutment $p]} { lappend driftPiers $p [expr {$b + 5}] [expr {$b + 2}] [pierHeight $p] }
+  }
   set last [dict create]
   set impacts [lrepeat $nJ 0]
   set closed [lrepeat $nJ 0]
@@ -1050,22 +1057,29 @@ proc monitorStep {} {
     dict set last gap${j}z $z
   }
   set endStrains {}
+  # (This procedure runs after every step, contact sub-steps included, so it keeps to what Tcl
+  # compiles to fast code: locals rather than globals, comparisons rather than max(), a math
+  # function call being several times a comparison's cost.)
+  set tr $::bearingTr
+  variable ::run::endElements
+  variable ::run::seatSign
   foreach bt $allBearings {
     # a girder end: the largest shear strain of its bearings (the outer ones under yaw) and the
     # mean of their displacements (the end's displacement at the girder axis)
     set e 0.0; set d1 0.0; set d2 0.0
-    set ends $::run::endElements($bt)
+    set ends $endElements($bt)
     foreach et $ends {
       # the element's shearStrain, |u| / Tr, from the same response (one call a bearing)
       lassign [eleResponse $et deformation] d0 u1 u2
-      set e [expr {max($e, sqrt($u1 * $u1 + $u2 * $u2) / $::bearingTr)}]
+      set strain [expr {sqrt($u1 * $u1 + $u2 * $u2) / $tr}]
+      if {$strain > $e} { set e $strain }
       set d1 [expr {$d1 + $u1}]; set d2 [expr {$d2 + $u2}]
     }
     set d1 [expr {$d1 / [llength $ends]}]; set d2 [expr {$d2 / [llength $ends]}]
     if {[info exists jointBearing($bt)]} { lappend row $e } else { lappend endStrains $e }
     if {$e > [dict get $peak strain$bt]} { dict set peak strain$bt $e }
     if {abs($d1) > abs([dict get $peak bx$bt])} { dict set peak bx$bt $d1 }
-    set towardsEdge [expr {$::run::seatSign($bt) * $d1}]
+    set towardsEdge [expr {$seatSign($bt) * $d1}]
     if {$towardsEdge > [dict get $peak seat$bt]} { dict set peak seat$bt $towardsEdge }
     if {abs($d2) > abs([dict get $peak by$bt])} { dict set peak by$bt $d2 }
     dict set last bx$bt $d1
@@ -1077,12 +1091,14 @@ proc monitorStep {} {
   foreach list $::poundingEles {
     incr j
     set f 0.0
+    set deepest [dict get $peak pen$j]
     foreach e $list {
       set f [expr {$f + [lindex [eleResponse $e contactForce] 0]}]
       # penetration of the pair: a negative gap (the pairs of a joint all look along X)
       set pen [expr {-[lindex [eleResponse $e gap] 0]}]
-      if {$pen > [dict get $peak pen$j]} { dict set peak pen$j $pen }
+      if {$pen > $deepest} { set deepest $pen }
     }
+    dict set peak pen$j $deepest
     lappend row $f
     if {$f > [dict get $peak force$j]} { dict set peak force$j $f }
     set isClosed [expr {$f > 0.0}]
@@ -1109,12 +1125,9 @@ proc monitorStep {} {
   # Pier drift ratio: the pier's own deformation, top minus base displacement less the base's
   # rotation times the height (the footing's rocking on its piles is not pier drift), over the
   # height H, as a magnitude over X and Y (JRA's residual-displacement limit is h/100)
-  for {set p 1} {$p <= $::nSpans + 1} {incr p} {
-    if {[isAbutment $p]} { continue }
-    set b [pierBase $p]
-    set H [pierHeight $p]
-    set pdx [expr {[nodeDisp [expr {$b + 5}] 1] - [nodeDisp [expr {$b + 2}] 1] - [nodeDisp [expr {$b + 2}] 5] * $H}]
-    set pdy [expr {[nodeDisp [expr {$b + 5}] 2] - [nodeDisp [expr {$b + 2}] 2] + [nodeDisp [expr {$b + 2}] 4] * $H}]
+  foreach {p top foot H} $::run::driftPiers {
+    set pdx [expr {[nodeDisp $top 1] - [nodeDisp $foot 1] - [nodeDisp $foot 5] * $H}]
+    set pdy [expr {[nodeDisp $top 2] - [nodeDisp $foot 2] + [nodeDisp $foot 4] * $H}]
     set drift [expr {hypot($pdx, $pdy) / $H}]
     if {$drift > [dict get $peak drift$p]} { dict set peak drift$p $drift }
     dict set last drift$p $drift
@@ -1130,11 +1143,13 @@ proc monitorStep {} {
     if {$gx < [dict get $peak endclose$e]} { dict set peak endclose$e $gx }
     dict set last endgap$e $gx
     set f 0.0
+    set deepest [dict get $peak endpen$e]
     foreach c $pairs {
       set f [expr {$f + [lindex [eleResponse $c contactForce] 0]}]
       set pen [expr {-[lindex [eleResponse $c gap] 0]}]
-      if {$pen > [dict get $peak endpen$e]} { dict set peak endpen$e $pen }
+      if {$pen > $deepest} { set deepest $pen }
     }
+    dict set peak endpen$e $deepest
     if {$f > [dict get $peak endforce$e]} { dict set peak endforce$e $f }
     if {$f > 0.0 && ![lindex $endClosed $e]} { dict incr peak endimpacts$e }
     lset endClosed $e [expr {$f > 0.0}]
