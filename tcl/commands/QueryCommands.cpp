@@ -18,7 +18,8 @@ void nodeVectorQuery(Runtime& rt, ArgReader& a, Getter get) {
   const domain::Node& n = rt.domain.node(a.integer("node"));
   const auto dof = a.optionalInteger("dof");
   a.finish();
-  const Eigen::VectorXd v = get(n);
+  // A reference when the getter returns one (disp, vel, accel, reaction: no copy a call).
+  decltype(auto) v = get(n);
   // OpenSees returns the whole vector for a dof below 1 (SRC/tcl/commands.cpp nodeDisp: dof -1).
   if (!dof || *dof < 1) {
     setResult(rt, v);
@@ -30,16 +31,17 @@ void nodeVectorQuery(Runtime& rt, ArgReader& a, Getter get) {
 }
 
 void nodeDispCmd(Runtime& rt, ArgReader& a) {
-  nodeVectorQuery(rt, a, [](const domain::Node& n) { return n.disp; });
+  nodeVectorQuery(rt, a, [](const domain::Node& n) -> const Eigen::VectorXd& { return n.disp; });
 }
 void nodeVelCmd(Runtime& rt, ArgReader& a) {
-  nodeVectorQuery(rt, a, [](const domain::Node& n) { return n.vel; });
+  nodeVectorQuery(rt, a, [](const domain::Node& n) -> const Eigen::VectorXd& { return n.vel; });
 }
 void nodeAccelCmd(Runtime& rt, ArgReader& a) {
-  nodeVectorQuery(rt, a, [](const domain::Node& n) { return n.accel; });
+  nodeVectorQuery(rt, a, [](const domain::Node& n) -> const Eigen::VectorXd& { return n.accel; });
 }
 void nodeReactionCmd(Runtime& rt, ArgReader& a) {
-  nodeVectorQuery(rt, a, [](const domain::Node& n) { return n.reaction; });
+  nodeVectorQuery(rt, a,
+                  [](const domain::Node& n) -> const Eigen::VectorXd& { return n.reaction; });
 }
 void nodeCoordCmd(Runtime& rt, ArgReader& a) {
   const int ndm = rt.builder.ndm;
