@@ -258,18 +258,23 @@ void AnalysisModel::applySleepChanges() {
   sleepers_.afterRebuild(carried);
 }
 
-double AnalysisModel::termValue(const std::vector<Term>& terms, const Eigen::VectorXd& x,
-                                int which) const {
-  double value = 0.0;
+std::array<double, 3> AnalysisModel::termValues(const std::vector<Term>& terms,
+                                                const Eigen::VectorXd& U, const Eigen::VectorXd& V,
+                                                const Eigen::VectorXd& A) const {
+  double u = 0.0, v = 0.0, a = 0.0;
   for (const Term& t : terms) {
     if (t.index >= 0) {
-      value += t.coef * x(t.index);
+      u += t.coef * U(t.index);
+      v += t.coef * V(t.index);
+      a += t.coef * A(t.index);
     } else {
       const Slot& s = slots_[static_cast<std::size_t>(-t.index - 1)];
-      value += t.coef * (which == 0 ? s.disp : which == 1 ? s.vel : s.accel);
+      u += t.coef * s.disp;
+      v += t.coef * s.vel;
+      a += t.coef * s.accel;
     }
   }
-  return value;
+  return {u, v, a};
 }
 
 void AnalysisModel::applyLoad(double t) {
@@ -356,9 +361,10 @@ void AnalysisModel::setResponse(const Eigen::VectorXd& U, const Eigen::VectorXd&
         continue;
       }
       const auto& terms = dofTerms_[g];
-      n.disp(d) = termValue(terms, U, 0);
-      n.vel(d) = termValue(terms, V, 1);
-      n.accel(d) = termValue(terms, A, 2);
+      const auto [u, v, a] = termValues(terms, U, V, A);
+      n.disp(d) = u;
+      n.vel(d) = v;
+      n.accel(d) = a;
     }
   }
 }

@@ -148,7 +148,10 @@ class AnalysisModel {
   void buildSleepers();
   /// The residual's constant matrices for the new scatter.
   void buildConstantDynamics() { residual_.build(elements_, nodes_, A_); }
-  double termValue(const std::vector<Term>& terms, const Eigen::VectorXd& x, int which) const;
+  /// A dof's displacement, velocity and acceleration from its terms (one pass over them; each
+  /// sum in the terms' order).
+  std::array<double, 3> termValues(const std::vector<Term>& terms, const Eigen::VectorXd& U,
+                                   const Eigen::VectorXd& V, const Eigen::VectorXd& A) const;
 
   domain::Domain& domain_;
   ConstraintKind constraints_;
