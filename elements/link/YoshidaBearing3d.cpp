@@ -6,6 +6,8 @@
 #include <cmath>
 #include <sstream>
 
+#include "elements/Congruence.h"
+
 namespace dabs::elements {
 
 namespace {
@@ -224,10 +226,7 @@ void YoshidaBearing3d::seatContact(State& t, Basic& q, BasicMatrix& kb) const {
 
 void YoshidaBearing3d::assemble(const Basic& q, const BasicMatrix& kb) {
   f_.noalias() = b_.transpose() * q;
-  // Coefficient-based products: at these fixed sizes (12 x 6 x 12) Eigen would otherwise take its
-  // general blocked product, whose packing costs more than the arithmetic.
-  const Eigen::Matrix<double, kNumDof, 6> bk = b_.transpose().lazyProduct(kb);
-  k_.noalias() = bk.lazyProduct(b_);
+  k_ = congruence(b_, kb);
 }
 
 void YoshidaBearing3d::addPDelta(const Basic& d, const Basic& q, const BasicMatrix& kb) {

@@ -3,6 +3,7 @@
 
 #include <Eigen/Core>
 
+#include "elements/Congruence.h"
 #include "elements/transform/CrdTransf.h"
 #include "elements/transform/FrameTraits.h"
 
@@ -74,14 +75,9 @@ class CrdTransfNd : public CrdTransf {
  protected:
   /// Local displacements T u (undeformed axes).
   Global toLocal(const Global& u) const;
-  /// B^T kb B by coefficient-wise (unrolled) products: Eigen's default for these sizes is its
-  /// general matrix-product kernel, several times slower for one 12 x 6 x 12 product.
+  /// B^T kb B (elements/Congruence.h).
   static GlobalMatrix congruence(const Compat& b, const BasicMatrix& kb) {
-    const Eigen::Matrix<double, Compat::ColsAtCompileTime, Compat::RowsAtCompileTime> bkb =
-        b.transpose().lazyProduct(kb);
-    GlobalMatrix k;
-    k.noalias() = bkb.lazyProduct(b);
-    return k;
+    return elements::congruence(b, kb);
   }
 
   Eigen::Vector3d vecxz_ = Eigen::Vector3d::UnitZ();

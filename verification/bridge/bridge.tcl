@@ -1029,7 +1029,7 @@ proc monitorSetup {} {
 
 # After a converged step: updates the peaks, the residuals (last), the impacts; returns the CSV row.
 proc monitorStep {} {
-  foreach v {joints jointBearing allBearings midBearings mids midGirder peak last impacts closed} { variable ::run::$v }
+  foreach v {joints jointBearing allBearings midBearings mids midGirder peak last impacts closed endElements seatSign} { variable ::run::$v }
   set row [list [getTime %.17g]]
   set j 0
   foreach pair $joints {
@@ -1061,8 +1061,6 @@ proc monitorStep {} {
   # compiles to fast code: locals rather than globals, comparisons rather than max(), a math
   # function call being several times a comparison's cost.)
   set tr $::bearingTr
-  variable ::run::endElements
-  variable ::run::seatSign
   foreach bt $allBearings {
     # a girder end: the largest shear strain of its bearings (the outer ones under yaw) and the
     # mean of their displacements (the end's displacement at the girder axis)
