@@ -46,6 +46,9 @@ class ZeroLength final : public DynamicSizeElement {
   std::vector<std::unique_ptr<materials::UniaxialMaterial>> materials_;
   Eigen::MatrixXd t_;                      ///< one row per material: d(deformation)/d(u)
   std::vector<std::vector<int>> nonzero_;  ///< per material: the dofs its row of t_ touches
+  /// The entries of f_ and (column-major) of k_ and c_ that some material's row reaches: the
+  /// only ones an update rewrites; the rest stay zero from initialize().
+  std::vector<int> touchedForce_, touchedMatrix_;
 };
 
 }  // namespace dabs::elements
