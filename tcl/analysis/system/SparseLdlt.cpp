@@ -122,7 +122,10 @@ void SparseLdlt::analyze(const Eigen::SparseMatrix<double>& A) {
   // Each value of A on or above the diagonal of P A P^T (the triangle the tree was formed from)
   // goes straight to its mirror place in L's blocks (row r of column k of supernode s:
   // superStart_[s] + k h + r); the entries below are their mirror images and are not read.
+  // The list is grouped by supernode (scatterStart_), so that the factorisation clears and fills
+  // each block just before it works on it, while the block is in the cache.
   scatter_.clear();
+  std::vector<int> owner;  // supernode of each scatter_ entry
   for (int j = 0; j < n_; ++j)
     for (Eigen::SparseMatrix<double>::InnerIterator it(A, j); it; ++it) {
       const int col = perm_[static_cast<std::size_t>(it.row())],
@@ -137,7 +140,18 @@ void SparseLdlt::analyze(const Eigen::SparseMatrix<double>& A) {
       }
       scatter_.emplace_back(static_cast<int>(&it.value() - A.valuePtr()),
                             superStart_[s] + (col - f) * h + local);
+      owner.push_back(static_cast<int>(s));
     }
+  scatterStart_.assign(ns + 1, 0);
+  for (const int s : owner) ++scatterStart_[static_cast<std::size_t>(s) + 1];
+  for (std::size_t s = 0; s < ns; ++s) scatterStart_[s + 1] += scatterStart_[s];
+  {
+    std::vector<std::pair<int, int>> grouped(scatter_.size());
+    std::vector<int> place(scatterStart_.begin(), scatterStart_.end() - 1);
+    for (std::size_t e = 0; e < scatter_.size(); ++e)
+      grouped[static_cast<std::size_t>(place[static_cast<std::size_t>(owner[e])]++)] = scatter_[e];
+    scatter_ = std::move(grouped);
+  }
   relative_.assign(n, 0);
   nextUpdate_.assign(ns, -1);
   firstUpdate_.assign(ns, -1);
@@ -152,10 +166,7 @@ Status SparseLdlt::factorize(const Eigen::SparseMatrix<double>& A) {
   // descendant reaches), and is factorised densely.
   // A descendant waits in the list of the supernode that holds its next row (updateRow_), so
   // every block is visited once per supernode it updates.
-  std::fill(lx_.begin(), lx_.end(), 0.0);
   const double* values = A.valuePtr();
-  for (const auto& [from, to] : scatter_)
-    lx_[static_cast<std::size_t>(to)] = values[static_cast<std::size_t>(from)];
   const std::size_t ns = superFirst_.size() > 0 ? superFirst_.size() - 1 : 0;
   std::fill(firstUpdate_.begin(), firstUpdate_.end(), -1);
   double* dd = d_.data();
@@ -164,6 +175,12 @@ Status SparseLdlt::factorize(const Eigen::SparseMatrix<double>& A) {
     const int f = superFirst_[s], w = superFirst_[s + 1] - f, h = superHeight_[s];
     double* block = lx_.data() + superStart_[s];
     const int* rows = li_.data() + superStart_[s];
+    // The block's values of A (its fill and the unused upper part of its diagonal block zero).
+    std::fill(block, block + static_cast<std::ptrdiff_t>(w) * h, 0.0);
+    for (int e = scatterStart_[s]; e < scatterStart_[s + 1]; ++e) {
+      const auto& [from, to] = scatter_[static_cast<std::size_t>(e)];
+      lx_[static_cast<std::size_t>(to)] = values[static_cast<std::size_t>(from)];
+    }
     for (int r = 0; r < h; ++r) relative_[static_cast<std::size_t>(r < w ? f + r : rows[r])] = r;
     // Updates from the descendants: with Lk their rows from the first in s's columns down,
     // block(rows, cols) -= Lk D Lk(cols)^T over the rows of Lk in s's columns.

@@ -55,9 +55,11 @@ class SparseLdlt {
  private:
   int n_ = 0;
   std::vector<int> perm_;  ///< new index of old row i
-  /// (index in A's values, place in lx_) of each value on or above the diagonal of P A P^T
+  /// (index in A's values, place in lx_) of each value on or above the diagonal of P A P^T, by
+  /// supernode
   std::vector<std::pair<int, int>> scatter_;
-  std::vector<int> parent_;  ///< elimination tree
+  std::vector<int> scatterStart_;  ///< supernode s's entries of scatter_ start here
+  std::vector<int> parent_;        ///< elimination tree
   /// L's strictly lower part: column j's row indices (ascending) and values start at
   /// colStart_[j] in li_ and lx_ (inside its supernode's block, below the block's diagonal).
   std::vector<int> colStart_, li_;
