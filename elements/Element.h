@@ -77,6 +77,10 @@ class Element {
   virtual Eigen::Ref<const Eigen::MatrixXd> dampingTangent() const;
   /// Mass matrix (global frame). Zero by default.
   virtual Eigen::Ref<const Eigen::MatrixXd> mass() const;
+  /// The entries (column-major, j * numDof() + i, ascending) where tangentStiff, initialStiff,
+  /// committedStiff, dampingTangent and mass can be nonzero; empty (the default) when any can.
+  /// The assembly forms and adds only these: a zeroLength spring reaches 4 of its 144.
+  virtual std::span<const int> matrixSupport() const { return {}; }
   /// True when tangentStiff() may be non-symmetric (sliding friction): the solver must use LU.
   virtual bool hasNonSymmetricTangent() const { return false; }
   /// True when Rayleigh damping applies to this element unless a region says otherwise

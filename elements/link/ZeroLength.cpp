@@ -143,7 +143,9 @@ Status ZeroLength::update(const Kinematics& trial) {
 
 void ZeroLength::commitState() {
   for (auto& m : materials_) m->commitState();
-  kc_ = k_;
+  const double* trial = k_.data();
+  double* committed = kc_.data();
+  for (int idx : touchedMatrix_) committed[idx] = trial[idx];
 }
 
 void ZeroLength::revertToLastCommit() {

@@ -39,6 +39,7 @@ class ZeroLength final : public DynamicSizeElement {
   void revertToLastCommit() override;
   void revertToStart() override;
   std::optional<Eigen::VectorXd> response(std::span<const std::string> args) const override;
+  std::span<const int> matrixSupport() const override { return touchedMatrix_; }
 
  private:
   void assemble();

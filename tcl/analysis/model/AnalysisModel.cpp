@@ -127,11 +127,20 @@ void AnalysisModel::buildScatter() {
       }
       d = v.eq;
     }
+    // An element that names where its matrices can be nonzero scatters those entries alone; the
+    // pattern keeps every coupling of its dofs all the same (the same pattern, the same order
+    // and factor), and the entries left out only ever added zeros.
+    const std::span<const int> support = e->matrixSupport();
+    link.sparse = !support.empty();
+    std::vector<char> reaches(static_cast<std::size_t>(n) * static_cast<std::size_t>(n),
+                              link.sparse ? 0 : 1);
+    for (const int idx : support) reaches[static_cast<std::size_t>(idx)] = 1;
     for (int i = 0; i < n && !link.sleeping; ++i)
       for (auto [ea, ca] : localEqs[static_cast<std::size_t>(i)])
         for (int j = 0; j < n; ++j)
           for (auto [eb, cb] : localEqs[static_cast<std::size_t>(j)]) {
             pattern.couple(ea, eb);
+            if (!reaches[static_cast<std::size_t>(j * n + i)]) continue;
             link.mat.push_back(MatEntry{j * n + i, -1, ca * cb});  // value fixed below
             link.rowCol.emplace_back(ea, eb);
           }

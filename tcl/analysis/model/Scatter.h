@@ -42,6 +42,9 @@ struct ElementScatter {
   /// nonlinear element. Pairs (local, value).
   std::vector<std::pair<int, int>> matSlots;
   std::vector<std::pair<int, int>> rowCol;  ///< (row, column) of each mat entry while building
+  /// The element names the entries its matrices can reach (Element::matrixSupport): `mat` and
+  /// `matSlots` hold those alone, and the assembly forms them one by one.
+  bool sparse = false;
   domain::RayleighFactors rayleigh;
   bool rayleighOn = false;
   Eigen::VectorXd u, v, a;  ///< gather buffers

@@ -6,8 +6,58 @@
 
 namespace dabs::analysis {
 
+namespace {
+
+/// addElement for an element that names its matrices' support: each entry the scatter holds is
+/// formed alone, by the operations the whole-matrix path does on it and in the same order, so
+/// the values are the same to the bit (and 0 + x is x: the constant terms' zero start).
+void addElementEntries(double* values, const ElementScatter& l, const AssemblyCoefficients& c,
+                       bool varying, bool constant) {
+  const elements::Element& e = *l.element;
+  const auto& r = l.rayleigh;
+  const bool damped = c.cC != 0.0 && l.rayleighOn && (r.alphaM != 0.0 || r.betaK0 != 0.0);
+  if (!varying && !damped && c.cM == 0.0) return;
+  // The matrices are an element's own n x n arrays (column-major, no gaps), read by entry.
+  const double* k =
+      (c.stiffness == StiffnessKind::Current ? e.tangentStiff() : e.initialStiff()).data();
+  const double* tangent = e.tangentStiff().data();
+  const double* committed = e.committedStiff().data();
+  const double* damping = e.dampingTangent().data();
+  const double* mass = e.mass().data();
+  const double* initial = e.initialStiff().data();
+  const bool rayleighTerms = c.cC != 0.0 && l.rayleighOn;
+  auto entry = [&](int i) {
+    double x = 0.0;
+    if (varying) {
+      x = c.cK * k[i];
+      if (c.cC != 0.0) {
+        x += c.cC * damping[i];
+        if (rayleighTerms && r.betaK != 0.0) x += (c.cC * r.betaK) * tangent[i];
+        if (rayleighTerms && r.betaKc != 0.0) x += (c.cC * r.betaKc) * committed[i];
+      }
+    }
+    if (constant) {
+      if (rayleighTerms && r.alphaM != 0.0) x += (c.cC * r.alphaM) * mass[i];
+      if (rayleighTerms && r.betaK0 != 0.0) x += (c.cC * r.betaK0) * initial[i];
+      if (c.cM != 0.0) x += c.cM * mass[i];
+    }
+    return x;
+  };
+  if (l.matSlots.empty()) {
+    for (const MatEntry& me : l.mat) values[me.value] += me.coef * entry(me.local);
+    return;
+  }
+  for (const auto& [offset, value] : l.matSlots) values[value] += entry(offset);
+}
+
+}  // namespace
+
 void TangentAssembler::addElement(double* values, ElementScatter& l, const AssemblyCoefficients& c,
                                   Terms terms) {
+  if (l.sparse) {
+    addElementEntries(values, l, c, terms != Terms::Constant, terms != Terms::Varying);
+    return;
+  }
   const elements::Element& e = *l.element;
   Eigen::MatrixXd& local = l.work;
   const bool varying = terms != Terms::Constant;
