@@ -187,6 +187,12 @@ void AnalysisModel::buildScatter() {
   for (ElementScatter& l : elements_) {
     fix(l.mat, l.rowCol);
     l.matSlots.clear();
+    // Entries of one value side by side, each value's in their order: the assembly sums them in a
+    // register (ElementScatter::addMatrix) in the order it summed them in memory, so the same
+    // bits. An element on rigidly linked nodes sends each entry to the combinations of its
+    // nodes' master dofs, and a value then takes many entries of one element.
+    std::stable_sort(l.mat.begin(), l.mat.end(),
+                     [](const MatEntry& a, const MatEntry& b) { return a.value < b.value; });
     if (l.direct.empty() || l.mat.empty()) continue;
     for (const MatEntry& m : l.mat) l.matSlots.emplace_back(m.local, m.value);
     l.mat.clear();

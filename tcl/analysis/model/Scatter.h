@@ -112,10 +112,28 @@ struct ElementScatter {
   void addMatrix(double* values, const Eigen::MatrixXd& m) const {
     const double* local = m.data();
     if (matSlots.empty()) {
-      for (const MatEntry& e : mat) values[e.value] += e.coef * local[e.local];
+      addEntries(values, [local](int i) { return local[i]; });
       return;
     }
     for (const auto& [offset, value] : matSlots) values[value] += local[offset];
+  }
+
+  /// values[e.value] += e.coef * entry(e.local) over `mat`, one value's run of entries (`mat` is
+  /// sorted by value) summed in a register in their order: the same sums as one by one in
+  /// memory, without a store and reload between two terms of one value.
+  template <class Entry>
+  void addEntries(double* values, Entry entry) const {
+    const MatEntry* e = mat.data();
+    const MatEntry* const end = e + mat.size();
+    while (e != end) {
+      const int value = e->value;
+      double sum = values[value];
+      do {
+        sum += e->coef * entry(e->local);
+        ++e;
+      } while (e != end && e->value == value);
+      values[value] = sum;
+    }
   }
 
   /// B -= the local force f through the element's equations.

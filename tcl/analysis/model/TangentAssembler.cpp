@@ -44,7 +44,7 @@ void addElementEntries(double* values, const ElementScatter& l, const AssemblyCo
     return x;
   };
   if (l.matSlots.empty()) {
-    for (const MatEntry& me : l.mat) values[me.value] += me.coef * entry(me.local);
+    l.addEntries(values, entry);
     return;
   }
   for (const auto& [offset, value] : l.matSlots) values[value] += entry(offset);
