@@ -108,7 +108,7 @@ void AnalysisBuilder::ensureModel() {
     auto model =
         std::make_unique<AnalysisModel>(domain_, constraints_, numberer_, alphaSP_, alphaMP_);
     model->build();  // throws InputError for constraints it cannot enforce; nothing changed yet
-    threadChoice_.reset();  // a new model: measured anew
+    threadChoice_.reset(model->awakeElements());  // a new model: measured anew
     model->setThreads(threadsInForce());
     model_ = std::move(model);
     system_ = std::make_unique<LinearSystem>(*model_, solver_);

@@ -105,7 +105,7 @@ class AnalysisBuilder {
   /// ThreadChoice, the default); results do not depend on it.
   void setThreads(int threads) {
     threads_ = threads;
-    threadChoice_.reset();
+    threadChoice_.reset(model_ ? model_->awakeElements() : 2);
     if (model_) model_->setThreads(threadsInForce());
   }
   /// The count asked for: n, or 0 for the automatic choice.

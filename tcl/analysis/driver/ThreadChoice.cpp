@@ -17,12 +17,12 @@ std::optional<int> ThreadChoice::parseCount(std::string_view text) noexcept {
 
 ThreadChoice::ThreadChoice(int available) noexcept : available_(std::max(available, 1)) { reset(); }
 
-void ThreadChoice::reset() noexcept {
+void ThreadChoice::reset(std::size_t sharedWork) noexcept {
   recorded_ = 0;
   chosen_ = 1;
   measured_ = false;
   ratio_ = 1.0;
-  decided_ = available_ < 2;
+  decided_ = available_ < 2 || sharedWork < 2;
 }
 
 int ThreadChoice::next() const noexcept {

@@ -2,6 +2,7 @@
 #pragma once
 
 #include <array>
+#include <cstddef>
 #include <optional>
 #include <string_view>
 
@@ -25,8 +26,10 @@ class ThreadChoice {
   /// `available`: the threads the process may use (1: nothing to choose).
   explicit ThreadChoice(int available) noexcept;
 
-  /// Forgets the measurements (a new model).
-  void reset() noexcept;
+  /// Forgets the measurements (a new model). `sharedWork`: the elements whose updates the threads
+  /// would share; with fewer than two there is nothing to share (a pier pushover of one
+  /// element), and one thread is chosen without a trial.
+  void reset(std::size_t sharedWork = 2) noexcept;
   /// The thread count for the next step.
   int next() const noexcept;
   /// True once the choice is made (after the trial, or at once with one thread available).

@@ -51,6 +51,8 @@ class AnalysisModel {
   bool stale() const noexcept { return builtVersion_ != domain_.modelVersion(); }
 
   int numEquations() const noexcept { return neq_; }
+  /// Elements the iterations update (the sleeping contact pairs left out).
+  std::size_t awakeElements() const noexcept { return awake_; }
   /// Sparse matrix with the pattern of every possible coupling (values zero after build).
   const Eigen::SparseMatrix<double>& pattern() const noexcept { return A_; }
   /// True when some element declares a non-symmetric tangent.

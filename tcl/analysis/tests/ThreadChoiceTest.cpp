@@ -35,6 +35,19 @@ TEST(ThreadChoiceTest, OneAvailableThreadIsDecidedAtOnce) {
   EXPECT_FALSE(choice.measured());
 }
 
+// One element: nothing for threads to share, so one thread without a trial; two elements give the
+// trial back.
+TEST(ThreadChoiceTest, FewerThanTwoElementsAreDecidedAtOnce) {
+  ThreadChoice choice(2);
+  choice.reset(1);
+  EXPECT_TRUE(choice.decided());
+  EXPECT_EQ(choice.next(), 1);
+  choice.record(1.0, 1);
+  EXPECT_FALSE(choice.measured());
+  choice.reset(2);
+  EXPECT_FALSE(choice.decided());
+}
+
 TEST(ThreadChoiceTest, TrialWarmsUpOnOneThreadThenAlternatesInSwappedPairs) {
   ThreadChoice choice(2);
   const auto asked = runTrial(choice, [](int, int) { return 1.0; });
