@@ -131,9 +131,8 @@ void AnalysisModel::buildScatter() {
     // pattern keeps every coupling of its dofs all the same (the same pattern, the same order
     // and factor), and the entries left out only ever added zeros.
     const std::span<const int> support = e->matrixSupport();
-    link.sparse = !support.empty();
     std::vector<char> reaches(static_cast<std::size_t>(n) * static_cast<std::size_t>(n),
-                              link.sparse ? 0 : 1);
+                              support.empty() ? 1 : 0);
     for (const int idx : support) reaches[static_cast<std::size_t>(idx)] = 1;
     for (int i = 0; i < n && !link.sleeping; ++i)
       for (auto [ea, ca] : localEqs[static_cast<std::size_t>(i)])

@@ -36,15 +36,14 @@ struct ElementScatter {
   elements::Element* element = nullptr;
   std::vector<domain::Node*> nodes;
   std::vector<VecEntry> vec;
-  std::vector<MatEntry> mat;  ///< empty when matSlots scatters
+  /// The element's matrix entries (those of Element::matrixSupport when it names them), sorted
+  /// by value; empty when matSlots scatters.
+  std::vector<MatEntry> mat;
   /// With `direct` (every dof one equation or none, coefficient 1): `mat` without its
   /// coefficients, half the bytes that the assembly of every iteration reads for every
   /// nonlinear element. Pairs (local, value).
   std::vector<std::pair<int, int>> matSlots;
   std::vector<std::pair<int, int>> rowCol;  ///< (row, column) of each mat entry while building
-  /// The element names the entries its matrices can reach (Element::matrixSupport): `mat` and
-  /// `matSlots` hold those alone, and the assembly forms them one by one.
-  bool sparse = false;
   domain::RayleighFactors rayleigh;
   bool rayleighOn = false;
   Eigen::VectorXd u, v, a;  ///< gather buffers

@@ -3,89 +3,69 @@
 
 #include <Eigen/Core>
 #include <algorithm>
+#include <array>
 
 namespace dabs::analysis {
 
-namespace {
-
-/// addElement for an element that names its matrices' support: each entry the scatter holds is
-/// formed alone, by the operations the whole-matrix path does on it and in the same order, so
-/// the values are the same to the bit (and 0 + x is x: the constant terms' zero start).
-void addElementEntries(double* values, const ElementScatter& l, const AssemblyCoefficients& c,
-                       bool varying, bool constant) {
-  const elements::Element& e = *l.element;
-  const auto& r = l.rayleigh;
-  const bool damped = c.cC != 0.0 && l.rayleighOn && (r.alphaM != 0.0 || r.betaK0 != 0.0);
-  if (!varying && !damped && c.cM == 0.0) return;
-  // The matrices are an element's own n x n arrays (column-major, no gaps), read by entry.
-  const double* k =
-      (c.stiffness == StiffnessKind::Current ? e.tangentStiff() : e.initialStiff()).data();
-  const double* tangent = e.tangentStiff().data();
-  const double* committed = e.committedStiff().data();
-  const double* damping = e.dampingTangent().data();
-  const double* mass = e.mass().data();
-  const double* initial = e.initialStiff().data();
-  const bool rayleighTerms = c.cC != 0.0 && l.rayleighOn;
-  auto entry = [&](int i) {
-    double x = 0.0;
-    if (varying) {
-      x = c.cK * k[i];
-      if (c.cC != 0.0) {
-        x += c.cC * damping[i];
-        if (rayleighTerms && r.betaK != 0.0) x += (c.cC * r.betaK) * tangent[i];
-        if (rayleighTerms && r.betaKc != 0.0) x += (c.cC * r.betaKc) * committed[i];
-      }
-    }
-    if (constant) {
-      if (rayleighTerms && r.alphaM != 0.0) x += (c.cC * r.alphaM) * mass[i];
-      if (rayleighTerms && r.betaK0 != 0.0) x += (c.cC * r.betaK0) * initial[i];
-      if (c.cM != 0.0) x += c.cM * mass[i];
-    }
-    return x;
-  };
-  if (l.matSlots.empty()) {
-    l.addEntries(values, entry);
-    return;
-  }
-  for (const auto& [offset, value] : l.matSlots) values[value] += entry(offset);
-}
-
-}  // namespace
-
 void TangentAssembler::addElement(double* values, ElementScatter& l, const AssemblyCoefficients& c,
                                   Terms terms) {
-  if (l.sparse) {
-    addElementEntries(values, l, c, terms != Terms::Constant, terms != Terms::Varying);
-    return;
-  }
   const elements::Element& e = *l.element;
-  Eigen::MatrixXd& local = l.work;
   const bool varying = terms != Terms::Constant;
   const bool constant = terms != Terms::Varying;
   const auto& r = l.rayleigh;
+  const bool rayleighTerms = c.cC != 0.0 && l.rayleighOn;
+  // The terms of cK K + cC C + cM M asked for, in the order they are added. The element's
+  // matrices are its own n x n arrays (column-major, no gaps).
+  struct Term {
+    double coef;
+    const double* matrix;
+  };
+  std::array<Term, 7> list{};
+  int count = 0;
+  auto add = [&](double coef, const Eigen::Ref<const Eigen::MatrixXd>& m) {
+    list[static_cast<std::size_t>(count++)] = {coef, m.data()};
+  };
   if (varying) {
-    const auto k = c.stiffness == StiffnessKind::Current ? e.tangentStiff() : e.initialStiff();
-    local.noalias() = c.cK * k;
+    add(c.cK, c.stiffness == StiffnessKind::Current ? e.tangentStiff() : e.initialStiff());
     if (c.cC != 0.0) {
-      local.noalias() += c.cC * e.dampingTangent();
-      if (l.rayleighOn) {
-        if (r.betaK != 0.0) local.noalias() += (c.cC * r.betaK) * e.tangentStiff();
-        if (r.betaKc != 0.0) local.noalias() += (c.cC * r.betaKc) * e.committedStiff();
-      }
+      add(c.cC, e.dampingTangent());
+      if (rayleighTerms && r.betaK != 0.0) add(c.cC * r.betaK, e.tangentStiff());
+      if (rayleighTerms && r.betaKc != 0.0) add(c.cC * r.betaKc, e.committedStiff());
     }
-  } else {
-    const bool damped = c.cC != 0.0 && l.rayleighOn && (r.alphaM != 0.0 || r.betaK0 != 0.0);
-    if (!damped && c.cM == 0.0) return;
-    local.setZero(e.numDof(), e.numDof());
   }
   if (constant) {
-    if (c.cC != 0.0 && l.rayleighOn) {
-      if (r.alphaM != 0.0) local.noalias() += (c.cC * r.alphaM) * e.mass();
-      if (r.betaK0 != 0.0) local.noalias() += (c.cC * r.betaK0) * e.initialStiff();
-    }
-    if (c.cM != 0.0) local.noalias() += c.cM * e.mass();
+    if (rayleighTerms && r.alphaM != 0.0) add(c.cC * r.alphaM, e.mass());
+    if (rayleighTerms && r.betaK0 != 0.0) add(c.cC * r.betaK0, e.initialStiff());
+    if (c.cM != 0.0) add(c.cM, e.mass());
   }
-  l.addMatrix(values, local);
+  if (count == 0) return;
+  // Term by term over the entries: everywhere, or only where the element's matrices can be
+  // nonzero (Element::matrixSupport; the scatter holds those entries alone). The constant terms
+  // alone start from zero.
+  double* local = l.work.data();
+  auto form = [&](auto overEntries) {
+    const Term* t = list.data();
+    const Term* const end = t + count;
+    if (varying) {
+      overEntries([&](int i) { local[i] = t->coef * t->matrix[i]; });
+      ++t;
+    } else {
+      overEntries([&](int i) { local[i] = 0.0; });
+    }
+    for (; t != end; ++t) overEntries([&](int i) { local[i] += t->coef * t->matrix[i]; });
+  };
+  const std::span<const int> support = e.matrixSupport();
+  if (support.empty()) {
+    const auto size = static_cast<int>(l.work.size());
+    form([&](auto f) {
+      for (int i = 0; i < size; ++i) f(i);
+    });
+  } else {
+    form([&](auto f) {
+      for (const int i : support) f(i);
+    });
+  }
+  l.addMatrix(values, l.work);
 }
 
 const TangentAssembler::ConstantPart& TangentAssembler::constantPart(

@@ -122,10 +122,10 @@ void SparseLdlt::analyze(const Eigen::SparseMatrix<double>& A) {
   // Each value of A on or above the diagonal of P A P^T (the triangle the tree was formed from)
   // goes straight to its mirror place in L's blocks (row r of column k of supernode s:
   // superStart_[s] + k h + r); the entries below are their mirror images and are not read.
-  // The list is grouped by supernode (scatterStart_), so that the factorisation clears and fills
-  // each block just before it works on it, while the block is in the cache.
+  // The list is in the order of L's storage, so each supernode's entries are one run
+  // (scatterStart_): the factorisation clears and fills a block just before it works on it, while
+  // the block is in the cache.
   scatter_.clear();
-  std::vector<int> owner;  // supernode of each scatter_ entry
   for (int j = 0; j < n_; ++j)
     for (Eigen::SparseMatrix<double>::InnerIterator it(A, j); it; ++it) {
       const int col = perm_[static_cast<std::size_t>(it.row())],
@@ -140,18 +140,15 @@ void SparseLdlt::analyze(const Eigen::SparseMatrix<double>& A) {
       }
       scatter_.emplace_back(static_cast<int>(&it.value() - A.valuePtr()),
                             superStart_[s] + (col - f) * h + local);
-      owner.push_back(static_cast<int>(s));
     }
-  scatterStart_.assign(ns + 1, 0);
-  for (const int s : owner) ++scatterStart_[static_cast<std::size_t>(s) + 1];
-  for (std::size_t s = 0; s < ns; ++s) scatterStart_[s + 1] += scatterStart_[s];
-  {
-    std::vector<std::pair<int, int>> grouped(scatter_.size());
-    std::vector<int> place(scatterStart_.begin(), scatterStart_.end() - 1);
-    for (std::size_t e = 0; e < scatter_.size(); ++e)
-      grouped[static_cast<std::size_t>(place[static_cast<std::size_t>(owner[e])]++)] = scatter_[e];
-    scatter_ = std::move(grouped);
-  }
+  std::sort(scatter_.begin(), scatter_.end(),
+            [](const auto& a, const auto& b) { return a.second < b.second; });
+  scatterStart_.assign(ns + 1, static_cast<int>(scatter_.size()));
+  for (std::size_t s = 0; s < ns; ++s)
+    scatterStart_[s] = static_cast<int>(
+        std::lower_bound(scatter_.begin(), scatter_.end(), superStart_[s],
+                         [](const auto& entry, int start) { return entry.second < start; }) -
+        scatter_.begin());
   relative_.assign(n, 0);
   nextUpdate_.assign(ns, -1);
   firstUpdate_.assign(ns, -1);
