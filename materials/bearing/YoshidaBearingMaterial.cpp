@@ -38,7 +38,8 @@ struct SubStep {
 /// `delta`; `dir` is the unit direction used for d|delta|/d delta (delta/|delta|, or the defined
 /// direction when delta = 0, or zero for the elastic one-sided derivative).
 SubStep subStep(const YoshidaBearingMaterial::Params& p, const Vec2& u, const Vec2& delta,
-                const Vec2& dir, const Vec2& fPrev, double mPrev) {
+                const Vec2& dir, const Vec2& fPrev, double mPrev, double& lastRatio,
+                double& lastRatioQ) {
   SubStep r;
   const double un = u.norm();
   const bool umaxGrows = un > mPrev;
@@ -48,8 +49,13 @@ SubStep subStep(const YoshidaBearingMaterial::Params& p, const Vec2& u, const Ve
 
   // Back-force factor a = max(0, alpha0 - beta (Umax/U0)^q), clipped as the issue requires.
   const double ratio = r.umax / p.U0;
-  // One pow for both: d(ratio^q)/d Umax = q ratio^q / ratio / U0.
-  const double ratioQ = ratio > 0.0 ? std::pow(ratio, p.q) : 0.0;
+  // One pow for both: d(ratio^q)/d Umax = q ratio^q / ratio / U0. (lastRatio, lastRatioQ):
+  // the material's cache of this pow, whose argument seldom changes.
+  if (ratio > 0.0 && ratio != lastRatio) {
+    lastRatio = ratio;
+    lastRatioQ = std::pow(ratio, p.q);
+  }
+  const double ratioQ = ratio > 0.0 ? lastRatioQ : 0.0;
   double a = p.alpha0 - p.beta * ratioQ;
   double da_dM = (ratio > 0.0) ? -p.beta * p.q * ratioQ / ratio / p.U0 : 0.0;
   if (a <= 0.0) {
@@ -67,6 +73,9 @@ SubStep subStep(const YoshidaBearingMaterial::Params& p, const Vec2& u, const Ve
   const double bn = b.norm();
   Vec2 e = Vec2::Zero();
   double zeta = 0.0;
+  // The last |z|^(n-1) the iteration formed and its zeta: the iteration usually stops on a step
+  // it does not take, at the zeta the derivatives below need again.
+  double lastZeta = -1.0, lastZn1 = 0.0;
   if (bn > 0.0) {
     e = b / bn;
     // Scalar equation phi(zeta) = zeta/(1+a) + d zeta^n - |b| = 0, phi increasing. For n >= 1 it
@@ -84,6 +93,8 @@ SubStep subStep(const YoshidaBearingMaterial::Params& p, const Vec2& u, const Ve
     r.converged = p.n == 1.0;
     for (int it = 0; it < kMaxLocalIterations && !r.converged; ++it) {
       const double zn1 = std::pow(zeta, p.n - 1.0);
+      lastZeta = zeta;
+      lastZn1 = zn1;
       const double phi = zeta / opa + d * zn1 * zeta - bn;
       const double dphi = 1.0 / opa + p.n * d * zn1;
       const double step = phi / dphi;
@@ -108,7 +119,10 @@ SubStep subStep(const YoshidaBearingMaterial::Params& p, const Vec2& u, const Ve
   // For n < 1, dg/dz is unbounded at z = 0: there (b = 0, a point of no interest but reachable)
   // z does not move to first order, J^-1 = 0.
   const bool singular = p.n < 1.0 && zeta == 0.0;
-  const double zn1 = singular ? 0.0 : p.n == 1.0 ? 1.0 : std::pow(zeta, p.n - 1.0);
+  const double zn1 = singular           ? 0.0
+                     : p.n == 1.0       ? 1.0
+                     : zeta == lastZeta ? lastZn1
+                                        : std::pow(zeta, p.n - 1.0);
   const Vec2 g = zn1 * r.z;                                                   // |z|^(n-1) z
   const Mat2 G = zn1 * (Mat2::Identity() + (p.n - 1.0) * e * e.transpose());  // dg/dz
   const Mat2 J = Mat2::Identity() / opa + d * G;
@@ -210,7 +224,7 @@ Status YoshidaBearingMaterial::setTrialStrain(const Eigen::Vector2d& strain,
   for (int j = 1; j <= m; ++j) {
     const double frac = static_cast<double>(j) / m;
     const Vec2 uj = (j == m) ? Vec2(strain) : Vec2(c.u + frac * du);
-    r = subStep(p_, uj, delta, dir, f, umax);
+    r = subStep(p_, uj, delta, dir, f, umax, ratioPower_.ratio, ratioPower_.power);
     if (!r.converged) return Status::NotConverged;
     const Mat2 dFnew = r.dF_dU * frac + r.dF_dDelta / m + r.dF_dFprev * dF + r.dF_dMprev * dM;
     dM = r.dM_dU * frac + r.dM_dMprev * dM;

@@ -106,6 +106,13 @@ class YoshidaBearingMaterial final : public BiaxialMaterial {
   Params p_;
   State trial_{};
   State committed_{};
+  /// (Umax/U0)^q at the last ratio it was formed for: not state but a cache of a pure function.
+  /// Umax stays at its committed value in most sub-steps (it grows only on a new largest
+  /// deformation), and pow is much of this law's cost; the same ratio gives the same bits.
+  struct RatioPower {
+    double ratio = -1.0;
+    double power = 0.0;
+  } ratioPower_;
 };
 
 }  // namespace dabs::materials

@@ -430,6 +430,28 @@ TEST(YoshidaBearingMaterialTest, TrialIsIdempotentAndRevertRestores) {
   EXPECT_EQ(m.getInitialTangent()(0, 0), kY0 / kU0 + 1000.0);
 }
 
+// A trial that is reverted leaves no trace: the same committed history gives the same bits
+// whatever trials came between (the back-force factor's (Umax/U0)^q is cached by its argument,
+// and a trial far out sets a larger Umax than the committed one).
+TEST(YoshidaBearingMaterialTest, RevertedTrialsLeaveNoTrace) {
+  Params p = basic(2.0);
+  p.alpha0 = 0.4;
+  p.beta = 0.05;
+  p.q = 0.7;
+  p.maxSubIncrement = 0.05;
+  YoshidaBearingMaterial plain(1, p), probed(2, p);
+  for (int i = 1; i <= 60; ++i) {
+    const double t = 2 * kPi * i / 60;
+    const Vec2 u = 3.0 * kU0 * std::min(1.0, i / 20.0) * Vec2(std::sin(t), std::sin(2 * t));
+    ASSERT_TRUE(ok(probed.setTrialStrain(u * (1.5 + 0.01 * i), Vec2::Zero(), 0.0)));
+    probed.revertToLastCommit();
+    drive(plain, u);
+    drive(probed, u);
+    ASSERT_EQ(probed.getStress(), plain.getStress()) << "point " << i;
+    ASSERT_EQ(probed.getTangent(), plain.getTangent()) << "point " << i;
+  }
+}
+
 /// Forces along a Lissajous path (1.5 figure-eights of amplitude 4 U0, 240 points) integrated
 /// with sub-steps of at most `subIncrement` U0.
 void lissajousForces(double subIncrement, std::vector<Vec2>& out) {
