@@ -210,10 +210,11 @@ void analysisStatisticsCmd(Runtime& rt, ArgReader& a) {
       "steps " + std::to_string(s.steps) + " failedSteps " + std::to_string(s.failedSteps) +
       " subSteppedSteps " + std::to_string(s.subSteppedSteps) + " iterations " +
       std::to_string(s.iterations) + " factorizations " + std::to_string(s.factorizations) +
-      " equations " + std::to_string(s.equations) + " elementUpdates " +
-      std::to_string(s.elementUpdates) + " materialUpdates " + std::to_string(s.materialUpdates) +
-      " failedBearings " + std::to_string(s.failedBearings) + " buckledBearings " +
-      std::to_string(s.buckledBearings) + " threads " + std::to_string(rt.analysis->threads());
+      " keptPivots " + std::to_string(s.keptPivots) + " equations " + std::to_string(s.equations) +
+      " elementUpdates " + std::to_string(s.elementUpdates) + " materialUpdates " +
+      std::to_string(s.materialUpdates) + " failedBearings " + std::to_string(s.failedBearings) +
+      " buckledBearings " + std::to_string(s.buckledBearings) + " threads " +
+      std::to_string(rt.analysis->threads());
   // The automatic choice's measurement (ThreadChoice): the threads' time per iteration over one
   // thread's, the median of its pairs of steps; present once it has measured.
   const auto& choice = rt.analysis->threadChoice();

@@ -212,7 +212,7 @@ int AnalysisBuilder::analyze(int numSteps, double dt) {
     throw InputError("dt", "must be positive for a transient analysis");
   if (algorithm_->needsTest() && !test_) throw InputError("test", "is not defined");
   ensureModel();
-  const long factorizationsBefore = factorizationsSoFar();
+  const FactorCounts factorizationsBefore = factorizationsSoFar();
   const long elementUpdatesBefore = model_->elementUpdates();
   const long farTestsBefore = model_->farTests();
   const long materialUpdatesBefore = domain_.materialUpdates();
@@ -255,7 +255,7 @@ int AnalysisBuilder::analyze(int numSteps, double dt) {
   }
   if (progress) progress(result == 0 ? numSteps : -1, numSteps);  // -1: stopped early
   if (stepping) stats_.contactSteps += contactStepping_->contactSteps() - contactStepsBefore;
-  stats_.factorizations += factorizationsSoFar() - factorizationsBefore;
+  addFactorizations(factorizationsBefore);
   stats_.elementUpdates += model_->elementUpdates() - elementUpdatesBefore;
   stats_.farTests += model_->farTests() - farTestsBefore;
   stats_.materialUpdates += domain_.materialUpdates() - materialUpdatesBefore;
@@ -263,7 +263,7 @@ int AnalysisBuilder::analyze(int numSteps, double dt) {
   return result;
 }
 
-int AnalysisBuilder::advance(double dt, long factorizationsBefore) {
+int AnalysisBuilder::advance(double dt, const FactorCounts& factorizationsBefore) {
   Status s = analyzeStep(dt);
   if (!ok(s) && kind_ == Kind::Transient && numSubLevels_ > 0) {
     ++stats_.failedSteps;
@@ -275,7 +275,7 @@ int AnalysisBuilder::advance(double dt, long factorizationsBefore) {
   if (!ok(s)) return code(s);
   if (const int stop = notifyObservers(); stop != 0) return stop;
   if (auto error = domain_.takeRecorderError()) {
-    stats_.factorizations += factorizationsSoFar() - factorizationsBefore;
+    addFactorizations(factorizationsBefore);
     char when[64];
     std::snprintf(when, sizeof when, "%.10g", domain_.committedTime());
     throw InputError("", *error + "; the analysis stopped at time " + when +
@@ -294,13 +294,26 @@ int AnalysisBuilder::advance(double dt, long factorizationsBefore) {
 
 void AnalysisBuilder::rebuildPattern() {
   model_->applySleepChanges();
-  factorizationsCarried_ += system_->factorizations();  // the new solvers count from zero
+  // the new solvers count from zero
+  factorizationsCarried_.all += system_->factorizations();
+  factorizationsCarried_.kept += system_->keptPivots();
   system_->patternChanged();
   ++stats_.patternChanges;
 }
 
-long AnalysisBuilder::factorizationsSoFar() const {
-  return factorizationsCarried_ + (system_ ? system_->factorizations() : 0);
+AnalysisBuilder::FactorCounts AnalysisBuilder::factorizationsSoFar() const {
+  FactorCounts counts = factorizationsCarried_;
+  if (system_) {
+    counts.all += system_->factorizations();
+    counts.kept += system_->keptPivots();
+  }
+  return counts;
+}
+
+void AnalysisBuilder::addFactorizations(const FactorCounts& before) {
+  const FactorCounts now = factorizationsSoFar();
+  stats_.factorizations += now.all - before.all;
+  stats_.keptPivots += now.kept - before.kept;
 }
 
 StepObserver& AnalysisBuilder::addStepObserver(std::unique_ptr<StepObserver> observer) {

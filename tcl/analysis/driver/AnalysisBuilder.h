@@ -26,6 +26,7 @@ struct AnalysisStatistics {
   long subSteppedSteps = 0;  ///< steps that were recovered by sub-stepping
   long iterations = 0;       ///< algorithm iterations
   long factorizations = 0;   ///< numeric factorisations
+  long keptPivots = 0;       ///< of them, sparse LU ones that kept the previous pivots
   long equations = 0;        ///< equations of the last committed step (free dofs after constraints)
   long elementUpdates = 0;   ///< element state determinations
   long materialUpdates = 0;  ///< section material (fiber) state determinations
@@ -118,6 +119,10 @@ class AnalysisBuilder {
   std::function<void(const std::string&)> log;
 
  private:
+  /// Factorisations of the solvers so far, and of them those that kept the previous pivots.
+  struct FactorCounts {
+    long all = 0, kept = 0;
+  };
   int threads_ = 0;
   ThreadChoice threadChoice_{AnalysisModel::availableThreads()};
   int threadsInForce() const noexcept { return threads_ > 0 ? threads_ : threadChoice_.next(); }
@@ -127,12 +132,14 @@ class AnalysisBuilder {
   [[nodiscard]] Status analyzeSubLevel(int level, double dt);
   /// One step of analyze (sub-stepped on failure), with the checks that follow it; 0 or the code
   /// analyze returns.
-  int advance(double dt, long factorizationsBefore);
+  int advance(double dt, const FactorCounts& factorizationsBefore);
   /// New matrix pattern after contact pairs woke or went to sleep
   /// (AnalysisModel::applySleepChanges).
   void rebuildPattern();
   /// Factorisations of this model's systems, across pattern changes.
-  long factorizationsSoFar() const;
+  FactorCounts factorizationsSoFar() const;
+  /// Adds the factorisations since `before` to the statistics.
+  void addFactorizations(const FactorCounts& before);
   /// Calls every step observer after a committed step; 0 or the first non-zero code one returned
   /// (every observer is called, so each notes the step).
   int notifyObservers();
@@ -159,7 +166,7 @@ class AnalysisBuilder {
   AnalysisStatistics stats_;
   std::unique_ptr<ContactStepping> contactStepping_;
   bool inAfterStep_ = false;
-  long factorizationsCarried_ = 0;
+  FactorCounts factorizationsCarried_;
   std::vector<std::unique_ptr<StepObserver>> observers_;
 };
 

@@ -3,7 +3,11 @@
 
 #include <Eigen/LU>
 #include <Eigen/SparseCholesky>
+#include <algorithm>
+#include <cmath>
+#include <limits>
 #include <map>
+#include <vector>
 
 #include <klu.h>
 
@@ -47,11 +51,19 @@ class SparseLdltSolver final : public LinearSolver {
 
 /// Sparse LU by KLU (SuiteSparse; Davis & Palamadai Natarajan 2010, ACM TOMS 37(3) 36): the
 /// fill-reducing ordering once per pattern, then a numeric factorisation with partial pivoting
-/// for every new matrix. KLU's refactorisation (the previous pivot order, no search) would be
-/// cheaper still, but it makes the round-off depend on which matrix chose the pivots, so the same
-/// steps taken in one `analyze` call or in several would give results that differ in the last
-/// digits, and impacts amplify such differences; a fresh pivot search keeps every solution a
-/// function of its matrix alone.
+/// (diagonal preference, threshold tol) of every new matrix, as if it were the first.
+///
+/// A fresh factorisation searches every column for its pivot and allocates its factors anew. So
+/// the previous factors' pivots are tried first: KLU's refactorisation (klu_refactor) redoes
+/// the arithmetic with them, and the result is kept only if KLU's own pivot rule, applied to the
+/// columns just computed, would have chosen the same pivot in every column, with a margin that
+/// no rounding of the stored quotients can cross (samePivotsAsFresh). With the same pivots the
+/// two routines perform the same operations in the same order (klu_kernel.c and
+/// klu_refactor.c: the column's updates in the stored topological order, one division by the
+/// pivot), so the factors, and every solution, are bit for bit those of a fresh factorisation:
+/// a function of the matrix alone, whatever matrices came before. Otherwise the matrix is
+/// factorised afresh. The check reads KLU's documented Numeric object and the layout of its
+/// L columns (each column's row indices, then its values, in units of a double).
 class KluSolver final : public LinearSolver {
  public:
   KluSolver() {
@@ -69,6 +81,14 @@ class KluSolver final : public LinearSolver {
     const Eigen::SparseMatrix<double>& c = compressed(A);
     symbolic_ = klu_analyze(n_, const_cast<int*>(c.outerIndexPtr()),
                             const_cast<int*>(c.innerIndexPtr()), &common_);
+    if (symbolic_ == nullptr) return;
+    const auto n = static_cast<std::size_t>(n_);
+    symbolicPosition_.assign(n, 0);
+    for (int k = 0; k < n_; ++k) symbolicPosition_[static_cast<std::size_t>(symbolic_->P[k])] = k;
+    pivotRow_.assign(n, 0);
+    rowPosition_.assign(n, 0);
+    diagonalRow_.assign(n, 0);
+    rowState_.assign(n, 0);
   }
   Status factorize(const Eigen::SparseMatrix<double>& A) override {
     ++factorizations_;
@@ -79,9 +99,16 @@ class KluSolver final : public LinearSolver {
     int* ap = const_cast<int*>(c.outerIndexPtr());
     int* ai = const_cast<int*>(c.innerIndexPtr());
     double* ax = const_cast<double*>(c.valuePtr());
-    if (numeric_ != nullptr) klu_free_numeric(&numeric_, &common_);
-    numeric_ = klu_factor(ap, ai, ax, symbolic_, &common_);
-    if (numeric_ == nullptr || common_.status != KLU_OK) return Status::Singular;
+    if (pivotsKept_ && klu_refactor(ap, ai, ax, symbolic_, numeric_, &common_) &&
+        common_.status == KLU_OK && samePivotsAsFresh()) {
+      ++refactorizations_;
+    } else {
+      if (numeric_ != nullptr) klu_free_numeric(&numeric_, &common_);
+      numeric_ = klu_factor(ap, ai, ax, symbolic_, &common_);
+      // A factorisation that stopped at a zero pivot has no complete pivot order to reuse.
+      pivotsKept_ = numeric_ != nullptr && common_.status == KLU_OK;
+      if (!pivotsKept_) return Status::Singular;
+    }
     // rcond here is min |U_ii| / max |U_ii|: the same relative pivot test as the LDL^T's.
     if (!klu_rcond(symbolic_, numeric_, &common_) || !(common_.rcond > kRelativePivotTolerance))
       return Status::Singular;
@@ -96,6 +123,78 @@ class KluSolver final : public LinearSolver {
   }
 
  private:
+  /// Whether a fresh factorisation of the matrix just refactorised would pick the pivots it was
+  /// refactorised with. KLU's rule (lpivot in klu_kernel.c), column k of a diagonal block: among
+  /// the rows not yet pivotal in the column's pattern, take the "diagonal" row if its magnitude
+  /// is at least tol times the largest, else the first largest. The diagonal row starts as row k
+  /// of the block and moves as off-diagonal pivots are taken (the bookkeeping of P and Pinv in
+  /// klu_kernel.c, followed here with the stored pivots). The stored column of L is the column's
+  /// other candidates divided by the pivot, each quotient correctly rounded, so the tests are
+  /// made on |L| with a relative margin of 1e-9: kept pivot = diagonal when tol max|L| < 1, an
+  /// off-diagonal one when every |L| < 1 (the unique largest) and the diagonal's |L| < tol.
+  bool samePivotsAsFresh() {
+    constexpr double kMargin = 1.0 - 1e-9;
+    const double tol = common_.tol;  // klu_factor keeps it within [0, 1]
+    const int* blockStart = symbolic_->R;
+    const auto* udiagAll = static_cast<const double*>(numeric_->Udiag);
+    // KLU marks a row not yet pivotal by "flipping" its index: -i - 2 (its own inverse).
+    auto flip = [](int i) { return -i - 2; };
+    for (int block = 0; block < symbolic_->nblocks; ++block) {
+      const int k1 = blockStart[block], nk = blockStart[block + 1] - k1;
+      if (nk == 1) continue;  // a singleton has no choice
+      // Block-local rows: row r is the original row symbolic P[k1 + r].
+      for (int k = 0; k < nk; ++k) {
+        const int row = symbolicPosition_[static_cast<std::size_t>(numeric_->Pnum[k1 + k])] - k1;
+        pivotRow_[static_cast<std::size_t>(k)] = row;
+        rowPosition_[static_cast<std::size_t>(row)] = k;
+        diagonalRow_[static_cast<std::size_t>(k)] = k;
+        rowState_[static_cast<std::size_t>(k)] = flip(k);
+      }
+      const auto* lu = static_cast<const double*>(numeric_->LUbx[block]);
+      const int* lip = numeric_->Lip + k1;
+      const int* llen = numeric_->Llen + k1;
+      const double* udiag = udiagAll + k1;
+      for (int k = 0; k < nk; ++k) {
+        const auto uk = static_cast<std::size_t>(k);
+        const int diagonal = diagonalRow_[uk], pivot = pivotRow_[uk];
+        const double u = udiag[k];
+        if (!(u != 0.0) || !std::isfinite(u)) return false;
+        // Column k of L: its row indices (block-local pivot positions), then its values.
+        const int len = llen[k];
+        const auto* indices = reinterpret_cast<const int*>(lu + lip[k]);
+        const double* values =
+            lu + lip[k] +
+            (static_cast<std::size_t>(len) * sizeof(int) + sizeof(double) - 1) / sizeof(double);
+        const bool diagonalWaits =
+            diagonal != pivot && rowState_[static_cast<std::size_t>(diagonal)] < 0;
+        const int diagonalPosition =
+            diagonalWaits ? rowPosition_[static_cast<std::size_t>(diagonal)] : -1;
+        double largest = 0.0, atDiagonal = -1.0;
+        for (int p = 0; p < len; ++p) {
+          const double a = std::fabs(values[p]);
+          if (!(a <= std::numeric_limits<double>::max())) return false;
+          largest = std::max(largest, a);
+          if (indices[p] == diagonalPosition) atDiagonal = a;
+        }
+        if (diagonal == pivot) {
+          if (!(tol * largest < kMargin)) return false;
+        } else {
+          if (!(largest < kMargin)) return false;
+          if (atDiagonal >= 0.0 && !(atDiagonal < tol * kMargin)) return false;
+        }
+        // KLU's bookkeeping after column k: an off-diagonal pivot hands its "diagonal" duty to
+        // the row it displaced, if that row is not pivotal yet.
+        if (pivot != diagonal && rowState_[static_cast<std::size_t>(diagonal)] < 0) {
+          const int kbar = flip(rowState_[static_cast<std::size_t>(pivot)]);
+          diagonalRow_[static_cast<std::size_t>(kbar)] = diagonal;
+          rowState_[static_cast<std::size_t>(diagonal)] = flip(kbar);
+        }
+        diagonalRow_[uk] = pivot;
+        rowState_[static_cast<std::size_t>(pivot)] = k;
+      }
+    }
+    return true;
+  }
   const Eigen::SparseMatrix<double>& compressed(const Eigen::SparseMatrix<double>& A) {
     if (A.isCompressed()) return A;
     copy_ = A;
@@ -105,13 +204,18 @@ class KluSolver final : public LinearSolver {
   void release() {
     if (numeric_ != nullptr) klu_free_numeric(&numeric_, &common_);
     if (symbolic_ != nullptr) klu_free_symbolic(&symbolic_, &common_);
+    pivotsKept_ = false;
   }
 
   klu_common common_{};
   klu_symbolic* symbolic_ = nullptr;
   klu_numeric* numeric_ = nullptr;
+  bool pivotsKept_ = false;  ///< numeric_ holds a complete factorisation whose pivots may serve
   int n_ = 0;
   Eigen::SparseMatrix<double> copy_;
+  // Pivot check: the symbolic order's position of each original row; per block, each column's
+  // pivot row and each row's pivot position; KLU's diagonal row of each column and its Pinv.
+  std::vector<int> symbolicPosition_, pivotRow_, rowPosition_, diagonalRow_, rowState_;
 };
 
 class DenseLuSolver final : public LinearSolver {

@@ -30,6 +30,8 @@ class LinearSolver {
   [[nodiscard]] virtual Status solve(const Eigen::VectorXd& b, Eigen::VectorXd& x) = 0;
   /// Number of numeric factorisations so far (for benchmarks).
   long factorizations() const noexcept { return factorizations_; }
+  /// Of those, the ones that kept the previous pivots (the sparse LU only; see KluSolver).
+  long refactorizations() const noexcept { return refactorizations_; }
 
   /// Creates a solver; `nonSymmetric` forces an LU even when an LDL^T was asked for.
   static std::unique_ptr<LinearSolver> create(SolverKind kind, bool nonSymmetric);
@@ -38,6 +40,7 @@ class LinearSolver {
 
  protected:
   long factorizations_ = 0;
+  long refactorizations_ = 0;
 };
 
 }  // namespace dabs::analysis

@@ -22,6 +22,12 @@ long LinearSystem::factorizations() const noexcept {
          (definite_ ? definite_->factorizations() : 0);
 }
 
+long LinearSystem::keptPivots() const noexcept {
+  return (primary_ ? primary_->refactorizations() : 0) +
+         (general_ ? general_->refactorizations() : 0) +
+         (definite_ ? definite_->refactorizations() : 0);
+}
+
 Status LinearSystem::formTangent(const AssemblyCoefficients& c, bool reuse) {
   if (reuse && factored_ && c.sameMatrix(lastCoefficients_)) return Status::Ok;
   if (model_.numEquations() == 0) {  // everything is prescribed: nothing to factorise

@@ -34,6 +34,8 @@ class LinearSystem {
   Eigen::VectorXd X;  ///< last solution (integrators may overwrite it with the applied increment)
 
   long factorizations() const noexcept;
+  /// Of them, the sparse LU's that kept the previous pivots (LinearSolver::refactorizations).
+  long keptPivots() const noexcept;
   AnalysisModel& model() noexcept { return model_; }
 
  private:

@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <Eigen/SparseCore>
+#include <random>
 #include <string>
 #include <vector>
 
@@ -68,6 +69,63 @@ TEST_P(LinearSolverTest, SingularMatrixIsReportedNotSolved) {
   auto solver = LinearSolver::create(c.kind, c.nonSymmetric);
   solver->analyzePattern(A);
   EXPECT_EQ(solver->factorize(A), Status::Singular);
+}
+
+// A random non-symmetric matrix on a fixed pattern (a 2D grid's 5-point stencil plus some far
+// couplings, n = 64): each row's diagonal is `diagonalWeight` times a random number in [0.5, 1],
+// the off-diagonal entries random in [-1, 1]. With a weight well below KLU's threshold (0.001)
+// the off-diagonal entries win
+// its pivot search; with a large one the diagonal does.
+Eigen::SparseMatrix<double> randomOnPattern(std::mt19937& rng, double diagonalWeight) {
+  constexpr int kSide = 8, n = kSide * kSide;
+  std::uniform_real_distribution<double> offDiagonal(-1.0, 1.0), diagonal(0.5, 1.0);
+  std::vector<Eigen::Triplet<double>> t;
+  for (int i = 0; i < n; ++i) {
+    const int r = i / kSide, c = i % kSide;
+    t.emplace_back(i, i, diagonalWeight * diagonal(rng));
+    if (c + 1 < kSide) t.emplace_back(i, i + 1, offDiagonal(rng));
+    if (c > 0) t.emplace_back(i, i - 1, offDiagonal(rng));
+    if (r + 1 < kSide) t.emplace_back(i, i + kSide, offDiagonal(rng));
+    if (r > 0) t.emplace_back(i, i - kSide, offDiagonal(rng));
+    if (i % 7 == 0) t.emplace_back(i, (i * 13 + 5) % n, offDiagonal(rng));
+  }
+  Eigen::SparseMatrix<double> A(n, n);
+  A.setFromTriplets(t.begin(), t.end());  // a repeated (i, j) sums: the pattern stays the same
+  return A;
+}
+
+// The sparse LU keeps the previous pivots when KLU's own rule would choose them again: every
+// solution of a sequence of matrices on one pattern must then be, bit for bit, the one a new
+// solver finds for that matrix alone, whether the pivots were kept or had to be searched again.
+TEST(KluSolverTest, KeptPivotsGiveTheFreshFactorisationsBits) {
+  std::mt19937 rng(20261128);
+  std::uniform_real_distribution<double> entry(-1.0, 1.0);
+  auto kept = LinearSolver::create(SolverKind::SparseLU, true);
+  int factorised = 0;
+  for (int m = 0; m < 60; ++m) {
+    // Runs of diagonally strong matrices (pivots kept), broken by weak ones (pivots change).
+    const double weight = (m % 10 == 9) ? 1e-5 : (m % 10 == 0 ? 20.0 : 4.0 + 0.1 * (m % 10));
+    const Eigen::SparseMatrix<double> A = randomOnPattern(rng, weight);
+    Eigen::VectorXd b(A.rows());
+    for (Eigen::Index i = 0; i < b.size(); ++i) b(i) = entry(rng);
+    if (m == 0) kept->analyzePattern(A);
+    auto fresh = LinearSolver::create(SolverKind::SparseLU, true);
+    fresh->analyzePattern(A);
+    const Status keptStatus = kept->factorize(A);
+    ASSERT_EQ(keptStatus, fresh->factorize(A)) << "matrix " << m;
+    if (!ok(keptStatus)) continue;
+    ++factorised;
+    Eigen::VectorXd xKept, xFresh;
+    ASSERT_TRUE(ok(kept->solve(b, xKept)));
+    ASSERT_TRUE(ok(fresh->solve(b, xFresh)));
+    for (Eigen::Index i = 0; i < b.size(); ++i)
+      ASSERT_EQ(xKept(i), xFresh(i)) << "matrix " << m << ", component " << i;
+    EXPECT_LT((A * xKept - b).norm(), 1e-10 * b.norm()) << "matrix " << m;
+  }
+  // Both ways were taken: most matrices kept the pivots, the weak ones and the first did not.
+  EXPECT_GE(factorised, 55);
+  EXPECT_GE(kept->refactorizations(), 30);
+  EXPECT_LE(kept->refactorizations(), factorised - 7);
 }
 
 std::string caseName(const ::testing::TestParamInfo<Case>& info) {
