@@ -435,10 +435,7 @@ TEST(YoshidaBearingMaterialTest, TrialIsIdempotentAndRevertRestores) {
 // and a trial far out sets a larger Umax than the committed one).
 TEST(YoshidaBearingMaterialTest, RevertedTrialsLeaveNoTrace) {
   Params p = basic(2.0);
-  p.alpha0 = 0.4;
-  p.beta = 0.05;
-  p.q = 0.7;
-  p.maxSubIncrement = 0.05;
+  p.alpha0 = 0.4, p.beta = 0.05, p.q = 0.7, p.maxSubIncrement = 0.05;  // a decaying back force
   YoshidaBearingMaterial plain(1, p), probed(2, p);
   for (int i = 1; i <= 60; ++i) {
     const double t = 2 * kPi * i / 60;
