@@ -47,7 +47,7 @@ SubStep subStep(const YoshidaBearingMaterial::Params& p, const Vec2& u, const Ve
   r.dM_dU = umaxGrows ? Row2(u.transpose() / un) : Row2::Zero();
   r.dM_dMprev = umaxGrows ? 0.0 : 1.0;
 
-  // Back-force factor a = max(0, alpha0 - beta (Umax/U0)^q), clipped as the issue requires.
+  // Back-force factor a = max(0, alpha0 - beta (Umax/U0)^q): clipped at zero (class comment).
   const double ratio = r.umax / p.U0;
   // One pow for both: d(ratio^q)/d Umax = q ratio^q / ratio / U0. (lastRatio, lastRatioQ):
   // the material's cache of this pow, whose argument seldom changes.

@@ -19,9 +19,9 @@ namespace dabs::materials {
 ///   Y       = Y0 (1 + gamma (|U| / U0)^2)                                          (hardening)
 ///   F2 = k U_spring = eta dU_dashpot / dt,  U_spring + U_dashpot = U              (Maxwell part)
 ///
-/// Umax is the largest |U| reached so far. The back-force factor a is clipped at zero: the issue
-/// asks that alpha0 - beta (Umax/U0)^q never go below zero, so once Umax passes
-/// U0 (alpha0/beta)^(1/q) the back force vanishes instead of changing sign.
+/// Umax is the largest |U| reached so far. The back-force factor a is clipped at zero: a negative
+/// alpha0 - beta (Umax/U0)^q would turn the back force against the deformation, so once Umax
+/// passes U0 (alpha0/beta)^(1/q) the back force vanishes instead of changing sign.
 ///
 /// Integration (setTrialStrain, always from the committed state):
 /// - hysteretic part: backward Euler in sub-steps of at most `maxSubIncrement * U0` along the

@@ -101,7 +101,7 @@ class KluSolver final : public LinearSolver {
     double* ax = const_cast<double*>(c.valuePtr());
     if (pivotsKept_ && klu_refactor(ap, ai, ax, symbolic_, numeric_, &common_) &&
         common_.status == KLU_OK && samePivotsAsFresh()) {
-      ++refactorizations_;
+      ++keptPivots_;
     } else {
       if (numeric_ != nullptr) klu_free_numeric(&numeric_, &common_);
       numeric_ = klu_factor(ap, ai, ax, symbolic_, &common_);
@@ -184,7 +184,7 @@ class KluSolver final : public LinearSolver {
         }
         // KLU's bookkeeping after column k: an off-diagonal pivot hands its "diagonal" duty to
         // the row it displaced, if that row is not pivotal yet.
-        if (pivot != diagonal && rowState_[static_cast<std::size_t>(diagonal)] < 0) {
+        if (diagonalWaits) {
           const int kbar = flip(rowState_[static_cast<std::size_t>(pivot)]);
           diagonalRow_[static_cast<std::size_t>(kbar)] = diagonal;
           rowState_[static_cast<std::size_t>(diagonal)] = flip(kbar);

@@ -31,7 +31,7 @@ class LinearSolver {
   /// Number of numeric factorisations so far (for benchmarks).
   long factorizations() const noexcept { return factorizations_; }
   /// Of those, the ones that kept the previous pivots (the sparse LU only; see KluSolver).
-  long refactorizations() const noexcept { return refactorizations_; }
+  long keptPivots() const noexcept { return keptPivots_; }
 
   /// Creates a solver; `nonSymmetric` forces an LU even when an LDL^T was asked for.
   static std::unique_ptr<LinearSolver> create(SolverKind kind, bool nonSymmetric);
@@ -40,7 +40,7 @@ class LinearSolver {
 
  protected:
   long factorizations_ = 0;
-  long refactorizations_ = 0;
+  long keptPivots_ = 0;
 };
 
 }  // namespace dabs::analysis

@@ -17,16 +17,18 @@ void LinearSystem::patternChanged() {
   B = X = Eigen::VectorXd::Zero(model_.numEquations());
 }
 
-long LinearSystem::factorizations() const noexcept {
-  return (primary_ ? primary_->factorizations() : 0) + (general_ ? general_->factorizations() : 0) +
-         (definite_ ? definite_->factorizations() : 0);
+long LinearSystem::sumOverSolvers(long (LinearSolver::*count)() const noexcept) const noexcept {
+  long sum = 0;
+  for (const LinearSolver* solver : {primary_.get(), general_.get(), definite_.get()})
+    if (solver != nullptr) sum += (solver->*count)();
+  return sum;
 }
 
-long LinearSystem::keptPivots() const noexcept {
-  return (primary_ ? primary_->refactorizations() : 0) +
-         (general_ ? general_->refactorizations() : 0) +
-         (definite_ ? definite_->refactorizations() : 0);
+long LinearSystem::factorizations() const noexcept {
+  return sumOverSolvers(&LinearSolver::factorizations);
 }
+
+long LinearSystem::keptPivots() const noexcept { return sumOverSolvers(&LinearSolver::keptPivots); }
 
 Status LinearSystem::formTangent(const AssemblyCoefficients& c, bool reuse) {
   if (reuse && factored_ && c.sameMatrix(lastCoefficients_)) return Status::Ok;

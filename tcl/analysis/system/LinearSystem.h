@@ -34,11 +34,13 @@ class LinearSystem {
   Eigen::VectorXd X;  ///< last solution (integrators may overwrite it with the applied increment)
 
   long factorizations() const noexcept;
-  /// Of them, the sparse LU's that kept the previous pivots (LinearSolver::refactorizations).
+  /// Of them, the sparse LU's that kept the previous pivots (LinearSolver::keptPivots).
   long keptPivots() const noexcept;
   AnalysisModel& model() noexcept { return model_; }
 
  private:
+  /// A count of the solvers (factorisations, kept pivots), summed over the ones created.
+  long sumOverSolvers(long (LinearSolver::*count)() const noexcept) const noexcept;
   AnalysisModel& model_;
   SolverKind kind_;
   // A symmetric system is factorised with LDL^T while every active element is symmetric and with

@@ -10,7 +10,8 @@ set reportToolsDir [file dirname [file normalize [info script]]]
 
 proc fmt {x {digits 3}} { return [format "%.${digits}f" $x] }
 
-# Damage state of a bearing from its peak shear strain (limits of the issue: 250 % and 300 %).
+# Damage state of a bearing from its peak shear strain (the bearings' design and failure limits,
+# 250 % and 300 %: yoshidaBearing -limits, whose defaults they are).
 proc damageWord {strain} {
   if {$strain >= 3.0} { return "failed (>300%)" }
   if {$strain >= 2.5} { return "damaged (>250%)" }
