@@ -4,6 +4,7 @@
 #include "elements/beam/SectionPointView.h"
 
 #include <Eigen/LU>
+#include <cfloat>
 #include <cmath>
 
 namespace dabs::elements {
@@ -106,6 +107,7 @@ template <int Ndm>
 void ForceBeamColumn<Ndm>::startFromVirginState() {
   committed_ = trial_ = virgin_;
   trialIsCommitted_ = true;
+  updated_ = false;
   this->uTrial_.setZero();
   this->uCommitted_.setZero();
   this->transf_->update(this->uTrial_);
@@ -217,6 +219,7 @@ Status ForceBeamColumn<Ndm>::solve(const Basic& target) {
 
 template <int Ndm>
 void ForceBeamColumn<Ndm>::loadsChanged() {
+  updated_ = false;  // the state does not carry the new loads, even at the same deformations
   sp_.clear();
   if (this->loads_.empty()) return;
   for (const auto& p : this->points_)
@@ -234,8 +237,19 @@ template <int Ndm>
 Status ForceBeamColumn<Ndm>::update(const Kinematics& trial) {
   this->uTrial_ = trial.u;
   this->transf_->update(this->uTrial_);
-  const Status s = solve(this->transf_->basicDeformation());
-  if (!ok(s)) return s;
+  const Basic& v = this->transf_->basicDeformation();
+  // As OpenSees' ForceBeamColumn3d::update (and 2d): once updated, without member loads, basic
+  // deformations that moved by a norm of DBL_EPSILON at most since the state's (a transient
+  // step's predictor leaves the displacements as committed) keep the state: no section is
+  // evaluated, and only the end forces and the stiffness follow the transformation. Unlike
+  // OpenSees, loads removed since the last update make it iterate (their section forces are in
+  // the state).
+  const bool unchanged = updated_ && this->loads_.empty() && (v - trial_.v).norm() <= DBL_EPSILON;
+  if (!unchanged) {
+    const Status s = solve(v);
+    if (!ok(s)) return s;
+  }
+  updated_ = true;
   finish();
   return this->f_.allFinite() ? Status::Ok : Status::NonFinite;
 }

@@ -15,7 +15,9 @@ namespace dabs::elements {
 /// basic deformations (Neuenhofer & Filippou 1997, J. Struct. Eng. 123(7), the "iterative"
 /// scheme), starting from the last trial state; if maxIter iterations do not converge, it starts
 /// again from the committed state, then splits the increment into 4 and 16 sub-increments; if
-/// those fail too, update() returns Status::NotConverged (never loops forever). Member loads add
+/// those fail too, update() returns Status::NotConverged (never loops forever). As in OpenSees,
+/// an update whose basic deformations have not changed (a norm of DBL_EPSILON at most) keeps the
+/// state without evaluating a section, unless member loads act or changed. Member loads add
 /// their simply supported section forces: s(x) = b(x) q + sp(x), and their reactions to the end
 /// forces (OpenSees' ForceBeamColumn2d::computeSectionForces and computeReactions).
 template <int Ndm>
@@ -88,6 +90,8 @@ class ForceBeamColumn final : public SectionBeamColumn<Ndm> {
   State trial_, committed_;
   State virgin_;                  ///< the state at zero deformation, formed once by initialize()
   bool trialIsCommitted_ = true;  ///< trial_ equals committed_ (no update since commit/revert)
+  /// Updated since initialize(), revertToStart() or the last change of member loads.
+  bool updated_ = false;
 };
 
 using ForceBeamColumn2d = ForceBeamColumn<2>;

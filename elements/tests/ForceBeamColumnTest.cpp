@@ -176,6 +176,53 @@ TEST(ForceBeamColumnTest, RevertToStartAfterYieldingEqualsAFreshElement) {
             1e-12 * fresh.resistingForce().norm());
 }
 
+TEST(ForceBeamColumnTest, UnchangedBasicDeformationsKeepTheStateWithoutSectionPasses) {
+  // OpenSees' rule (ForceBeamColumn2d/3d::update): once updated and without member loads, an
+  // update whose basic deformations did not change evaluates no section; the end forces still
+  // follow the transformation. A rigid-body translation leaves the basic deformations as they
+  // are; anything else, or a member load, iterates.
+  const auto mat = plastic();
+  const auto sec = rect<2>(*mat);
+  const Eigen::VectorXd zero = Eigen::VectorXd::Zero(6);
+  Eigen::VectorXd yielded(6), translated(6), moved(6);
+  yielded << 0.0, 0.0, 0.03, 2e-4, 0.0, -0.02;
+  translated = yielded + (Eigen::VectorXd(6) << 0.01, -0.02, 0.0, 0.01, -0.02, 0.0).finished();
+  moved = yielded;
+  moved(5) += 1e-4;
+  ForceBeamColumn2d e(1, 1, 2, points<2>(*sec, 5), std::make_unique<LinearTransf2d>(1), 0.0);
+  e.initialize({Eigen::Vector3d::Zero(), Eigen::Vector3d(kL, 0, 0)});
+  ASSERT_TRUE(ok(e.update(TrialState{yielded, zero, zero}.kinematics())));
+  e.commitState();
+  const Eigen::VectorXd force = e.resistingForce();
+  const Eigen::MatrixXd tangent = e.tangentStiff();
+  const long evaluated = e.materialUpdates();
+  ASSERT_GT(evaluated, 0);
+  for (const Eigen::VectorXd& u : {yielded, translated}) {
+    ASSERT_TRUE(ok(e.update(TrialState{u, zero, zero}.kinematics())));
+    EXPECT_EQ(e.materialUpdates(), evaluated);
+    // The linear transformation's end forces do not depend on a translation: the same bits.
+    EXPECT_EQ(e.resistingForce(), force);
+    EXPECT_EQ(e.tangentStiff(), tangent);
+  }
+  ASSERT_TRUE(ok(e.update(TrialState{moved, zero, zero}.kinematics())));
+  EXPECT_GT(e.materialUpdates(), evaluated);
+  // A member load is applied at unchanged deformations: the sections must take it.
+  ASSERT_TRUE(ok(e.update(TrialState{yielded, zero, zero}.kinematics())));
+  const long beforeLoad = e.materialUpdates();
+  BeamLoad load;
+  load.w = Eigen::Vector3d(0.0, -50.0, 0.0);
+  e.addLoad(load, 1.0);
+  ASSERT_TRUE(ok(e.update(TrialState{yielded, zero, zero}.kinematics())));
+  EXPECT_GT(e.materialUpdates(), beforeLoad);
+  EXPECT_NE(e.resistingForce(), force);
+  // And so is its removal: back to the unloaded state's forces (to the local tolerance).
+  const long beforeRemoval = e.materialUpdates();
+  e.zeroLoad();
+  ASSERT_TRUE(ok(e.update(TrialState{yielded, zero, zero}.kinematics())));
+  EXPECT_GT(e.materialUpdates(), beforeRemoval);
+  EXPECT_LT((e.resistingForce() - force).norm(), 1e-9 * force.norm());
+}
+
 TEST(ForceBeamColumnTest, TangentMatchesFiniteDifferencesWhenYielding3d) {
   const auto mat = plastic();
   const auto sec = rect<3>(*mat);
