@@ -88,6 +88,11 @@ class Element {
   virtual bool rayleighByDefault() const { return true; }
   /// True when the element is linear, so its tangent never changes and needs no re-forming.
   virtual bool isLinear() const { return false; }
+  /// True when the trial state is the one its last update formed and is a function of the nodes'
+  /// displacements alone (not their rates, the time or a load changed since): an update at the
+  /// same displacements would leave it as it is, so the analysis may skip that update. It stays
+  /// true until an update at other displacements, a revert or a load change.
+  virtual bool keepsStateAtSameDisplacements() const { return false; }
   /// False while the element's force, stiffness, damping and mass are all zero (an open contact):
   /// the assembly then skips it, though its place in the sparse pattern stays reserved.
   virtual bool isActive() const { return true; }

@@ -36,6 +36,7 @@ class ElasticBeamColumn : public FixedSizeElement<2, FrameTraits<Ndm>::kDofPerNo
 
   std::string_view typeName() const override { return "elasticBeamColumn"; }
   bool isLinear() const override { return transf_->isLinear(); }
+  bool keepsStateAtSameDisplacements() const override { return stateCurrent_; }
   Eigen::Ref<const Eigen::MatrixXd> committedStiff() const override { return this->kc_; }
 
   bool acceptsBeamLoads() const override { return true; }

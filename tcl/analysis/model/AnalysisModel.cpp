@@ -12,6 +12,7 @@
 
 #include <algorithm>
 #include <atomic>
+#include <cstring>
 #include <limits>
 #include <map>
 #include <span>
@@ -66,6 +67,8 @@ void AnalysisModel::numberEquations() {
     nodeDofs.push_back(NodeDofs{&node, ndofTotal});
     ndofTotal += node.ndf();
   }
+  updatedDisp_.assign(static_cast<std::size_t>(ndofTotal), 0.0);
+  updatedDispKnown_ = false;
   const std::vector<int> order = DofNumberer(numberer_).order(domain_, nodeIndex_);
   DofMap map = ConstraintHandler(constraints_, alphaSP_, alphaMP_)
                    .apply(domain_, nodeDofs, nodeIndex_, order);
@@ -91,6 +94,7 @@ void AnalysisModel::buildScatter() {
   };
 
   elements_.clear();
+  updatedDispKnown_ = false;
   anyScalesSteps_ = false;
   std::vector<std::vector<std::pair<int, double>>> localEqs;
   std::vector<std::pair<int, double>> scratch;
@@ -416,9 +420,19 @@ Status AnalysisModel::updateElements() {
   // threads: elements share nothing, read only their nodes, and the assembly stays serial, so
   // results are bit-identical at any thread count.
   // Sleeping contact pairs (far apart) are skipped: checkSleepingPairs looks at them once a step.
+  // So is an element whose state depends on its displacements alone and is current (a linear
+  // elastic beam) when no node has moved since the last pass, as after a transient step's
+  // predictor, which moves only the rates: its nodes are not even gathered. On the benchmark's
+  // linear frame (1,330 beams) that pass was about a sixth of the run.
+  const bool unmoved = nodesUnmovedSinceLastUpdate();
   auto updateOne = [&](std::ptrdiff_t k) {
     ElementScatter& l = elements_[static_cast<std::size_t>(k)];
-    if (!l.sleeping) elementStatus_[static_cast<std::size_t>(k)] = l.update(time_, dt);
+    if (l.sleeping) return;
+    if (unmoved && !l.rates && l.element->keepsStateAtSameDisplacements()) {
+      elementStatus_[static_cast<std::size_t>(k)] = Status::Ok;
+      return;
+    }
+    elementStatus_[static_cast<std::size_t>(k)] = l.update(time_, dt);
   };
   if (threads_ > 1 && count > 1) {
     // The costs are measured (material updates per update), so the lists are formed again after
@@ -449,6 +463,23 @@ Status AnalysisModel::updateElements() {
   for (std::size_t k = 0; k < awake_; ++k)
     if (const Status s = elementStatus_[k]; !ok(s)) return s;
   return Status::Ok;
+}
+
+bool AnalysisModel::nodesUnmovedSinceLastUpdate() {
+  // Bit for bit (a zero of the other sign counts as a move), over every node, so a displacement
+  // set by any means (an imposed motion, a command between analyses) is seen.
+  bool unmoved = updatedDispKnown_;
+  for (const NodeScatter& nl : nodes_) {
+    const domain::Node& n = *nl.node;
+    const auto bytes = static_cast<std::size_t>(n.ndf()) * sizeof(double);
+    double* kept = updatedDisp_.data() + nl.firstDof;
+    if (std::memcmp(kept, n.disp.data(), bytes) != 0) {
+      unmoved = false;
+      std::memcpy(kept, n.disp.data(), bytes);
+    }
+  }
+  updatedDispKnown_ = true;
+  return unmoved;
 }
 
 void AnalysisModel::formUnits() {

@@ -194,8 +194,13 @@ class AnalysisModel {
   std::vector<double> costs_;           ///< work buffer of formUnits
   /// Forms units_ from the elements' material updates per update since the build.
   void formUnits();
-  bool anyScalesSteps_ = false;               // some element may ask Newton for a longer step
-  std::vector<Status> elementStatus_;         // per element, of the last updateElements
+  /// Whether every node's trial displacement is the one of the last updateElements, bit for bit
+  /// (no after a build); keeps the present ones for the next call.
+  bool nodesUnmovedSinceLastUpdate();
+  std::vector<double> updatedDisp_;    ///< every node dof's displacement at the last updateElements
+  bool updatedDispKnown_ = false;      ///< updatedDisp_ holds them (an update since the build)
+  bool anyScalesSteps_ = false;        // some element may ask Newton for a longer step
+  std::vector<Status> elementStatus_;  // per element, of the last updateElements
   std::map<int, Eigen::VectorXd> influence_;  // M r per excitation dof, formed once per build
   const Eigen::VectorXd& influence(int dof);
 };

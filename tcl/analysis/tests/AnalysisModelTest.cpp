@@ -505,5 +505,67 @@ TEST_F(AnalysisModelTest, MassMatrixMatchesDenseReference) {
               "mass");
 }
 
+/// A linear spring along x between two 1-dof nodes that counts its updates and says, as told,
+/// whether its state may be kept at the same displacements
+/// (Element::keepsStateAtSameDisplacements).
+class CountingSpring final : public elements::DynamicSizeElement {
+ public:
+  CountingSpring(int tag, int i, int j) : DynamicSizeElement(tag, {i, j}, 1, false) {
+    k0_ << kStiffness, -kStiffness, -kStiffness, kStiffness;
+    k_ = kc_ = k0_;
+  }
+  std::string_view typeName() const override { return "countingSpring"; }
+  void initialize(const elements::NodalCoordinates&) override {}
+  Status update(const elements::Kinematics& t) override {
+    ++updates;
+    f_ = k0_ * t.u;
+    return Status::Ok;
+  }
+  bool isLinear() const override { return true; }
+  bool keepsStateAtSameDisplacements() const override { return keeps; }
+  void commitState() override {}
+  void revertToLastCommit() override {}
+  void revertToStart() override {}
+
+  static constexpr double kStiffness = 2.0e3;
+  int updates = 0;
+  bool keeps = true;
+};
+
+// An element whose state depends on its displacements alone is not updated again while no node
+// moved (a transient predictor moves only the rates); any move of a node, by the model or not,
+// or an element that cannot keep its state, updates it.
+TEST(AnalysisModelSkipTest, ElementKeepingItsStateIsNotUpdatedWhileNoNodeMoves) {
+  domain::Domain d;
+  for (int tag : {1, 2}) d.addNode(tag, 1, 1, Eigen::Vector3d(tag, 0, 0));
+  d.addFix(1, 0);
+  d.addElement(std::make_unique<CountingSpring>(1, 1, 2));
+  auto& spring = static_cast<CountingSpring&>(*d.findElement(1));
+  AnalysisModel am(d, ConstraintKind::Transformation, NumbererKind::RCM);
+  am.build();
+  am.applyLoad(0.0);  // no pattern: P = 0
+  ASSERT_EQ(am.numEquations(), 1);
+  const VectorXd u = VectorXd::Constant(1, 0.004), rates = VectorXd::Constant(1, 0.3);
+  auto pass = [&](const VectorXd& U, const VectorXd& V) {
+    am.setResponse(U, V, V);
+    ASSERT_TRUE(ok(am.updateElements()));
+  };
+  pass(u, rates);
+  EXPECT_EQ(spring.updates, 1);
+  pass(u, 2.0 * rates);  // the rates alone moved
+  EXPECT_EQ(spring.updates, 1);
+  VectorXd B;
+  am.formResidual({1.0, 0.0, 0.0, StiffnessKind::Current, false}, B);
+  EXPECT_DOUBLE_EQ(B(0), -CountingSpring::kStiffness * 0.004);  // the kept force
+  pass(2.0 * u, rates);
+  EXPECT_EQ(spring.updates, 2);
+  d.findNode(2)->disp(0) = 0.001;  // moved outside the model
+  ASSERT_TRUE(ok(am.updateElements()));
+  EXPECT_EQ(spring.updates, 3);
+  spring.keeps = false;
+  ASSERT_TRUE(ok(am.updateElements()));
+  EXPECT_EQ(spring.updates, 4);
+}
+
 }  // namespace
 }  // namespace dabs::analysis
