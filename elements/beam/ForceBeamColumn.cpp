@@ -247,7 +247,12 @@ Status ForceBeamColumn<Ndm>::update(const Kinematics& trial) {
   const bool unchanged = updated_ && this->loads_.empty() && (v - trial_.v).norm() <= DBL_EPSILON;
   if (!unchanged) {
     const Status s = solve(v);
-    if (!ok(s)) return s;
+    if (!ok(s)) {
+      // The sections hold the failed iteration's deformations while trial_ is the committed
+      // state: the next update must set them again, even at the committed deformations.
+      updated_ = false;
+      return s;
+    }
   }
   updated_ = true;
   finish();

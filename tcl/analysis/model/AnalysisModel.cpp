@@ -460,8 +460,14 @@ Status AnalysisModel::updateElements() {
   elementUpdates_ += count;
   ++updateCalls_;
   // The awake links' statuses (a sleeper's entry is never written).
-  for (std::size_t k = 0; k < awake_; ++k)
-    if (const Status s = elementStatus_[k]; !ok(s)) return s;
+  for (std::size_t k = 0; k < awake_; ++k) {
+    if (const Status s = elementStatus_[k]; !ok(s)) {
+      // A failed pass may have left elements not updated to these displacements (a non-finite
+      // one is not even passed on): the next pass must not take them as applied.
+      updatedDispKnown_ = false;
+      return s;
+    }
+  }
   return Status::Ok;
 }
 

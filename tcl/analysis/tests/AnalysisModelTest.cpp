@@ -24,6 +24,7 @@
 #include <gtest/gtest.h>
 
 #include <Eigen/Dense>
+#include <limits>
 #include <map>
 #include <memory>
 #include <random>
@@ -565,6 +566,14 @@ TEST(AnalysisModelSkipTest, ElementKeepingItsStateIsNotUpdatedWhileNoNodeMoves) 
   spring.keeps = false;
   ASSERT_TRUE(ok(am.updateElements()));
   EXPECT_EQ(spring.updates, 4);
+  // Non-finite displacements fail the pass before the element sees them; the same ones again
+  // must fail again, not be taken as the kept state's.
+  spring.keeps = true;
+  const VectorXd nan = VectorXd::Constant(1, std::numeric_limits<double>::quiet_NaN());
+  for (int attempt = 0; attempt < 2; ++attempt) {
+    am.setResponse(nan, rates, rates);
+    EXPECT_FALSE(ok(am.updateElements())) << "attempt " << attempt;
+  }
 }
 
 }  // namespace
