@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <random>
 
 namespace dabs::materials {
 namespace {
@@ -53,6 +54,55 @@ TEST(Concrete01Test, UnloadsToKarsanJirsaStrainFromThePeak) {
   EXPECT_NEAR(m.getTangent(), slope, kTol * 3e4);
   ASSERT_TRUE(ok(m.setTrialStrain(0.9 * epsEnd)));  // beyond the end strain: open crack
   EXPECT_EQ(m.getStress(), 0.0);
+}
+
+// A fiber section keeps only a fiber's trial stress and tangent and commits with commitTrial: the
+// committed history must be the one computeTrial forms, field for field, on a walk through every
+// branch (envelope, descent, crushing, unloading, reloading, open crack), with several trials
+// before each commit as in Newton iterations, with steps that do not move, and with single steps
+// from an open crack past the most compressive strain.
+TEST(Concrete01Test, CommitFromTrialResponseEqualsTheTrialState) {
+  const Concrete01 m(1, Concrete01::Params{kFpc, kEps0, kFpcu, kEpsU});
+  Concrete01::State committed = m.virginState();
+  std::mt19937 random(11);
+  std::uniform_real_distribution<double> jitter(-2e-4, 2e-4);
+  struct Excursion {
+    double peak;
+    int steps;
+  };
+  const Excursion walk[] = {{-0.001, 12}, {0.0004, 12}, {-0.0025, 12}, {-0.0005, 12}, {-0.004, 12},
+                            {0.001, 12},  {-0.0045, 1}, {0.0005, 4},   {-0.008, 12},  {-0.002, 12},
+                            {-0.009, 1},  {0.001, 4},   {-0.012, 1}};
+  double strain = 0.0;
+  int commits = 0, newMinima = 0;
+  for (const auto& [peak, steps] : walk) {
+    for (int k = 1; k <= steps; ++k) {
+      const double target = strain + (peak - strain) * k / steps;
+      Concrete01::State trial;
+      for (int iteration = 0; iteration < 3; ++iteration)
+        ASSERT_TRUE(
+            ok(m.computeTrial(committed, trial, target + jitter(random) / (1 << (2 * iteration)))));
+      const double last = k % 4 == 0 ? committed.strain : target;  // some steps do not move
+      ASSERT_TRUE(ok(m.computeTrial(committed, trial, last)));
+      Concrete01::State viaResponse = committed;
+      m.commitTrial(viaResponse, last, trial.stress, trial.tangent);
+      EXPECT_EQ(viaResponse.strain, trial.strain);
+      EXPECT_EQ(viaResponse.stress, trial.stress);
+      EXPECT_EQ(viaResponse.tangent, trial.tangent);
+      EXPECT_EQ(viaResponse.minStrain, trial.minStrain);
+      EXPECT_EQ(viaResponse.endStrain, trial.endStrain);
+      EXPECT_EQ(viaResponse.unloadSlope, trial.unloadSlope);
+      newMinima += trial.minStrain < committed.minStrain;
+      committed = trial;
+      ++commits;
+    }
+    strain = peak;
+  }
+  // The walk reached the residual strength and moved the unloading line many times (otherwise
+  // branches went untested).
+  EXPECT_LT(committed.minStrain, kEpsU);
+  EXPECT_GT(newMinima, 20);
+  EXPECT_EQ(commits, 8 * 12 + 3 * 1 + 2 * 4);
 }
 
 }  // namespace
