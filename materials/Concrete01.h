@@ -53,6 +53,8 @@ class Concrete01 final : public StatefulUniaxial<Concrete01, Concrete01State> {
   /// The virgin state.
   State virginState() const { return initialState(); }
   double getInitialTangent() const override { return Ec0_; }
+  /// computeTrial returns the committed state at its strain (within DBL_EPSILON).
+  bool keepsStateAtSameStrain() const override { return true; }
   /// Parameters with negative (compressive) signs.
   const Params& params() const noexcept { return params_; }
 

@@ -64,6 +64,8 @@ class Concrete02 final : public StatefulUniaxial<Concrete02, Concrete02State> {
   /// The virgin state.
   State virginState() const { return initialState(); }
   double getInitialTangent() const override { return Ec0_; }
+  /// computeTrial returns the committed state at its strain (within DBL_EPSILON).
+  bool keepsStateAtSameStrain() const override { return true; }
   const Params& params() const noexcept { return params_; }
 
   /// Compression envelope at `eps`: stress and tangent.

@@ -39,6 +39,8 @@ class Elastic final : public StatefulUniaxial<Elastic, ElasticState> {
   double getStrainRate() const override { return trial_.strainRate; }
   double getDampTangent() const override { return params_.eta; }
   double getInitialTangent() const override;
+  /// No history; the stress depends on the strain rate when eta is not zero.
+  bool keepsStateAtSameStrain() const override { return params_.eta == 0.0; }
   const Params& params() const noexcept { return params_; }
 
  private:

@@ -41,6 +41,8 @@ class Steel01 final : public StatefulUniaxial<Steel01, Steel01State> {
 
   [[nodiscard]] Status setTrialStrain(double strain, double strainRate = 0.0) override;
   double getInitialTangent() const override { return params_.E0; }
+  /// setTrialStrain returns the committed state at its strain (within DBL_EPSILON).
+  bool keepsStateAtSameStrain() const override { return true; }
   const Params& params() const noexcept { return params_; }
 
  private:

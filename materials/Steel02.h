@@ -74,6 +74,8 @@ class Steel02 final : public StatefulUniaxial<Steel02, Steel02State> {
   /// The virgin state.
   State virginState() const { return initialState(); }
   double getInitialTangent() const override { return params_.E; }
+  /// At the committed strain no branch reverses and the curve is the committed one's.
+  bool keepsStateAtSameStrain() const override { return true; }
   const Params& params() const noexcept { return params_; }
 
  private:

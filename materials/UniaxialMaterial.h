@@ -50,6 +50,13 @@ class UniaxialMaterial {
   /// Independent copy with the same parameters and the same committed and trial state.
   [[nodiscard]] virtual std::unique_ptr<UniaxialMaterial> clone() const = 0;
 
+  /// True when an update at the strain of a state an update formed (the trial, or the committed
+  /// state after a commit) leaves that state as it is, bit for bit: an element made of such
+  /// materials whose nodes have not moved may then skip its update (a transient step's
+  /// predictor). False unless the law is shown to; the material contract test checks every law
+  /// that says so.
+  virtual bool keepsStateAtSameStrain() const { return false; }
+
   /// Extra named responses for recorders (e.g. "damage"); none by default.
   virtual std::optional<double> response(std::string_view /*name*/) const { return std::nullopt; }
 

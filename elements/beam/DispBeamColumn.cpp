@@ -18,6 +18,10 @@ void DispBeamColumn<Ndm>::initialize(const NodalCoordinates& x) {
   this->uCommitted_.setZero();
   (void)formState(false);
   this->kc_ = this->k_;
+  keepsState_ = this->transf_->isLinear();
+  for (const auto& p : this->points_)
+    keepsState_ = keepsState_ && p.section->keepsStateAtSameDeformation();
+  stateCurrent_ = false;
 }
 
 template <int Ndm>
@@ -66,9 +70,12 @@ Status DispBeamColumn<Ndm>::formStateWith(bool initial) {
 template <int Ndm>
 Status DispBeamColumn<Ndm>::update(const Kinematics& trial) {
   this->uTrial_ = trial.u;
+  stateCurrent_ = false;
   const Status s = formState(false);
   if (!ok(s)) return s;
-  return this->f_.allFinite() ? Status::Ok : Status::NonFinite;
+  if (!this->f_.allFinite()) return Status::NonFinite;
+  stateCurrent_ = true;
+  return Status::Ok;
 }
 
 template <int Ndm>
@@ -85,6 +92,7 @@ void DispBeamColumn<Ndm>::revertToLastCommit() {
   for (auto& p : this->points_) p.section->revertToLastCommit();
   this->uTrial_ = this->uCommitted_;
   (void)formState(false);
+  stateCurrent_ = false;
 }
 
 template <int Ndm>
@@ -95,6 +103,7 @@ void DispBeamColumn<Ndm>::revertToStart() {
   this->uCommitted_.setZero();
   (void)formState(false);
   this->kc_ = this->k_;
+  stateCurrent_ = false;
 }
 
 template class DispBeamColumn<2>;

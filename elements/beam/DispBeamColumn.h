@@ -25,6 +25,12 @@ class DispBeamColumn final : public SectionBeamColumn<Ndm> {
   void commitState() override;
   void revertToLastCommit() override;
   void revertToStart() override;
+  /// After an update, under a linear transformation and with sections that keep their state at
+  /// the same deformations (fiber sections of Concrete01/02, Steel01/02, elastic materials): the
+  /// state is then a function of the displacements, and an update at the same ones (a transient
+  /// step's predictor, which moves only the rates) would leave it as it is. OpenSees updates it.
+  bool keepsStateAtSameDisplacements() const override { return stateCurrent_ && keepsState_; }
+  void loadsChanged() override { stateCurrent_ = false; }
 
  private:
   Status formState(bool initial);
@@ -33,6 +39,8 @@ class DispBeamColumn final : public SectionBeamColumn<Ndm> {
   Status formStateWith(bool initial);
   std::vector<SectionBasicMatrix<Super::kBasic>> bmat_;
   BasicMatrix kb_ = BasicMatrix::Zero();
+  bool keepsState_ = false;    ///< linear transformation, sections that keep their state
+  bool stateCurrent_ = false;  ///< the state is the one the last update formed
 };
 
 using DispBeamColumn2d = DispBeamColumn<2>;

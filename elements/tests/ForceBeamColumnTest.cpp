@@ -16,6 +16,7 @@
 #include "elements/transform/PDeltaTransf.h"
 #include "materials/Elastic.h"
 #include "materials/ElasticPP.h"
+#include "materials/Steel01.h"
 #include "materials/section/FiberSection.h"
 #include "materials/section/geometry/QuadPatch.h"
 
@@ -221,6 +222,64 @@ TEST(ForceBeamColumnTest, UnchangedBasicDeformationsKeepTheStateWithoutSectionPa
   ASSERT_TRUE(ok(e.update(TrialState{yielded, zero, zero}.kinematics())));
   EXPECT_GT(e.materialUpdates(), beforeRemoval);
   EXPECT_LT((e.resistingForce() - force).norm(), 1e-9 * force.norm());
+}
+
+TEST(DispBeamColumnTest, KeepsItsStateAtTheSameDisplacementsOnlyWhenItsLawsDo) {
+  // The analysis skips an element that says it keeps its state while no node moved (a transient
+  // step's predictor). A displacement-based beam says so after an update, under a linear
+  // transformation and with laws that keep their state at the same strain (Steel01), and an
+  // update at the same displacements then gives the same force and tangent, bit for bit, before
+  // and after a commit. A revert or a member load ends it; ElasticPP (not shown to keep its state)
+  // or a P-Delta transformation never says so.
+  materials::Steel01::Params sp;
+  sp.Fy = kFy;
+  sp.E0 = kE;
+  sp.b = 0.02;
+  const materials::Steel01 steel(1, sp);
+  const auto sec = rect<2>(steel);
+  const Eigen::VectorXd zero = Eigen::VectorXd::Zero(6);
+  Eigen::VectorXd yielded(6), moved(6);
+  yielded << 0.0, 0.0, 0.03, 2e-4, 0.01, -0.02;
+  moved = yielded;
+  moved(5) += 1e-4;
+  const NodalCoordinates x{Eigen::Vector3d::Zero(), Eigen::Vector3d(kL, 0, 0)};
+  DispBeamColumn2d e(1, 1, 2, points<2>(*sec, 3), std::make_unique<LinearTransf2d>(1), 0.0);
+  e.initialize(x);
+  EXPECT_FALSE(e.keepsStateAtSameDisplacements());
+  ASSERT_TRUE(ok(e.update(TrialState{yielded, zero, zero}.kinematics())));
+  EXPECT_TRUE(e.keepsStateAtSameDisplacements());
+  const Eigen::VectorXd force = e.resistingForce();
+  const Eigen::MatrixXd tangent = e.tangentStiff();
+  for (const bool commit : {false, true}) {
+    if (commit) e.commitState();
+    EXPECT_TRUE(e.keepsStateAtSameDisplacements());
+    const long before = e.materialUpdates();
+    ASSERT_TRUE(ok(e.update(TrialState{yielded, zero, zero}.kinematics())));
+    EXPECT_GT(e.materialUpdates(), before);  // evaluated, not skipped, here
+    EXPECT_EQ(e.resistingForce(), force);
+    EXPECT_EQ(e.tangentStiff(), tangent);
+  }
+  ASSERT_TRUE(ok(e.update(TrialState{moved, zero, zero}.kinematics())));
+  EXPECT_TRUE(e.keepsStateAtSameDisplacements());
+  e.revertToLastCommit();
+  EXPECT_FALSE(e.keepsStateAtSameDisplacements());
+  ASSERT_TRUE(ok(e.update(TrialState{yielded, zero, zero}.kinematics())));
+  BeamLoad load;
+  load.w = Eigen::Vector3d(0.0, -50.0, 0.0);
+  e.addLoad(load, 1.0);
+  EXPECT_FALSE(e.keepsStateAtSameDisplacements());
+
+  const auto pp = plastic();
+  const auto ppSection = rect<2>(*pp);
+  DispBeamColumn2d withElasticPP(2, 1, 2, points<2>(*ppSection, 3),
+                                 std::make_unique<LinearTransf2d>(1), 0.0);
+  DispBeamColumn2d withPDelta(3, 1, 2, points<2>(*sec, 3), std::make_unique<PDeltaTransf2d>(1),
+                              0.0);
+  for (DispBeamColumn2d* other : {&withElasticPP, &withPDelta}) {
+    other->initialize(x);
+    ASSERT_TRUE(ok(other->update(TrialState{yielded, zero, zero}.kinematics())));
+    EXPECT_FALSE(other->keepsStateAtSameDisplacements());
+  }
 }
 
 TEST(ForceBeamColumnTest, TangentMatchesFiniteDifferencesWhenYielding3d) {

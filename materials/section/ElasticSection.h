@@ -49,6 +49,7 @@ class ElasticSection final : public SectionForceDeformation {
   std::unique_ptr<SectionForceDeformation> clone() const override {
     return std::make_unique<ElasticSection>(*this);
   }
+  bool keepsStateAtSameDeformation() const override { return true; }
   /// {"force"}, {"deformation"}.
   std::optional<Eigen::VectorXd> response(std::span<const std::string> args) const override;
 

@@ -108,6 +108,11 @@ class TypedFiberGroup final : public FiberGroup {
   std::unique_ptr<FiberGroup> clone() const override {
     return std::make_unique<TypedFiberGroup>(*this);
   }
+  bool keepsStateAtSameStrains() const override {
+    for (std::size_t i = 0; i < mats_.size(); ++i)
+      if (!object(static_cast<int>(i)).keepsStateAtSameStrain()) return false;
+    return true;
+  }
 
  private:
   const UniaxialMaterial& object(int i) const {
@@ -196,6 +201,7 @@ class StateFiberGroup final : public FiberGroup {
   std::unique_ptr<FiberGroup> clone() const override {
     return std::make_unique<StateFiberGroup>(*this);
   }
+  bool keepsStateAtSameStrains() const override { return law_.keepsStateAtSameStrain(); }
 
  private:
   struct Response {

@@ -73,6 +73,9 @@ class FiberGroup {
   virtual void revertToLastCommit() = 0;
   virtual void revertToStart() = 0;
   [[nodiscard]] virtual std::unique_ptr<FiberGroup> clone() const = 0;
+  /// True when every fiber's material keeps its state at the same strain
+  /// (UniaxialMaterial::keepsStateAtSameStrain).
+  virtual bool keepsStateAtSameStrains() const = 0;
 
   /// A group for `prototype`: for Concrete01/02 and Steel02 one parameter set and arrays of fiber
   /// states (the update is the material's computeTrial, and a fiber costs its two states, not a

@@ -56,6 +56,12 @@ class FiberSection final : public SectionForceDeformation {
   std::unique_ptr<SectionForceDeformation> clone() const override {
     return std::make_unique<FiberSection>(*this);
   }
+  /// The fiber strains are a function of the deformations, the torsion is elastic.
+  bool keepsStateAtSameDeformation() const override {
+    for (const auto& g : groups_)
+      if (!g->keepsStateAtSameStrains()) return false;
+    return true;
+  }
   /// {"force"}, {"deformation"}, {"fiber", y, z, ?matTag?, "stressStrain"} (nearest fiber,
   /// optionally among those of material matTag: [stress, strain]).
   std::optional<Eigen::VectorXd> response(std::span<const std::string> args) const override;

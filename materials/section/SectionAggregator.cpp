@@ -105,4 +105,11 @@ std::optional<Eigen::VectorXd> SectionAggregator::response(
   return base_ ? base_->response(args) : std::nullopt;
 }
 
+bool SectionAggregator::keepsStateAtSameDeformation() const {
+  if (base_ && !base_->keepsStateAtSameDeformation()) return false;
+  for (const auto& m : mats_)
+    if (!m->keepsStateAtSameStrain()) return false;
+  return true;
+}
+
 }  // namespace dabs::materials::section

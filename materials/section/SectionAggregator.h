@@ -39,6 +39,7 @@ class SectionAggregator final : public SectionForceDeformation {
   std::unique_ptr<SectionForceDeformation> clone() const override {
     return std::make_unique<SectionAggregator>(*this);
   }
+  bool keepsStateAtSameDeformation() const override;
   /// {"force"}, {"deformation"}; other names go to the base section.
   std::optional<Eigen::VectorXd> response(std::span<const std::string> args) const override;
 

@@ -42,6 +42,11 @@ class SectionForceDeformation {
 
   [[nodiscard]] virtual std::unique_ptr<SectionForceDeformation> clone() const = 0;
 
+  /// True when an update at the deformations of a state an update formed (the trial, or the
+  /// committed state after a commit) leaves that state as it is, bit for bit (its materials keep
+  /// theirs at the same strain: UniaxialMaterial::keepsStateAtSameStrain). False by default.
+  virtual bool keepsStateAtSameDeformation() const { return false; }
+
   /// Material updates (setTrialStrain calls of the section's materials) since construction: a
   /// work count for benchmarks, not part of the state.
   virtual long materialUpdates() const noexcept { return 0; }

@@ -259,9 +259,34 @@ TYPED_TEST_P(MaterialContract, DampTangentMatchesCentralDifference) {
   EXPECT_GE(static_cast<double>(checked), kMinCheckedFraction * static_cast<double>(path.size()));
 }
 
+// A law that says it keeps its state at the same strain (keepsStateAtSameStrain: an element of
+// such materials whose nodes have not moved skips its update) must give, at every point of the
+// path, the response its update formed again when updated at that strain: before the commit and
+// after it, bit for bit.
+TYPED_TEST_P(MaterialContract, SameStrainKeepsTheStateWhenTheLawSaysSo) {
+  auto m = TypeParam::make();
+  if (!m->keepsStateAtSameStrain()) GTEST_SKIP() << "the law does not say it keeps its state";
+  const auto path = TypeParam::path();
+  for (std::size_t k = 0; k < path.size(); ++k) {
+    const double rate = pathRate(path, k);
+    ASSERT_TRUE(ok(m->setTrialStrain(path[k], rate)));
+    const Response formed = responseOf(*m);
+    for (const bool committed : {false, true}) {
+      if (committed) m->commitState();
+      ASSERT_TRUE(ok(m->setTrialStrain(path[k], rate)));
+      const Response again = responseOf(*m);
+      EXPECT_EQ(again.strain, formed.strain) << "point " << k << (committed ? " committed" : "");
+      EXPECT_EQ(again.stress, formed.stress) << "point " << k << (committed ? " committed" : "");
+      EXPECT_EQ(again.tangent, formed.tangent) << "point " << k << (committed ? " committed" : "");
+    }
+    m->commitState();
+  }
+}
+
 REGISTER_TYPED_TEST_SUITE_P(MaterialContract, TrialIsIdempotent, CommitAndRevertRoundTrip,
                             RevertToStartReplaysTheSameHistory, CloneIsIndependent,
                             GettersReportTheLastTrial, TangentMatchesCentralDifference,
-                            DampTangentMatchesCentralDifference);
+                            DampTangentMatchesCentralDifference,
+                            SameStrainKeepsTheStateWhenTheLawSaysSo);
 
 }  // namespace dabs::materials::testing

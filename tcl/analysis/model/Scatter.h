@@ -75,6 +75,27 @@ struct ElementScatter {
     work = Eigen::MatrixXd::Zero(n, n);
   }
 
+  /// Gathers the nodes' trial velocities and accelerations alone (for an element whose update is
+  /// skipped while the residual still reads its rates); NonFinite when one is not finite.
+  [[nodiscard]] Status gatherRates() {
+    double* pv = v.data();
+    double* pa = a.data();
+    double check = 0.0;
+    for (const domain::Node* n : nodes) {
+      const int ndf = n->ndf();
+      const double* nv = n->vel.data();
+      const double* na = n->accel.data();
+      for (int d = 0; d < ndf; ++d) {
+        pv[d] = nv[d];
+        pa[d] = na[d];
+        check += nv[d] * 0.0;
+      }
+      pv += ndf;
+      pa += ndf;
+    }
+    return check == 0.0 ? Status::Ok : Status::NonFinite;
+  }
+
   /// Gathers the nodes' trial response and updates the element at time t (step dt).
   [[nodiscard]] Status update(double t, double dt) {
     double* pu = u.data();

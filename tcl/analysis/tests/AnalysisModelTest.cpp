@@ -508,10 +508,12 @@ TEST_F(AnalysisModelTest, MassMatrixMatchesDenseReference) {
 
 /// A linear spring along x between two 1-dof nodes that counts its updates and says, as told,
 /// whether its state may be kept at the same displacements
-/// (Element::keepsStateAtSameDisplacements).
+/// (Element::keepsStateAtSameDisplacements). `nonlinear`: it says it is not linear (so the
+/// analysis gathers its rates) and takes Rayleigh damping.
 class CountingSpring final : public elements::DynamicSizeElement {
  public:
-  CountingSpring(int tag, int i, int j) : DynamicSizeElement(tag, {i, j}, 1, false) {
+  CountingSpring(int tag, int i, int j, bool nonlinear = false)
+      : DynamicSizeElement(tag, {i, j}, 1, nonlinear), nonlinear_(nonlinear) {
     k0_ << kStiffness, -kStiffness, -kStiffness, kStiffness;
     k_ = kc_ = k0_;
   }
@@ -522,7 +524,7 @@ class CountingSpring final : public elements::DynamicSizeElement {
     f_ = k0_ * t.u;
     return Status::Ok;
   }
-  bool isLinear() const override { return true; }
+  bool isLinear() const override { return !nonlinear_; }
   bool keepsStateAtSameDisplacements() const override { return keeps; }
   void commitState() override {}
   void revertToLastCommit() override {}
@@ -531,6 +533,9 @@ class CountingSpring final : public elements::DynamicSizeElement {
   static constexpr double kStiffness = 2.0e3;
   int updates = 0;
   bool keeps = true;
+
+ private:
+  bool nonlinear_ = false;
 };
 
 // An element whose state depends on its displacements alone is not updated again while no node
@@ -574,6 +579,37 @@ TEST(AnalysisModelSkipTest, ElementKeepingItsStateIsNotUpdatedWhileNoNodeMoves) 
     am.setResponse(nan, rates, rates);
     EXPECT_FALSE(ok(am.updateElements())) << "attempt " << attempt;
   }
+}
+
+// A nonlinear element kept at the same displacements still has its rates gathered: the residual's
+// Rayleigh term with the current tangent, betaK K v, reads them (the beam of a transient
+// predictor, whose velocities moved).
+TEST(AnalysisModelSkipTest, KeptNonlinearElementStillGathersItsRates) {
+  domain::Domain d;
+  for (int tag : {1, 2}) d.addNode(tag, 1, 1, Eigen::Vector3d(tag, 0, 0));
+  d.addFix(1, 0);
+  d.addElement(std::make_unique<CountingSpring>(1, 1, 2, true));
+  auto& spring = static_cast<CountingSpring&>(*d.findElement(1));
+  domain::RayleighFactors rayleigh;
+  rayleigh.betaK = 0.01;
+  d.setRayleigh(rayleigh);
+  AnalysisModel am(d, ConstraintKind::Transformation, NumbererKind::RCM);
+  am.build();
+  am.applyLoad(0.0);
+  ASSERT_EQ(am.numEquations(), 1);
+  const VectorXd u = VectorXd::Constant(1, 0.004), rates = VectorXd::Constant(1, 0.3);
+  am.setResponse(u, rates, rates);
+  ASSERT_TRUE(ok(am.updateElements()));
+  am.setResponse(u, 2.0 * rates, rates);
+  ASSERT_TRUE(ok(am.updateElements()));
+  EXPECT_EQ(spring.updates, 1);
+  VectorXd B;
+  am.formResidual({1.0, 0.0, 0.0, StiffnessKind::Current, true}, B);
+  const double k = CountingSpring::kStiffness;
+  EXPECT_DOUBLE_EQ(B(0), -k * 0.004 - 0.01 * k * 0.6);
+  // A non-finite velocity fails the pass as an update would.
+  am.setResponse(u, VectorXd::Constant(1, std::numeric_limits<double>::infinity()), rates);
+  EXPECT_FALSE(ok(am.updateElements()));
 }
 
 }  // namespace
