@@ -147,8 +147,9 @@ void AnalysisModel::buildScatter() {
             link.mat.push_back(MatEntry{j * n + i, -1, ca * cb});  // value fixed below
             link.rowCol.emplace_back(ea, eb);
           }
-    link.rates = !e->isLinear() || imposedMotion_ || e->mayTurnInactive() ||
-                 !e->dampingTangent().isZero(0.0);
+    link.linear = e->isLinear();
+    link.rates =
+        !link.linear || imposedMotion_ || e->mayTurnInactive() || !e->dampingTangent().isZero(0.0);
     link.switching = e->switchesStatus();
     link.scalesSteps = e->scalesNewtonSteps();
     anyScalesSteps_ = anyScalesSteps_ || link.scalesSteps;

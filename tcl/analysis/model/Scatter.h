@@ -54,6 +54,10 @@ struct ElementScatter {
   /// tangent has a force that depends on its displacements alone, and the residual needs its
   /// rates only when the elements form their own inertia and damping forces.
   bool rates = true;
+  /// Element::isLinear, read once at the build: the tangent's assembly passes over the linear
+  /// elements (most of a long viaduct's) without touching their objects, which a pass over the
+  /// fiber states has evicted from the cache.
+  bool linear = false;
   mutable Eigen::VectorXd force;  ///< residual work buffer
   Eigen::MatrixXd work;           ///< tangent work buffer
   /// A nonlinear element's constant matrix terms (mass, initial-stiffness Rayleigh damping) are

@@ -80,7 +80,7 @@ const TangentAssembler::ConstantPart& TangentAssembler::constantPart(
   // The kept parts hold the nonlinear elements' constant terms of the activity they were formed
   // with; a new part takes the present one, so the others go when it differs.
   for (const ElementScatter& l : elements)
-    if (!l.element->isLinear() && l.element->isActive() != l.constantActive) {
+    if (!l.linear && l.element->isActive() != l.constantActive) {
       kept_.clear();
       break;
     }
@@ -97,7 +97,7 @@ const TangentAssembler::ConstantPart& TangentAssembler::constantPart(
   values.assign(nnz, 0.0);
   for (ElementScatter& l : elements) {
     const bool active = l.element->isActive();
-    if (l.element->isLinear()) {
+    if (l.linear) {
       if (active) addElement(values.data(), l, c);
     } else {
       l.constantActive = active;
@@ -135,7 +135,7 @@ void TangentAssembler::form(const AssemblyCoefficients& c, double* values, std::
         Eigen::Map<const Eigen::VectorXd>(part.values.data(), static_cast<Eigen::Index>(nnz));
     bool activityChanged = false;
     for (ElementScatter& l : elements) {
-      if (l.element->isLinear()) continue;
+      if (l.linear) continue;
       const bool active = l.element->isActive();
       if (active != l.constantActive) {
         activityChanged = true;
