@@ -52,6 +52,8 @@ ZeroLength::ZeroLength(int tag, Params params,
       params_(std::move(params)),
       materials_(std::move(mats)) {
   t_ = Eigen::MatrixXd::Zero(static_cast<Eigen::Index>(materials_.size()), numDof());
+  keepsState_ = std::all_of(materials_.begin(), materials_.end(),
+                            [](const auto& m) { return m->keepsStateAtSameStrain(); });
 }
 
 void ZeroLength::initialize(const NodalCoordinates& /*x*/) {
@@ -132,12 +134,14 @@ void ZeroLength::assemble() {
 }
 
 Status ZeroLength::update(const Kinematics& trial) {
+  stateCurrent_ = false;
   for (std::size_t k = 0; k < materials_.size(); ++k) {
     const auto row = t_.row(static_cast<Eigen::Index>(k));
     const Status s = materials_[k]->setTrialStrain(row.dot(trial.u), row.dot(trial.v));
     if (!ok(s)) return s;
   }
   assemble();
+  stateCurrent_ = true;
   return Status::Ok;
 }
 
@@ -151,12 +155,14 @@ void ZeroLength::commitState() {
 void ZeroLength::revertToLastCommit() {
   for (auto& m : materials_) m->revertToLastCommit();
   assemble();
+  stateCurrent_ = false;
 }
 
 void ZeroLength::revertToStart() {
   for (auto& m : materials_) m->revertToStart();
   assemble();
   kc_ = k_;
+  stateCurrent_ = false;
 }
 
 std::optional<Eigen::VectorXd> ZeroLength::response(std::span<const std::string> args) const {

@@ -40,6 +40,11 @@ class ZeroLength final : public DynamicSizeElement {
   void revertToStart() override;
   std::optional<Eigen::VectorXd> response(std::span<const std::string> args) const override;
   std::span<const int> matrixSupport() const override { return touchedMatrix_; }
+  /// After an update, when every material keeps its state at the same strain
+  /// (UniaxialMaterial::keepsStateAtSameStrain: Steel01/02, Concrete01/02, Elastic without
+  /// damping): the deformations are then a fixed projection of the displacements, and an update
+  /// at the same ones (a transient step's predictor) would leave the state as it is.
+  bool keepsStateAtSameDisplacements() const override { return stateCurrent_ && keepsState_; }
 
  private:
   void assemble();
@@ -50,6 +55,8 @@ class ZeroLength final : public DynamicSizeElement {
   /// The entries of f_ and (column-major) of k_ and c_ that some material's row reaches: the
   /// only ones an update rewrites; the rest stay zero from initialize().
   std::vector<int> touchedForce_, touchedMatrix_;
+  bool keepsState_ = false;    ///< every material keeps its state at the same strain
+  bool stateCurrent_ = false;  ///< the state is the one the last update formed
 };
 
 }  // namespace dabs::elements

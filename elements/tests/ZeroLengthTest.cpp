@@ -122,6 +122,42 @@ TEST(ZeroLengthTest, RevertRestoresCommittedMaterialState) {
   EXPECT_NEAR(e.resistingForce().norm(), 0.0, kExact);
 }
 
+// The analysis skips an element that says it keeps its state while no node moved (a transient
+// step's predictor). A zeroLength says so after an update when all its laws keep their state at
+// the same strain (Steel02, Elastic without damping), and an update at the same displacements
+// then gives the same force and tangent, bit for bit, before and after a commit; a revert ends
+// it; a dashpot (Elastic with eta) never says so.
+TEST(ZeroLengthTest, KeepsItsStateAtTheSameDisplacementsOnlyWhenItsLawsDo) {
+  std::vector<std::unique_ptr<materials::UniaxialMaterial>> mats;
+  mats.push_back(steel());
+  mats.push_back(elastic(30.0));
+  auto ep = make3d({1, 2}, std::move(mats), {0.6, 0.8, 0.0}, {0.0, 0.0, 1.0});
+  ZeroLength& e = *ep;
+  testing::TrialState s{Eigen::VectorXd::Zero(12), Eigen::VectorXd::Zero(12),
+                        Eigen::VectorXd::Zero(12)};
+  s.u << 0.001, -0.002, 0.0, 0.0, 0.0, 0.0, 0.05, 0.02, 0.0, 0.0, 0.0, 0.0;  // yields
+  EXPECT_FALSE(e.keepsStateAtSameDisplacements());
+  ASSERT_TRUE(ok(e.update(s.kinematics())));
+  EXPECT_TRUE(e.keepsStateAtSameDisplacements());
+  const Eigen::VectorXd force = e.resistingForce();
+  const Eigen::MatrixXd tangent = e.tangentStiff();
+  for (const bool commit : {false, true}) {
+    if (commit) e.commitState();
+    EXPECT_TRUE(e.keepsStateAtSameDisplacements());
+    ASSERT_TRUE(ok(e.update(s.kinematics())));
+    EXPECT_EQ(e.resistingForce(), force);
+    EXPECT_EQ(e.tangentStiff(), tangent);
+  }
+  e.revertToLastCommit();
+  EXPECT_FALSE(e.keepsStateAtSameDisplacements());
+
+  std::vector<std::unique_ptr<materials::UniaxialMaterial>> damped;
+  damped.push_back(elastic(10.0, 3.0));
+  auto dashpot = make3d({2}, std::move(damped));
+  ASSERT_TRUE(ok(dashpot->update(s.kinematics())));
+  EXPECT_FALSE(dashpot->keepsStateAtSameDisplacements());
+}
+
 TEST(ZeroLengthTest, BadInputIsRejected) {
   ZeroLength::Params p;
   p.nodes = {1, 2};
