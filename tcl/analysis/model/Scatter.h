@@ -79,11 +79,13 @@ struct ElementScatter {
     work = Eigen::MatrixXd::Zero(n, n);
   }
 
-  /// Gathers the nodes' trial velocities and accelerations alone (for an element whose update is
-  /// skipped while the residual still reads its rates); NonFinite when one is not finite.
+  /// Gathers the nodes' trial velocities and accelerations (alone: for an element whose update
+  /// is skipped while the residual still reads its rates); NonFinite when one is not finite.
   [[nodiscard]] Status gatherRates() {
     double* pv = v.data();
     double* pa = a.data();
+    // x * 0 is 0 for a finite x and NaN for an infinite or NaN one, so `check` is 0 exactly when
+    // every value is finite (one pass, no branch per value).
     double check = 0.0;
     for (const domain::Node* n : nodes) {
       const int ndf = n->ndf();
@@ -100,14 +102,11 @@ struct ElementScatter {
     return check == 0.0 ? Status::Ok : Status::NonFinite;
   }
 
-  /// Gathers the nodes' trial response and updates the element at time t (step dt).
+  /// Gathers the nodes' trial response (the rates only when `rates`) and updates the element at
+  /// time t (step dt).
   [[nodiscard]] Status update(double t, double dt) {
     double* pu = u.data();
-    double* pv = v.data();
-    double* pa = a.data();
-    // x * 0 is 0 for a finite x and NaN for an infinite or NaN one, so `check` is 0 exactly when
-    // every displacement and velocity is finite (one pass, no branch per value).
-    double check = 0.0;
+    double check = 0.0;  // as in gatherRates
     for (const domain::Node* n : nodes) {
       const int ndf = n->ndf();
       const double* nu = n->disp.data();
@@ -116,18 +115,8 @@ struct ElementScatter {
         check += nu[d] * 0.0;
       }
       pu += ndf;
-      if (rates) {
-        const double* nv = n->vel.data();
-        const double* na = n->accel.data();
-        for (int d = 0; d < ndf; ++d) {
-          pv[d] = nv[d];
-          pa[d] = na[d];
-          check += nv[d] * 0.0;
-        }
-        pv += ndf;
-        pa += ndf;
-      }
     }
+    if (rates && !ok(gatherRates())) return Status::NonFinite;
     if (check != 0.0) return Status::NonFinite;
     return element->update(elements::Kinematics{u, v, a, t, dt});
   }
