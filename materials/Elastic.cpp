@@ -30,7 +30,10 @@ Status Elastic::setTrialStrain(double strain, double strainRate) {
   const double eNeg = params_.compressionModulus();
   trial_.strain = strain;
   trial_.strainRate = strainRate;
-  trial_.stress = (strain >= 0.0 ? params_.E : eNeg) * strain + params_.eta * strainRate;
+  const double elastic = (strain >= 0.0 ? params_.E : eNeg) * strain;
+  // Without a dashpot the rate adds nothing, not even the sign of a zero stress (0 * a negative
+  // rate is -0): the stress is then a function of the strain alone (keepsStateAtSameStrain).
+  trial_.stress = params_.eta != 0.0 ? elastic + params_.eta * strainRate : elastic;
   // At eps = 0 the stiffer side is reported, as OpenSees does.
   trial_.tangent = strain > 0.0 ? params_.E : (strain < 0.0 ? eNeg : getInitialTangent());
   return std::isfinite(trial_.stress) ? Status::Ok : Status::NonFinite;

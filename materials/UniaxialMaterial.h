@@ -53,8 +53,9 @@ class UniaxialMaterial {
   /// True when an update at the strain of a state an update formed (the trial, or the committed
   /// state after a commit) leaves that state as it is, bit for bit: an element made of such
   /// materials whose nodes have not moved may then skip its update (a transient step's
-  /// predictor). False unless the law is shown to; the material contract test checks every law
-  /// that says so.
+  /// predictor, which moves the rates: the law's response must not depend on them, and the rate
+  /// it records is then the last update's). False unless the law is shown to; the material
+  /// contract test checks every law that says so.
   virtual bool keepsStateAtSameStrain() const { return false; }
 
   /// Extra named responses for recorders (e.g. "damage"); none by default.

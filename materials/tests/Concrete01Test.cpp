@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cfloat>
 #include <cmath>
 #include <random>
 
@@ -74,7 +75,7 @@ TEST(Concrete01Test, CommitFromTrialResponseEqualsTheTrialState) {
                             {0.001, 12},  {-0.0045, 1}, {0.0005, 4},   {-0.008, 12},  {-0.002, 12},
                             {-0.009, 1},  {0.001, 4},   {-0.012, 1}};
   double strain = 0.0;
-  int commits = 0, newMinima = 0;
+  int newMinima = 0;
   for (const auto& [peak, steps] : walk) {
     for (int k = 1; k <= steps; ++k) {
       const double target = strain + (peak - strain) * k / steps;
@@ -82,7 +83,9 @@ TEST(Concrete01Test, CommitFromTrialResponseEqualsTheTrialState) {
       for (int iteration = 0; iteration < 3; ++iteration)
         ASSERT_TRUE(
             ok(m.computeTrial(committed, trial, target + jitter(random) / (1 << (2 * iteration)))));
-      const double last = k % 4 == 0 ? committed.strain : target;  // some steps do not move
+      // some steps do not move, or by less than DBL_EPSILON (the committed state stands)
+      const double last =
+          k % 4 == 0 ? committed.strain + (k % 8 == 0 ? 0.25 * DBL_EPSILON : 0.0) : target;
       ASSERT_TRUE(ok(m.computeTrial(committed, trial, last)));
       Concrete01::State viaResponse = committed;
       m.commitTrial(viaResponse, last, trial.stress, trial.tangent);
@@ -94,7 +97,6 @@ TEST(Concrete01Test, CommitFromTrialResponseEqualsTheTrialState) {
       EXPECT_EQ(viaResponse.unloadSlope, trial.unloadSlope);
       newMinima += trial.minStrain < committed.minStrain;
       committed = trial;
-      ++commits;
     }
     strain = peak;
   }
@@ -102,7 +104,6 @@ TEST(Concrete01Test, CommitFromTrialResponseEqualsTheTrialState) {
   // branches went untested).
   EXPECT_LT(committed.minStrain, kEpsU);
   EXPECT_GT(newMinima, 20);
-  EXPECT_EQ(commits, 8 * 12 + 3 * 1 + 2 * 4);
 }
 
 }  // namespace

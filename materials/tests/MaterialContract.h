@@ -260,25 +260,30 @@ TYPED_TEST_P(MaterialContract, DampTangentMatchesCentralDifference) {
 }
 
 // A law that says it keeps its state at the same strain (keepsStateAtSameStrain: an element of
-// such materials whose nodes have not moved skips its update) must give, at every point of the
-// path, the response its update formed again when updated at that strain: before the commit and
-// after it, bit for bit.
+// such materials whose nodes have not moved skips its update, as in a transient predictor, which
+// moves the rates) must give, at every point of the path, the response its update formed again
+// when updated at that strain with another rate, after the commit, bit for bit; and the history
+// must be the same too: the path continued from there gives, point for point, the responses of
+// the same law walked without the extra updates.
 TYPED_TEST_P(MaterialContract, SameStrainKeepsTheStateWhenTheLawSaysSo) {
   auto m = TypeParam::make();
   if (!m->keepsStateAtSameStrain()) GTEST_SKIP() << "the law does not say it keeps its state";
+  auto reference = TypeParam::make();
   const auto path = TypeParam::path();
   for (std::size_t k = 0; k < path.size(); ++k) {
     const double rate = pathRate(path, k);
+    ASSERT_TRUE(ok(reference->setTrialStrain(path[k], rate)));
+    reference->commitState();
     ASSERT_TRUE(ok(m->setTrialStrain(path[k], rate)));
     const Response formed = responseOf(*m);
-    for (const bool committed : {false, true}) {
-      if (committed) m->commitState();
-      ASSERT_TRUE(ok(m->setTrialStrain(path[k], rate)));
-      const Response again = responseOf(*m);
-      EXPECT_EQ(again.strain, formed.strain) << "point " << k << (committed ? " committed" : "");
-      EXPECT_EQ(again.stress, formed.stress) << "point " << k << (committed ? " committed" : "");
-      EXPECT_EQ(again.tangent, formed.tangent) << "point " << k << (committed ? " committed" : "");
-    }
+    EXPECT_EQ(formed.stress, responseOf(*reference).stress) << "point " << k;
+    EXPECT_EQ(formed.tangent, responseOf(*reference).tangent) << "point " << k;
+    m->commitState();
+    ASSERT_TRUE(ok(m->setTrialStrain(path[k], -2.0 * rate - 1.0)));
+    const Response again = responseOf(*m);
+    EXPECT_EQ(again.strain, formed.strain) << "point " << k;
+    EXPECT_EQ(again.stress, formed.stress) << "point " << k;
+    EXPECT_EQ(again.tangent, formed.tangent) << "point " << k;
     m->commitState();
   }
 }

@@ -27,6 +27,16 @@ struct ElasticCase {
   static constexpr bool kRateDependent = true;
 };
 
+// Without a dashpot: rate-independent, and so kept at the same strain.
+struct ElasticNoDampingCase {
+  static std::unique_ptr<UniaxialMaterial> make() {
+    return std::make_unique<Elastic>(1, Elastic::Params{2.0e5, 0.0, 1.0e5});
+  }
+  static double strainScale() { return 0.002; }
+  static std::vector<double> path() { return cyclicPath(strainScale()); }
+  static constexpr bool kRateDependent = false;
+};
+
 struct ElasticPPCase {
   static std::unique_ptr<UniaxialMaterial> make() {
     return std::make_unique<ElasticPP>(2, ElasticPP::Params{2.0e5, 0.002, -0.001, 0.0005});
@@ -144,7 +154,7 @@ struct SeriesCase {
 };
 
 using AllMaterials =
-    ::testing::Types<ElasticCase, ElasticPPCase, ElasticPPGapTensionCase,
+    ::testing::Types<ElasticCase, ElasticNoDampingCase, ElasticPPCase, ElasticPPGapTensionCase,
                      ElasticPPGapCompressionDamageCase, Steel01Case, Steel02Case, Concrete01Case,
                      Concrete02Case, ViscousCase, ENTCase, ParallelCase, SeriesCase>;
 INSTANTIATE_TYPED_TEST_SUITE_P(Uniaxial, MaterialContract, AllMaterials);
