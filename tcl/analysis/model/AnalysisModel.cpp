@@ -422,11 +422,11 @@ Status AnalysisModel::updateElements() {
   // results are bit-identical at any thread count.
   // Sleeping contact pairs (far apart) are skipped: checkSleepingPairs looks at them once a step.
   // So is an element whose state depends on its displacements alone and is current (a linear
-  // elastic beam, a displacement-based beam whose laws keep their state at the same strain) when no
-  // node has moved since the last pass, as after a transient step's predictor, which moves only the
-  // rates: only the rates are gathered, for an element the residual reads them of (Rayleigh
-  // terms with the current tangent). On the benchmark's linear frame (1,330 beams) that pass was
-  // about a sixth of the run.
+  // elastic beam; a displacement-based beam or zeroLength whose laws keep their state at the same
+  // strain) when no node has moved since the last pass, as after a transient step's predictor,
+  // which moves only the rates: only the rates are gathered, for an element the residual reads
+  // them of (Rayleigh terms with the current tangent). On the benchmark's linear frame (1,330
+  // beams) that pass was about a sixth of the run.
   const bool unmoved = nodesUnmovedSinceLastUpdate();
   auto updateOne = [&](std::ptrdiff_t k) {
     ElementScatter& l = elements_[static_cast<std::size_t>(k)];
