@@ -27,13 +27,11 @@ struct ElasticCase {
   static constexpr bool kRateDependent = true;
 };
 
-// Without a dashpot: rate-independent, and so kept at the same strain.
-struct ElasticNoDampingCase {
+// Without a dashpot: rate-independent, and so kept at the same strain (ElasticCase's path).
+struct ElasticNoDampingCase : ElasticCase {
   static std::unique_ptr<UniaxialMaterial> make() {
     return std::make_unique<Elastic>(1, Elastic::Params{2.0e5, 0.0, 1.0e5});
   }
-  static double strainScale() { return 0.002; }
-  static std::vector<double> path() { return cyclicPath(strainScale()); }
   static constexpr bool kRateDependent = false;
 };
 
