@@ -88,6 +88,12 @@ class Element {
   virtual bool rayleighByDefault() const { return true; }
   /// True when the element is linear, so its tangent never changes and needs no re-forming.
   virtual bool isLinear() const { return false; }
+  /// True when the force is initialStiff() times the displacements and the whole state a function
+  /// of the displacements alone (no member load, no dashpot, no history): the analysis may then
+  /// form the force together with every such element's as one product with their assembled
+  /// stiffness, and leave the element itself to be updated only when its state is read
+  /// (Domain::setStateDeferred).
+  virtual bool forceIsInitialStiffnessTimesDisplacements() const { return false; }
   /// True when the trial state is the one its last update formed and is a function of the nodes'
   /// displacements alone (not their rates, the time or a load changed since): an update at the
   /// same displacements would leave it as it is, so the analysis may skip that update. It stays

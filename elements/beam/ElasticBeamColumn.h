@@ -37,6 +37,11 @@ class ElasticBeamColumn : public FixedSizeElement<2, FrameTraits<Ndm>::kDofPerNo
   std::string_view typeName() const override { return "elasticBeamColumn"; }
   bool isLinear() const override { return transf_->isLinear(); }
   bool keepsStateAtSameDisplacements() const override { return stateCurrent_; }
+  /// Under a linear transformation f = B^T kb B u, and the initial stiffness is B^T kb B: the
+  /// same matrix (rigid offsets included), so the force is k0 u but for member loads.
+  bool forceIsInitialStiffnessTimesDisplacements() const override {
+    return constantTangent_ && loads_.empty();
+  }
   Eigen::Ref<const Eigen::MatrixXd> committedStiff() const override { return this->kc_; }
 
   bool acceptsBeamLoads() const override { return true; }

@@ -192,6 +192,9 @@ void eleLoadCmd(Runtime& rt, ArgReader& a) {
              ") takes no member loads");
   }
   for (int tag : tags) p.memberLoads.push_back({tag, load});
+  // A loaded element's force is no longer its stiffness times its displacements: the analysis
+  // forms it through the element again.
+  rt.domain.touch();
 }
 
 void spCmd(Runtime& rt, ArgReader& a) {

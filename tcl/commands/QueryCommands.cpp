@@ -104,9 +104,9 @@ void eleForceCmd(Runtime& rt, ArgReader& a) {
   const int tag = a.integer("eleTag");
   const auto dof = a.optionalInteger("dof");
   a.finish();
-  const elements::Element* e = rt.domain.findElement(tag);
-  if (e == nullptr) a.failArgument("eleTag", "element " + std::to_string(tag) + " does not exist");
-  const Eigen::VectorXd f = e->resistingForce();
+  if (rt.domain.findElement(tag) == nullptr)
+    a.failArgument("eleTag", "element " + std::to_string(tag) + " does not exist");
+  const Eigen::VectorXd f = rt.domain.elementForce(tag);
   if (!dof) {
     setResult(rt, f);
     return;

@@ -82,6 +82,7 @@ void Domain::removeElement(int tag) {
   }
   elements_.erase(tag);
   elementRayleigh_.erase(tag);
+  deferred_.erase(tag);
   touch();
 }
 
@@ -246,6 +247,9 @@ void Domain::refreshLists() {
   elementList_.clear();
   for (auto& [tag, e] : elements_) elementList_.push_back(e.get());
   stateKept_.assign(elementList_.size(), 0);
+  deferredList_.clear();
+  for (const elements::Element* e : elementList_)
+    deferredList_.push_back(deferred_.count(e->tag()) != 0 ? 1 : 0);
   listVersion_ = modelVersion_;
 }
 
@@ -253,7 +257,7 @@ void Domain::commit() {
   refreshLists();
   for (Node* n : nodeList_) n->commitState();
   for (std::size_t i = 0; i < elementList_.size(); ++i)
-    if (!stateKept_[i]) elementList_[i]->commitState();
+    if (!stateKept_[i] && !deferredList_[i]) elementList_[i]->commitState();
   committedTime_ = time_;
   record();
 }
@@ -264,6 +268,53 @@ void Domain::setStateKept(std::size_t index, bool kept) {
 }
 
 void Domain::clearStateKept() { std::fill(stateKept_.begin(), stateKept_.end(), 0); }
+
+void Domain::setStateDeferred(int elementTag, bool deferred) {
+  const auto it = elements_.find(elementTag);
+  if (it == elements_.end())
+    throw InputError("element", std::to_string(elementTag) + " does not exist");
+  elements::Element& e = *it->second;
+  if (deferred == stateDeferred(elementTag)) return;
+  if (deferred) {
+    if (!e.forceIsInitialStiffnessTimesDisplacements())
+      throw InputError("element", std::to_string(elementTag) +
+                                      " has a state of its own; it cannot be formed when read");
+    deferred_.insert(elementTag);
+  } else {
+    deferred_.erase(elementTag);
+    // Commit skipped it: its committed state is formed at the nodes' committed response, then
+    // its trial state at their trial one.
+    updateAt(e, true);
+    e.commitState();
+    updateAt(e, false);
+  }
+  if (listVersion_ == modelVersion_) {
+    const auto pos = std::find(elementList_.begin(), elementList_.end(), &e);
+    deferredList_[static_cast<std::size_t>(pos - elementList_.begin())] = deferred ? 1 : 0;
+  }
+}
+
+void Domain::updateAt(elements::Element& e, bool committed) const {
+  const Eigen::VectorXd u = gatherElement(e, committed ? &Node::committedDisp : &Node::disp);
+  const Eigen::VectorXd v = gatherElement(e, committed ? &Node::committedVel : &Node::vel);
+  const Eigen::VectorXd a = gatherElement(e, committed ? &Node::committedAccel : &Node::accel);
+  const double t = committed ? committedTime_ : time_;
+  // A non-finite response gives a non-finite state, which is what the reader should see.
+  static_cast<void>(e.update(elements::Kinematics{u, v, a, t, t - committedTime_}));
+}
+
+void Domain::formDeferredState(int elementTag) const {
+  if (deferred_.count(elementTag) == 0) return;
+  updateAt(*elements_.at(elementTag), false);
+}
+
+Eigen::VectorXd Domain::elementForce(int elementTag) const {
+  const elements::Element* e = findElement(elementTag);
+  if (e == nullptr)
+    throw InputError("eleTag", "element " + std::to_string(elementTag) + " does not exist");
+  formDeferredState(elementTag);
+  return e->resistingForce();
+}
 
 std::vector<int> Domain::recordedElements() const {
   std::vector<int> tags = recorders_.elementsRead();
@@ -322,7 +373,7 @@ void Domain::revertToLastCommit() {
   refreshLists();
   for (Node* n : nodeList_) n->revertToLastCommit();
   for (std::size_t i = 0; i < elementList_.size(); ++i)
-    if (!stateKept_[i]) elementList_[i]->revertToLastCommit();
+    if (!stateKept_[i] && !deferredList_[i]) elementList_[i]->revertToLastCommit();
   time_ = committedTime_;
 }
 
@@ -391,12 +442,14 @@ std::optional<Eigen::VectorXd> Domain::elementResponse(int elementTag,
   if (args.size() == 1 && (args[0] == "dampingForces" || args[0] == "dampingForce" ||
                            args[0] == "rayleighForces" || args[0] == "RayleighForces"))
     return elementRayleighForce(elementTag);
+  formDeferredState(elementTag);
   return e->response(args);
 }
 
 void Domain::calculateNodalReactions(bool includeInertia) {
   for (auto& [tag, n] : nodes_) n.reaction = -nodalLoad(tag);
   for (const auto& [etag, e] : elements_) {
+    formDeferredState(etag);
     Eigen::VectorXd f = e->resistingForce();
     if (includeInertia)
       f += e->mass() * gatherElement(*e, &Node::accel) + elementRayleighForce(etag);
@@ -429,6 +482,7 @@ void Domain::clear() {
   eigenvalues.clear();
   time_ = committedTime_ = 0.0;
   elementLoadsApplied_ = false;
+  deferred_.clear();
   touch();
 }
 

@@ -133,6 +133,17 @@ class Domain {
   void setStateKept(std::size_t index, bool kept);
   /// Clears every mark of setStateKept.
   void clearStateKept();
+  /// Marks whether the analysis forms the element's force itself, from its nodes' displacements
+  /// (Element::forceIsInitialStiffnessTimesDisplacements), and leaves the element un-updated.
+  /// While marked, commit and revert skip the element and every read here (elementResponse,
+  /// elementForce, reactions) first updates it at its nodes' trial response; unmarking brings
+  /// its committed state and then its trial state up to date. Throws InputError("element") when
+  /// the element does not exist or its state is not a function of its displacements.
+  void setStateDeferred(int elementTag, bool deferred);
+  bool stateDeferred(int elementTag) const { return deferred_.count(elementTag) != 0; }
+  /// The element's force (Element::resistingForce) at the current trial state; throws
+  /// InputError("eleTag") when the element does not exist.
+  Eigen::VectorXd elementForce(int elementTag) const;
   /// Increases whenever nodes, elements, constraints or patterns change; the analysis re-numbers
   /// its equations when this differs from what it saw.
   long modelVersion() const noexcept { return modelVersion_; }
@@ -190,7 +201,14 @@ class Domain {
   void refreshLists();
   std::vector<Node*> nodeList_;
   std::vector<elements::Element*> elementList_;
-  std::vector<char> stateKept_;  ///< per element of elementList_ (setStateKept)
+  std::vector<char> stateKept_;     ///< per element of elementList_ (setStateKept)
+  std::set<int> deferred_;          ///< tags of the elements setStateDeferred marks
+  std::vector<char> deferredList_;  ///< per element of elementList_: in deferred_
+  /// An element whose state is deferred: updated at its nodes' trial response (a cache filled
+  /// on reading, so the const readers may call it).
+  void formDeferredState(int elementTag) const;
+  /// Updates `e` at its nodes' (committed or trial) response.
+  void updateAt(elements::Element& e, bool committed) const;
   long listVersion_ = -1;
   /// Member loads at time t on the elements (see setTime).
   void applyElementLoads(double t);

@@ -189,9 +189,8 @@ void ViewerRecorder::record(const Domain& domain) {
       disp_.push_back(n != nullptr && c < std::min(n->ndm(), n->ndf()) ? n->disp(c) : 0.0);
   }
   auto scalar = [&](int tag, const char* name) {
-    const elements::Element* e = domain.findElement(tag);
     const std::string words[1] = {name};
-    const auto r = e != nullptr ? e->response(words) : std::nullopt;
+    const auto r = domain.elementResponse(tag, words);
     return r && r->size() > 0 ? (*r)(0) : 0.0;
   };
   for (int tag : contacts_) {

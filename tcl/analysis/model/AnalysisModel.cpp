@@ -15,6 +15,7 @@
 #include <cstring>
 #include <limits>
 #include <map>
+#include <set>
 #include <span>
 #include <string>
 
@@ -99,6 +100,18 @@ void AnalysisModel::buildScatter() {
   std::vector<std::vector<std::pair<int, double>>> localEqs;
   std::vector<std::pair<int, double>> scratch;
   long sleeping = 0;
+  // What keeps an element's force from being its stiffness times its equations' values: a
+  // member load on it, or a support value a pattern drives (imposed motion, sp) among its dofs.
+  std::set<int> loaded;
+  for (const auto& [ptag, p] : domain_.patterns())
+    for (const domain::ElementLoad& l : p->elementLoads()) loaded.insert(l.element);
+  std::vector<char> drivenSlot(slots_.size(), 0);
+  for (const int slot : patternSlots_) drivenSlot[static_cast<std::size_t>(slot)] = 1;
+  auto drivesSupport = [&](int g) {
+    for (const Term& t : dofTerms_[static_cast<std::size_t>(g)])
+      if (t.index < 0 && drivenSlot[static_cast<std::size_t>(-t.index - 1)]) return true;
+    return false;
+  };
   for (const auto& [etag, e] : domain_.elements()) {
     ElementScatter link;
     link.element = e.get();
@@ -121,6 +134,13 @@ void AnalysisModel::buildScatter() {
         if (!link.sleeping)  // a sleeper adds nothing to the residual
           for (auto [eq, c] : scratch) link.vec.push_back(VecEntry{local, eq, c});
       }
+    }
+    link.deferred = !link.sleeping && link.far == nullptr && !imposedMotion_ &&
+                    e->forceIsInitialStiffnessTimesDisplacements() && loaded.count(etag) == 0;
+    for (int nt : e->nodeTags()) {
+      const NodeScatter& nl = nodes_[static_cast<std::size_t>(nodeIndex_.at(nt))];
+      for (int d = 0; d < nl.node->ndf() && link.deferred; ++d)
+        link.deferred = !drivesSupport(nl.firstDof + d);
     }
     link.direct.assign(static_cast<std::size_t>(n), -1);
     for (const VecEntry& v : link.vec) {
@@ -207,6 +227,11 @@ void AnalysisModel::buildScatter() {
   std::stable_partition(elements_.begin(), elements_.end(),
                         [](const ElementScatter& l) { return !l.sleeping; });
   awake_ = elements_.size() - static_cast<std::size_t>(sleeping);
+  deferredCount_ = 0;
+  for (const ElementScatter& l : elements_) {
+    domain_.setStateDeferred(l.element->tag(), l.deferred);
+    if (l.deferred) ++deferredCount_;
+  }
   buildSleepers();
   for (NodeScatter& nl : nodes_) fix(nl.mass, nl.rowCol);
   tangent_.reset();
@@ -430,7 +455,7 @@ Status AnalysisModel::updateElements() {
   const bool unmoved = nodesUnmovedSinceLastUpdate();
   auto updateOne = [&](std::ptrdiff_t k) {
     ElementScatter& l = elements_[static_cast<std::size_t>(k)];
-    if (l.sleeping) return;
+    if (l.sleeping || l.deferred) return;
     if (unmoved && l.element->keepsStateAtSameDisplacements()) {
       elementStatus_[static_cast<std::size_t>(k)] = l.rates ? l.gatherRates() : Status::Ok;
       return;
@@ -460,7 +485,7 @@ Status AnalysisModel::updateElements() {
   } else {
     for (std::ptrdiff_t k = 0; k < count; ++k) updateOne(k);
   }
-  elementUpdates_ += count;
+  elementUpdates_ += count - deferredCount_;
   ++updateCalls_;
   // The awake links' statuses (a sleeper's entry is never written).
   for (std::size_t k = 0; k < awake_; ++k) {
@@ -498,9 +523,14 @@ void AnalysisModel::formUnits() {
   constexpr double kUpdateInFibers = 25.0;
   const double calls = static_cast<double>(std::max(updateCalls_, 1L));
   costs_.assign(awake_, kUpdateInFibers);
-  for (std::size_t k = 0; k < awake_; ++k)  // materialsAtBuild_: one count per awake element
+  for (std::size_t k = 0; k < awake_; ++k) {  // materialsAtBuild_: one count per awake element
+    if (elements_[k].deferred) {              // never updated by the analysis
+      costs_[k] = 0.0;
+      continue;
+    }
     costs_[k] +=
         static_cast<double>(elements_[k].element->materialUpdates() - materialsAtBuild_[k]) / calls;
+  }
   // One list per thread of the team OpenMP will give (OMP_THREAD_LIMIT may cap it below the
   // count asked for; every list runs whatever the team, but only a list per thread balances).
   int team = threads_;

@@ -180,6 +180,7 @@ class AnalysisModel {
   TangentAssembler tangent_;
   SleepingPairs sleepers_;
   long elementUpdates_ = 0;
+  std::ptrdiff_t deferredCount_ = 0;  ///< awake links whose elements the passes leave (deferred)
   // elements_ holds the awake links first (in the domain's order) and the sleepers after them, so
   // the loops of the iterations stop at awake_ and never touch a sleeper.
   std::size_t awake_ = 0;

@@ -13,11 +13,16 @@ void ResidualAssembler::build(std::span<ElementScatter> elements,
                               std::span<const NodeScatter> nodes,
                               const Eigen::SparseMatrix<double>& pattern) {
   const auto nnz = static_cast<std::size_t>(pattern.nonZeros());
-  std::vector<double> mass(nnz, 0.0), damping(nnz, 0.0);
+  std::vector<double> mass(nnz, 0.0), damping(nnz, 0.0), stiffness(nnz, 0.0);
   rayleighLeft_.assign(elements.size(), 0);
+  anyDeferred_ = false;
   for (std::size_t k = 0; k < elements.size(); ++k) {
     ElementScatter& l = elements[k];
     const elements::Element& e = *l.element;
+    if (l.deferred) {
+      l.addMatrix(stiffness.data(), e.initialStiff());
+      anyDeferred_ = true;
+    }
     const Eigen::MatrixXd m = e.mass();
     l.ownDynamics = e.mayTurnInactive() && (l.rayleighOn || !m.isZero(0.0));
     if (l.ownDynamics) continue;
@@ -40,13 +45,15 @@ void ResidualAssembler::build(std::span<ElementScatter> elements,
       damping[static_cast<std::size_t>(me.value)] += nl.alphaM * v;
     }
   }
-  massGlobal_ = pattern;
-  dampingGlobal_ = pattern;
-  std::copy(mass.begin(), mass.end(), massGlobal_.valuePtr());
-  std::copy(damping.begin(), damping.end(), dampingGlobal_.valuePtr());
-  massGlobal_.prune(0.0);
-  dampingGlobal_.prune(0.0);
-  eqVel_ = eqAcc_ = Eigen::VectorXd::Zero(pattern.rows());
+  auto onPattern = [&pattern](Eigen::SparseMatrix<double>& m, const std::vector<double>& values) {
+    m = pattern;
+    std::copy(values.begin(), values.end(), m.valuePtr());
+    m.prune(0.0);
+  };
+  onPattern(massGlobal_, mass);
+  onPattern(dampingGlobal_, damping);
+  onPattern(deferredStiffness_, stiffness);
+  eqDisp_ = eqVel_ = eqAcc_ = Eigen::VectorXd::Zero(pattern.rows());
 }
 
 void ResidualAssembler::form(const AssemblyCoefficients& c, const ResidualInputs& in,
@@ -58,7 +65,7 @@ void ResidualAssembler::form(const AssemblyCoefficients& c, const ResidualInputs
     // The element objects and scatter arrays a few links ahead: a pass over a large model's fiber
     // states has evicted them since the update, and each is a separate allocation the hardware
     // prefetcher cannot guess.
-    if (k + kPrefetchAhead < count) {
+    if (k + kPrefetchAhead < count && !in.elements[k + kPrefetchAhead].deferred) {
       const ElementScatter& ahead = in.elements[k + kPrefetchAhead];
       __builtin_prefetch(ahead.element);
       __builtin_prefetch(reinterpret_cast<const char*>(ahead.element) + 64);
@@ -66,6 +73,7 @@ void ResidualAssembler::form(const AssemblyCoefficients& c, const ResidualInputs
       __builtin_prefetch(ahead.direct.data());
     }
     const ElementScatter& l = in.elements[k];
+    if (l.deferred) continue;  // in the product below
     const elements::Element& e = *l.element;
     if (!e.isActive()) continue;
     if (global && !l.ownDynamics) {
@@ -98,15 +106,20 @@ void ResidualAssembler::form(const AssemblyCoefficients& c, const ResidualInputs
       l.subtractForce(e.resistingForce(), B);
     }
   }
-  if (c.dynamic) {
-    if (global || hasModalDamping()) {
-      const auto neq = static_cast<int>(in.eqDof.size());
-      for (int eq = 0; eq < neq; ++eq) {
-        const auto& [node, dof] = in.eqDof[static_cast<std::size_t>(eq)];
-        eqVel_(eq) = node->vel(dof);
-        eqAcc_(eq) = node->accel(dof);
-      }
+  const bool rates = c.dynamic && (global || hasModalDamping());
+  if (anyDeferred_ || rates) {
+    const auto neq = static_cast<int>(in.eqDof.size());
+    for (int eq = 0; eq < neq; ++eq) {
+      const auto& [node, dof] = in.eqDof[static_cast<std::size_t>(eq)];
+      eqDisp_(eq) = node->disp(dof);
+      eqVel_(eq) = node->vel(dof);
+      eqAcc_(eq) = node->accel(dof);
     }
+  }
+  // The deferred elements: no support value a pattern drives is among their dofs, so their
+  // force is their assembled stiffness times the equations' values.
+  if (anyDeferred_) B.noalias() -= deferredStiffness_ * eqDisp_;
+  if (c.dynamic) {
     if (global) {
       B.noalias() -= massGlobal_ * eqAcc_;
       B.noalias() -= dampingGlobal_ * eqVel_;

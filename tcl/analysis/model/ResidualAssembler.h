@@ -29,10 +29,13 @@ struct ResidualInputs {
 /// alphaM and betaK0 terms, the betaK/betaKc terms of linear elements), unless a support moves
 /// with an imposed velocity, whose damping and inertia coupling only the element-level forces
 /// carry; an element that may turn inactive with mass or damping always forms its own. Modal
-/// damping (modalDamping) is added to either.
+/// damping (modalDamping) is added to either. The elements whose force is their initial
+/// stiffness times their displacements (ElementScatter::deferred) give theirs as one product
+/// with their stiffness assembled here once.
 class ResidualAssembler {
  public:
-  /// The constant dynamic matrices on `pattern` (every element's ownDynamics is set here).
+  /// The constant dynamic matrices and the deferred elements' stiffness on `pattern` (every
+  /// element's ownDynamics is set here).
   void build(std::span<ElementScatter> elements, std::span<const NodeScatter> nodes,
              const Eigen::SparseMatrix<double>& pattern);
   /// Residual into B.
@@ -46,8 +49,10 @@ class ResidualAssembler {
 
  private:
   Eigen::SparseMatrix<double> massGlobal_, dampingGlobal_;
+  Eigen::SparseMatrix<double> deferredStiffness_;  ///< sum of the deferred elements' K0
+  bool anyDeferred_ = false;
   std::vector<char> rayleighLeft_;  // per element: Rayleigh stiffness terms left to the element
-  mutable Eigen::VectorXd eqVel_, eqAcc_;
+  mutable Eigen::VectorXd eqDisp_, eqVel_, eqAcc_;
   Eigen::MatrixXd modalMphi_;
   Eigen::VectorXd modalCoefficients_;
 };

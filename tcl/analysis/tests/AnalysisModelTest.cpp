@@ -211,7 +211,9 @@ class AnalysisModelTest : public ::testing::Test {
       const MatrixXd Kstar =
           c.stiffness == StiffnessKind::Current ? e->tangentStiff() : e->initialStiff();
       A += L.transpose() * (c.cK * Kstar + c.cC * (e->dampingTangent() + R) + c.cM * M) * L;
-      VectorXd f = e->resistingForce();
+      // Through the domain: an elastic beam the analysis left to its stiffness product is formed
+      // at its nodes' displacements here (Domain::setStateDeferred).
+      VectorXd f = domain.elementForce(tag);
       if (c.dynamic) f += M * (L * a) + R * (L * v);
       F += L.transpose() * f;
     }
@@ -526,13 +528,16 @@ class CountingSpring final : public elements::DynamicSizeElement {
   }
   bool isLinear() const override { return !nonlinear_; }
   bool keepsStateAtSameDisplacements() const override { return keeps; }
-  void commitState() override {}
+  bool forceIsInitialStiffnessTimesDisplacements() const override { return deferrable; }
+  void commitState() override { ++commits; }
   void revertToLastCommit() override {}
   void revertToStart() override {}
 
   static constexpr double kStiffness = 2.0e3;
   int updates = 0;
+  int commits = 0;
   bool keeps = true;
+  bool deferrable = false;
 
  private:
   bool nonlinear_ = false;
@@ -610,6 +615,57 @@ TEST(AnalysisModelSkipTest, KeptNonlinearElementStillGathersItsRates) {
   // A non-finite velocity fails the pass as an update would.
   am.setResponse(u, VectorXd::Constant(1, std::numeric_limits<double>::infinity()), rates);
   EXPECT_FALSE(ok(am.updateElements()));
+}
+
+// A spring whose force is its stiffness times its displacements is left to one product with the
+// assembled stiffness: the passes and the domain's commit leave it, the residual is the same, and
+// the domain forms its state when it is read or when the mark is lifted. Chain 1-2-3 along x,
+// node 1 fixed, u2 = 0.004, u3 = 0.010: internal forces k (u2 - (u3 - u2)) = -0.002 k at node 2
+// and k (u3 - u2) = 0.006 k at node 3.
+TEST(AnalysisModelSkipTest, DeferredElementIsOneProductAndFormedWhenRead) {
+  domain::Domain d;
+  for (int tag : {1, 2, 3}) d.addNode(tag, 1, 1, Eigen::Vector3d(tag, 0, 0));
+  d.addFix(1, 0);
+  d.addElement(std::make_unique<CountingSpring>(1, 1, 2));
+  d.addElement(std::make_unique<CountingSpring>(2, 2, 3));
+  auto& deferred = static_cast<CountingSpring&>(*d.findElement(1));
+  auto& updated = static_cast<CountingSpring&>(*d.findElement(2));
+  deferred.deferrable = true;
+  updated.keeps = false;
+  AnalysisModel am(d, ConstraintKind::Transformation, NumbererKind::RCM);
+  am.build();
+  am.applyLoad(0.0);
+  EXPECT_TRUE(d.stateDeferred(1));
+  EXPECT_FALSE(d.stateDeferred(2));
+  VectorXd U(2);
+  U(am.equationOf(2, 0)) = 0.004;
+  U(am.equationOf(3, 0)) = 0.010;
+  am.setResponse(U, VectorXd::Zero(2), VectorXd::Zero(2));
+  ASSERT_TRUE(ok(am.updateElements()));
+  EXPECT_EQ(deferred.updates, 0);
+  EXPECT_EQ(updated.updates, 1);
+  EXPECT_EQ(am.elementUpdates(), 1);
+  VectorXd B;
+  am.formResidual({1.0, 0.0, 0.0, StiffnessKind::Current, false}, B);
+  const double k = CountingSpring::kStiffness;
+  EXPECT_NEAR(B(am.equationOf(2, 0)), 0.002 * k, 1e-12 * k);
+  EXPECT_NEAR(B(am.equationOf(3, 0)), -0.006 * k, 1e-12 * k);
+  d.commit();
+  EXPECT_EQ(deferred.commits, 0);
+  EXPECT_EQ(updated.commits, 1);
+  // Read: formed at the nodes' trial displacements, u2 - u1 = 0.004.
+  const VectorXd f = d.elementForce(1);
+  EXPECT_EQ(deferred.updates, 1);
+  EXPECT_NEAR(f(1), 0.004 * k, 1e-12 * k);
+  // Lifting the mark forms the committed state and then the trial one.
+  d.setStateDeferred(1, false);
+  EXPECT_EQ(deferred.updates, 3);
+  EXPECT_EQ(deferred.commits, 1);
+  EXPECT_FALSE(d.stateDeferred(1));
+  // Only an element that says its state is its displacements' may be marked.
+  EXPECT_THROW(d.setStateDeferred(2, true), InputError);
+  EXPECT_THROW(d.setStateDeferred(99, true), InputError);
+  EXPECT_FALSE(d.stateDeferred(2));
 }
 
 }  // namespace
