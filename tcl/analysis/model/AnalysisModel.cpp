@@ -477,6 +477,9 @@ Status AnalysisModel::updateElements() {
 #pragma omp for schedule(static, 1) nowait
       for (int u = 0; u < units; ++u)
         for (const int k : units_.unit(u)) updateOne(k);
+          // The deferred elements' force, by the first thread done with its list.
+#pragma omp single nowait
+      residual_.formDeferredForce(eqDof_);
       for (int b = nextShared.fetch_add(kChunk, std::memory_order_relaxed); b < poolSize;
            b = nextShared.fetch_add(kChunk, std::memory_order_relaxed))
         for (int i = b; i < std::min(b + kChunk, poolSize); ++i)

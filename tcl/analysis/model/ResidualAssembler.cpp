@@ -2,6 +2,8 @@
 #include "tcl/analysis/model/ResidualAssembler.h"
 
 #include <algorithm>
+#include <cstring>
+#include <limits>
 
 namespace dabs::analysis {
 
@@ -52,8 +54,11 @@ void ResidualAssembler::build(std::span<ElementScatter> elements,
   };
   onPattern(massGlobal_, mass);
   onPattern(dampingGlobal_, damping);
-  onPattern(deferredStiffness_, stiffness);
-  eqDisp_ = eqVel_ = eqAcc_ = Eigen::VectorXd::Zero(pattern.rows());
+  Eigen::SparseMatrix<double> deferred;
+  onPattern(deferred, stiffness);
+  deferredStiffness_ = deferred;
+  eqDisp_ = eqVel_ = eqAcc_ = deferredForce_ = Eigen::VectorXd::Zero(pattern.rows());
+  deferredAt_ = Eigen::VectorXd::Constant(pattern.rows(), std::numeric_limits<double>::quiet_NaN());
 }
 
 void ResidualAssembler::form(const AssemblyCoefficients& c, const ResidualInputs& in,
@@ -118,7 +123,14 @@ void ResidualAssembler::form(const AssemblyCoefficients& c, const ResidualInputs
   }
   // The deferred elements: no support value a pattern drives is among their dofs, so their
   // force is their assembled stiffness times the equations' values.
-  if (anyDeferred_) B.noalias() -= deferredStiffness_ * eqDisp_;
+  if (anyDeferred_) {
+    const auto bytes = static_cast<std::size_t>(eqDisp_.size()) * sizeof(double);
+    if (std::memcmp(eqDisp_.data(), deferredAt_.data(), bytes) != 0) {
+      deferredForce_.noalias() = deferredStiffness_ * eqDisp_;
+      deferredAt_ = eqDisp_;
+    }
+    B -= deferredForce_;
+  }
   if (c.dynamic) {
     if (global) {
       B.noalias() -= massGlobal_ * eqAcc_;
@@ -147,6 +159,17 @@ void ResidualAssembler::form(const AssemblyCoefficients& c, const ResidualInputs
     const double g = row.slot >= 0 ? in.slots[static_cast<std::size_t>(row.slot)].disp : 0.0;
     for (auto [eq, coef] : row.eqs) B(eq) += row.alpha * coef * (g - cu);
   }
+}
+
+void ResidualAssembler::formDeferredForce(
+    std::span<const std::pair<domain::Node*, int>> eqDof) const {
+  if (!anyDeferred_) return;
+  const auto neq = static_cast<Eigen::Index>(eqDof.size());
+  for (Eigen::Index eq = 0; eq < neq; ++eq) {
+    const auto& [node, dof] = eqDof[static_cast<std::size_t>(eq)];
+    deferredAt_(eq) = node->disp(dof);
+  }
+  deferredForce_.noalias() = deferredStiffness_ * deferredAt_;
 }
 
 void ResidualAssembler::setModalDamping(const Eigen::MatrixXd& Mphi,

@@ -40,6 +40,11 @@ class ResidualAssembler {
              const Eigen::SparseMatrix<double>& pattern);
   /// Residual into B.
   void form(const AssemblyCoefficients& c, const ResidualInputs& in, Eigen::VectorXd& B) const;
+  /// The deferred elements' force K_d u at the nodes' trial displacements, formed ahead for
+  /// form(), which takes it while the displacements are the same bit for bit (else forms it
+  /// again): the element pass calls it on whichever of its threads is free first, so on two
+  /// threads the product is not left to the serial part of the iteration.
+  void formDeferredForce(std::span<const std::pair<domain::Node*, int>> eqDof) const;
 
   /// Modal damping: C_modal = sum_i 2 zeta_i omega_i (M phi_i)(M phi_i)^T.
   void setModalDamping(const Eigen::MatrixXd& Mphi, const Eigen::VectorXd& coefficients);
@@ -49,8 +54,12 @@ class ResidualAssembler {
 
  private:
   Eigen::SparseMatrix<double> massGlobal_, dampingGlobal_;
-  Eigen::SparseMatrix<double> deferredStiffness_;  ///< sum of the deferred elements' K0
+  /// Sum of the deferred elements' K0: symmetric, so its rows are its columns; row by row, each
+  /// entry of the product is one sum in a fixed order.
+  Eigen::SparseMatrix<double, Eigen::RowMajor> deferredStiffness_;
   bool anyDeferred_ = false;
+  /// The displacements the last deferred force was formed at (NaN before the first).
+  mutable Eigen::VectorXd deferredAt_, deferredForce_;
   std::vector<char> rayleighLeft_;  // per element: Rayleigh stiffness terms left to the element
   mutable Eigen::VectorXd eqDisp_, eqVel_, eqAcc_;
   Eigen::MatrixXd modalMphi_;
