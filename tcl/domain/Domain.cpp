@@ -288,8 +288,10 @@ void Domain::setStateDeferred(int elementTag, bool deferred) {
     e.commitState();
     updateAt(e, false);
   }
-  if (listVersion_ == modelVersion_) {
-    const auto pos = std::find(elementList_.begin(), elementList_.end(), &e);
+  if (listVersion_ == modelVersion_) {  // the lists are in tag order
+    const auto pos =
+        std::lower_bound(elementList_.begin(), elementList_.end(), elementTag,
+                         [](const elements::Element* a, int tag) { return a->tag() < tag; });
     deferredList_[static_cast<std::size_t>(pos - elementList_.begin())] = deferred ? 1 : 0;
   }
 }
