@@ -123,6 +123,8 @@ void AnalysisModel::buildScatter() {
     if (link.sleeping) ++sleeping;
     // A sleeper gets its buffers when it wakes (they would spread the awake links' data).
     if (!link.sleeping) link.allocateBuffers(n);
+    link.deferred = !link.sleeping && link.far == nullptr && !imposedMotion_ &&
+                    e->forceIsInitialStiffnessTimesDisplacements() && loaded.count(etag) == 0;
     localEqs.assign(static_cast<std::size_t>(n), {});
     int local = 0;
     for (int nt : e->nodeTags()) {
@@ -133,14 +135,8 @@ void AnalysisModel::buildScatter() {
         localEqs[static_cast<std::size_t>(local)] = scratch;
         if (!link.sleeping)  // a sleeper adds nothing to the residual
           for (auto [eq, c] : scratch) link.vec.push_back(VecEntry{local, eq, c});
+        if (link.deferred && drivesSupport(nl.firstDof + d)) link.deferred = false;
       }
-    }
-    link.deferred = !link.sleeping && link.far == nullptr && !imposedMotion_ &&
-                    e->forceIsInitialStiffnessTimesDisplacements() && loaded.count(etag) == 0;
-    for (int nt : e->nodeTags()) {
-      const NodeScatter& nl = nodes_[static_cast<std::size_t>(nodeIndex_.at(nt))];
-      for (int d = 0; d < nl.node->ndf() && link.deferred; ++d)
-        link.deferred = !drivesSupport(nl.firstDof + d);
     }
     link.direct.assign(static_cast<std::size_t>(n), -1);
     for (const VecEntry& v : link.vec) {
