@@ -13,9 +13,13 @@ namespace dabs::elements {
 /// OpenSees/OpenSees:SRC/element/forceBeamColumn/ForceBeamColumn3d.cpp). Element state
 /// determination iterates on q until the compatible section deformations integrate to the trial
 /// basic deformations (Neuenhofer & Filippou 1997, J. Struct. Eng. 123(7), the "iterative"
-/// scheme), starting from the last trial state; if maxIter iterations do not converge, it starts
-/// again from the committed state, then splits the increment into 4 and 16 sub-increments; if
-/// those fail too, update() returns Status::NotConverged (never loops forever). As in OpenSees,
+/// scheme), starting from the last trial state, with OpenSees' three strategies in turn (its
+/// ForceBeamColumn2d/3d::update): Newton on the current section flexibilities (maxIter
+/// iterations), the initial section flexibilities at every iteration (10 maxIter), and at the
+/// first iteration only (maxIter), each from the update's start point. Where OpenSees then stops
+/// (its default of one subdivision), this element starts again from the committed state and
+/// splits the increment into 4 and 16 sub-increments; if those fail too, update() returns
+/// Status::NotConverged (never loops forever). As in OpenSees,
 /// an update whose basic deformations have not changed (a norm of DBL_EPSILON at most) keeps the
 /// state without evaluating a section, unless member loads act or changed. Member loads add
 /// their simply supported section forces: s(x) = b(x) q + sp(x), and their reactions to the end
@@ -29,8 +33,8 @@ class ForceBeamColumn final : public SectionBeamColumn<Ndm> {
   using typename Super::Vector;
   static constexpr int kBasic = Super::kBasic;
 
-  /// maxIter >= 1 and tol > 0 (OpenSees defaults 10 and 1e-12); tol is compared with the
-  /// energy norm |dv . dq| of the last correction, relative to max(1, |v . q|).
+  /// maxIter >= 1 and tol > 0 (OpenSees defaults 10 and 1e-12); as in OpenSees, an iteration
+  /// has converged when the energy norm |dv . dq| of its correction is below tol.
   ForceBeamColumn(int tag, int nodeI, int nodeJ, std::vector<BeamIntegrationPoint> points,
                   std::unique_ptr<typename Super::Transf> transf, double massPerLength,
                   int maxIter = 10, double tol = 1e-12)
@@ -70,12 +74,18 @@ class ForceBeamColumn final : public SectionBeamColumn<Ndm> {
       }
     }
   };
+  /// The section flexibility a local iteration corrects the section deformations with.
+  enum class Correction {
+    Current,       ///< the current one (Newton), maxIter iterations
+    Initial,       ///< the initial one at every iteration, 10 maxIter iterations
+    InitialFirst,  ///< the initial one at the first iteration, then the current one
+  };
   void loadsChanged() override;
-  Status iterate(State& s, const Basic& target) const;
+  Status iterate(State& s, const Basic& target, Correction c = Correction::Current) const;
   /// iterate() with the section arrays seen as fixed-size matrices of `Order` rows (all sections
   /// of that order) or as they are (Eigen::Dynamic).
   template <int Order>
-  Status iterateWith(State& s, const Basic& target) const;
+  Status iterateWith(State& s, const Basic& target, Correction c) const;
   Status solve(const Basic& target);
   void finish();
   /// Trial and committed states at the virgin state formed by initialize() (no deformation).
@@ -84,11 +94,13 @@ class ForceBeamColumn final : public SectionBeamColumn<Ndm> {
   int maxIter_;
   double tol_;
   std::vector<SectionBasicMatrix<kBasic>> bmat_;
-  BasicMatrix fe_ = BasicMatrix::Zero();  ///< initial (elastic) flexibility
+  BasicMatrix fe_ = BasicMatrix::Zero();    ///< initial (elastic) flexibility
+  std::vector<SectionMatrix> initialFlex_;  ///< each point's initial section flexibility
   /// Section forces of the member loads in the basic system, per point (empty without loads).
   std::vector<SectionVector> sp_;
   State trial_, committed_;
   State virgin_;                  ///< the state at zero deformation, formed once by initialize()
+  State attemptStart_;            ///< an update's start point, for its second and third strategy
   bool trialIsCommitted_ = true;  ///< trial_ equals committed_ (no update since commit/revert)
   /// Updated since initialize(), revertToStart() or the last change of member loads.
   bool updated_ = false;

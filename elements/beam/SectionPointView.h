@@ -21,6 +21,9 @@ struct SectionPointView {
     return Eigen::Map<const Vec>(v.data());
   }
   static Eigen::Map<Mat> mat(SectionMatrix& m) { return Eigen::Map<Mat>(m.data()); }
+  static Eigen::Map<const Mat> mat(const SectionMatrix& m) {
+    return Eigen::Map<const Mat>(m.data());
+  }
   static Eigen::Map<const Eigen::Matrix<double, Order, Nb>> interp(
       const SectionBasicMatrix<Nb>& b) {
     return Eigen::Map<const Eigen::Matrix<double, Order, Nb>>(b.data());
@@ -34,6 +37,7 @@ struct SectionPointView<Eigen::Dynamic, Nb> {
   static SectionVector& vec(SectionVector& v) { return v; }
   static const SectionVector& vec(const SectionVector& v) { return v; }
   static SectionMatrix& mat(SectionMatrix& m) { return m; }
+  static const SectionMatrix& mat(const SectionMatrix& m) { return m; }
   static const SectionBasicMatrix<Nb>& interp(const SectionBasicMatrix<Nb>& b) { return b; }
 };
 
