@@ -1,7 +1,8 @@
 # SPDX-License-Identifier: MIT
-# The benchmark models of this folder, shared by compare.sh and ../threads.sh (sourced):
-# spec CASE prints "script args|recorder files with their component counts" (OUT stands for the
-# results folder); median reads numbers, one a line, and prints their median.
+# The benchmark models of this folder, shared by compare.sh, instructions.sh and ../threads.sh
+# (sourced): spec CASE prints "script args|recorder files with their component counts" (OUT stands
+# for the results folder); median reads numbers, one a line, and prints their median;
+# findPrograms WHAT checks the programs and the output folder of compare.sh and instructions.sh.
 spec() {
   case "$1" in
     bridge3) echo "bridge.tcl 3 4000 OUT|girder-disp.out:2 pier-disp.out:2 pier-force.out:6" ;;
@@ -18,3 +19,17 @@ spec() {
 }
 
 median() { sort -g | awk '{v[NR]=$1} END {if (NR%2) print v[(NR+1)/2]; else print (v[NR/2]+v[NR/2+1])/2}'; }
+
+# findPrograms WHAT: $opensees becomes the OpenSees given (--opensees, else $OPENSEES), else
+# `OpenSees` on the PATH, else "" with a line saying dabs is WHAT alone; exits when $dabs is not
+# a program; makes the folder $out and its path absolute.
+findPrograms() {
+  [ -n "$opensees" ] || opensees="$(command -v OpenSees || true)"
+  if [ -z "$opensees" ] || [ ! -x "$opensees" ]; then
+    echo "OpenSees not found (--opensees PATH or \$OPENSEES): $1 dabs alone"
+    opensees=""
+  fi
+  [ -x "$dabs" ] || { echo "dabs not found at $dabs (--dabs PATH)"; exit 2; }
+  mkdir -p "$out"
+  out="$(cd "$out" && pwd)"
+}

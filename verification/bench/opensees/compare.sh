@@ -34,18 +34,10 @@ while (($#)); do
   esac
 done
 ((${#cases[@]})) || cases=(bridge3 bridge10 bridge30 bridge100 rcframe pushover linear-frame linear-frame-once)
-[ -n "$opensees" ] || opensees="$(command -v OpenSees || true)"
-if [ -z "$opensees" ] || [ ! -x "$opensees" ]; then
-  echo "OpenSees not found (--opensees PATH or \$OPENSEES): timing dabs alone, no comparison"
-  opensees=""
-fi
-[ -x "$dabs" ] || { echo "dabs not found at $dabs (--dabs PATH)"; exit 2; }
-mkdir -p "$out"
-out="$(cd "$out" && pwd)"
-
 # case -> script and arguments (OUT: the run's result folder), recorder files with their number of
-# components per node or element
+# components per node or element; findPrograms
 source "$here/cases.sh"
+findPrograms "timing"
 
 # run PROGRAM DIR SCRIPT ARGS...: prints "analysis_s process_s" and leaves the program's output in DIR/log
 run() {

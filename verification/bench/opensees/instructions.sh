@@ -34,14 +34,8 @@ while (($#)); do
 done
 ((${#cases[@]})) || cases=(bridge3 bridge10 rcframe pushover linear-frame-once)
 command -v valgrind > /dev/null || { echo "valgrind not found (apt-get install valgrind)"; exit 2; }
-[ -n "$opensees" ] || opensees="$(command -v OpenSees || true)"
-if [ -z "$opensees" ] || [ ! -x "$opensees" ]; then
-  echo "OpenSees not found (--opensees PATH or \$OPENSEES): counting dabs alone"
-  opensees=""
-fi
-[ -x "$dabs" ] || { echo "dabs not found at $dabs (--dabs PATH)"; exit 2; }
-mkdir -p "$out"
-out="$(cd "$out" && pwd)"
+source "$here/cases.sh"  # findPrograms
+findPrograms "counting"
 
 # case -> script and arguments (OUT: the run's result folder)
 short() {
