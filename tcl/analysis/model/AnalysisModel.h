@@ -96,6 +96,8 @@ class AnalysisModel {
     if (count != threads_) unitsFormedAt_ = -1;  // one list per thread
     threads_ = count;
   }
+  /// Threads in force (the linear system's factorisation may share its work among them).
+  int threads() const noexcept { return threads_; }
   /// Threads the process may use for the element updates (1 without OpenMP).
   static int availableThreads() noexcept;
 

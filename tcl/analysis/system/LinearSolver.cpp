@@ -28,6 +28,7 @@ class SparseLdltSolver final : public LinearSolver {
   /// a pivoting LU (LDL^T without pivoting is backward stable for definite matrices only).
   explicit SparseLdltSolver(bool definiteOnly) : definiteOnly_(definiteOnly) {}
   void analyzePattern(const Eigen::SparseMatrix<double>& A) override { ldlt_.analyze(A); }
+  void setThreads(int threads) noexcept override { ldlt_.setThreads(threads); }
   Status factorize(const Eigen::SparseMatrix<double>& A) override {
     ++factorizations_;
     if (!ok(ldlt_.factorize(A))) return Status::Singular;

@@ -28,6 +28,9 @@ class LinearSolver {
   [[nodiscard]] virtual Status factorize(const Eigen::SparseMatrix<double>& A) = 0;
   /// Solves with the last factorisation; Status::NonFinite when the result is not finite.
   [[nodiscard]] virtual Status solve(const Eigen::VectorXd& b, Eigen::VectorXd& x) = 0;
+  /// Threads the factorisation and the solve may use (a sparse LDL^T of a split order; the
+  /// others use one). Results do not depend on it.
+  virtual void setThreads(int /*threads*/) noexcept {}
   /// Number of numeric factorisations so far (for benchmarks).
   long factorizations() const noexcept { return factorizations_; }
   /// Of those, the ones that kept the previous pivots (the sparse LU only; see KluSolver).

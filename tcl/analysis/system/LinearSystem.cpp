@@ -40,11 +40,15 @@ Status LinearSystem::formTangent(const AssemblyCoefficients& c, bool reuse) {
   }
   const auto& A = model_.formTangent(c);
   factored_ = false;
+  // The model's threads, for a factorisation that can share its work (results do not change).
+  for (LinearSolver* solver : {primary_.get(), general_.get(), definite_.get()})
+    if (solver != nullptr) solver->setThreads(model_.threads());
   solver_ = primary_.get();
   const bool symmetric = !model_.nonSymmetricNow();
   if (kind_ == SolverKind::SparseLDLT && !symmetric) {
     if (!general_) {
       general_ = LinearSolver::create(SolverKind::SparseLU, true);
+      general_->setThreads(model_.threads());
       general_->analyzePattern(model_.pattern());
     }
     solver_ = general_.get();
@@ -57,6 +61,7 @@ Status LinearSystem::formTangent(const AssemblyCoefficients& c, bool reuse) {
   if (kind_ == SolverKind::SparseLU && symmetric) {
     if (!definite_) {
       definite_ = LinearSolver::createDefiniteLdlt();
+      definite_->setThreads(model_.threads());
       definite_->analyzePattern(model_.pattern());
     }
     if (ok(definite_->factorize(A))) {

@@ -4,24 +4,160 @@
 #include <Eigen/OrderingMethods>
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
 #include <limits>
 #include <stdexcept>
 #include <string>
 
+#include <camd.h>
+#ifdef _OPENMP
+#include <omp.h>
+#endif
+
 namespace dabs::analysis {
+
+namespace {
+
+// A split pays when the halves are worth two threads and the separator, eliminated last with
+// its fill, is small: at most a sixteenth of the equations, the halves within 40/60. On a deck's
+// chain of 6-dof nodes two threads factorised and solved 132 equations in 0.97 to 1.3 times the
+// one-thread time, 180 in 1.03 to 1.46 and 270 or more in 1.5 to 1.8
+// (verification/bench/sparse-ldlt-split.cpp).
+constexpr int kSplitAtLeast = 192;
+constexpr int kSeparatorShare = 16;
+
+/// A one-level dissection of the graph of A's pattern: each equation's part (0 and 1 the
+/// halves, 2 the separator), or empty when no small separator splits it evenly. The separator
+/// is a level of a breadth-first search from a pseudo-peripheral equation (George & Liu 1979,
+/// "An implementation of a pseudoperipheral node finder", ACM TOMS 5(3)): a level meets only
+/// its two neighbour levels, so it cuts the levels before it from those after it.
+std::vector<int> bisect(const Eigen::SparseMatrix<double>& A) {
+  const int n = static_cast<int>(A.rows());
+  if (n < kSplitAtLeast) return {};
+  const int* p = A.outerIndexPtr();
+  const int* inner = A.innerIndexPtr();
+  const int* nz = A.innerNonZeroPtr();  // null when compressed
+  auto end = [&](int j) { return nz ? p[j] + nz[j] : p[j + 1]; };
+  auto degree = [&](int j) { return end(j) - p[j]; };
+  std::vector<int> level(static_cast<std::size_t>(n)), queue(static_cast<std::size_t>(n));
+  // Levels from `root`; returns the count of equations reached and sets `levels`.
+  int levels = 0;
+  auto search = [&](int root) {
+    std::fill(level.begin(), level.end(), -1);
+    int head = 0, tail = 0;
+    queue[static_cast<std::size_t>(tail++)] = root;
+    level[static_cast<std::size_t>(root)] = 0;
+    while (head < tail) {
+      const int j = queue[static_cast<std::size_t>(head++)];
+      for (int q = p[j]; q < end(j); ++q) {
+        const int i = inner[q];
+        if (level[static_cast<std::size_t>(i)] >= 0) continue;
+        level[static_cast<std::size_t>(i)] = level[static_cast<std::size_t>(j)] + 1;
+        queue[static_cast<std::size_t>(tail++)] = i;
+      }
+    }
+    levels = level[static_cast<std::size_t>(queue[static_cast<std::size_t>(tail - 1)])] + 1;
+    return tail;
+  };
+  int root = 0;
+  for (int j = 1; j < n; ++j)
+    if (degree(j) < degree(root)) root = j;
+  int reached = search(root);
+  for (int round = 0; round < 8; ++round) {
+    // The last level's equation of least degree; it becomes the root while the depth grows.
+    int candidate = -1;
+    for (int t = 0; t < reached; ++t) {
+      const int j = queue[static_cast<std::size_t>(t)];
+      if (level[static_cast<std::size_t>(j)] == levels - 1 &&
+          (candidate < 0 || degree(j) < degree(candidate)))
+        candidate = j;
+    }
+    const int before = levels;
+    const std::vector<int> kept = level;
+    const int keptReached = reached;
+    reached = search(candidate);
+    if (levels <= before) {
+      level = kept;
+      levels = before;
+      reached = keptReached;
+      break;
+    }
+  }
+  std::vector<int> count(static_cast<std::size_t>(levels), 0);
+  for (int j = 0; j < n; ++j)
+    if (level[static_cast<std::size_t>(j)] >= 0)
+      ++count[static_cast<std::size_t>(level[static_cast<std::size_t>(j)])];
+  const int unreached = n - reached;
+  int best = -1, bestSize = 0, bestImbalance = 0, before = 0;
+  for (int l = 0; l < levels; ++l) {
+    const int size = count[static_cast<std::size_t>(l)];
+    int a = before, b = reached - before - size;
+    (a <= b ? a : b) += unreached;  // other components go to the smaller half
+    before += size;
+    if (a == 0 || b == 0 || 5 * std::abs(a - b) > a + b) continue;
+    const int imbalance = std::abs(a - b);
+    if (best < 0 || size < bestSize || (size == bestSize && imbalance < bestImbalance)) {
+      best = l;
+      bestSize = size;
+      bestImbalance = imbalance;
+    }
+  }
+  if (best < 0 || kSeparatorShare * bestSize > n) return {};
+  int firstSize = 0;
+  for (int l = 0; l < best; ++l) firstSize += count[static_cast<std::size_t>(l)];
+  const int secondSize = reached - firstSize - bestSize;
+  const int unreachedPart = firstSize <= secondSize ? 0 : 1;
+  std::vector<int> part(static_cast<std::size_t>(n));
+  for (int j = 0; j < n; ++j) {
+    const int l = level[static_cast<std::size_t>(j)];
+    part[static_cast<std::size_t>(j)] = l < 0 ? unreachedPart : l < best ? 0 : l == best ? 2 : 1;
+  }
+  return part;
+}
+
+}  // namespace
 
 void SparseLdlt::analyze(const Eigen::SparseMatrix<double>& A) {
   n_ = static_cast<int>(A.rows());
   const auto n = static_cast<std::size_t>(n_);
-  // Fill-reducing order: AMD computes the inverse permutation (Eigen's convention).
-  Eigen::PermutationMatrix<Eigen::Dynamic, Eigen::Dynamic, int> inverse;
-  Eigen::AMDOrdering<int> amd;
-  amd(A, inverse);
   perm_.assign(n, 0);
-  if (inverse.size() == n_) {
-    for (int k = 0; k < n_; ++k) perm_[static_cast<std::size_t>(inverse.indices()(k))] = k;
+  split_ = Split{n_, 0, 0};
+  if (std::vector<int> part = bisect(A); !part.empty()) {
+    // The halves and then the separator, each by minimum degree (CAMD orders the equations of
+    // constraint set 0 first, then set 1, then set 2).
+    Eigen::SparseMatrix<double> compressed = A;
+    compressed.makeCompressed();
+    std::vector<int> order(n, 0);
+    double control[CAMD_CONTROL];
+    double info[CAMD_INFO];
+    camd_defaults(control);
+    const int status = camd_order(n_, compressed.outerIndexPtr(), compressed.innerIndexPtr(),
+                                  order.data(), control, info, part.data());
+    if (status != CAMD_OK && status != CAMD_OK_BUT_JUMBLED)
+      throw std::runtime_error("sparse LDL^T: CAMD failed to order " + std::to_string(n_) +
+                               " equations (status " + std::to_string(status) + ")");
+    for (int k = 0; k < n_; ++k)
+      perm_[static_cast<std::size_t>(order[static_cast<std::size_t>(k)])] = k;
+    split_.first = static_cast<int>(std::count(part.begin(), part.end(), 0));
+    split_.second = static_cast<int>(std::count(part.begin(), part.end(), 1));
+    split_.separator = n_ - split_.first - split_.second;
+    // The factorisation relies on the sets being in order: the first half's equations, then
+    // the second's, then the separator's.
+    for (int k = 0; k < n_; ++k) {
+      const int expected = k < split_.first ? 0 : k < split_.first + split_.second ? 1 : 2;
+      if (part[static_cast<std::size_t>(order[static_cast<std::size_t>(k)])] != expected)
+        throw std::logic_error("sparse LDL^T: CAMD did not keep the constraint sets in order");
+    }
   } else {
-    for (int k = 0; k < n_; ++k) perm_[static_cast<std::size_t>(k)] = k;
+    // Fill-reducing order: AMD computes the inverse permutation (Eigen's convention).
+    Eigen::PermutationMatrix<Eigen::Dynamic, Eigen::Dynamic, int> inverse;
+    Eigen::AMDOrdering<int> amd;
+    amd(A, inverse);
+    if (inverse.size() == n_) {
+      for (int k = 0; k < n_; ++k) perm_[static_cast<std::size_t>(inverse.indices()(k))] = k;
+    } else {
+      for (int k = 0; k < n_; ++k) perm_[static_cast<std::size_t>(k)] = k;
+    }
   }
 
   // Upper triangle of P A P^T (row <= column), and where each of A's values goes in it.
@@ -61,14 +197,22 @@ void SparseLdlt::analyze(const Eigen::SparseMatrix<double>& A) {
     }
   }
   // Supernodes: column j+1 continues j's supernode when it is j's parent in the tree and its
-  // pattern below the diagonal is j's without row j+1.
+  // pattern below the diagonal is j's without row j+1; a split order's halves and separator
+  // start supernodes of their own.
+  const int secondFrom = split_.first, separatorFrom = split_.first + split_.second;
   superFirst_.assign(1, 0);
+  superSecond_ = superSeparator_ = -1;
   for (int j = 1; j < n_; ++j) {
     const auto uj = static_cast<std::size_t>(j);
-    if (!(parent_[uj - 1] == j && lnz[uj - 1] == lnz[uj] + 1)) superFirst_.push_back(j);
+    const bool boundary = split_.separator > 0 && (j == secondFrom || j == separatorFrom);
+    if (boundary || !(parent_[uj - 1] == j && lnz[uj - 1] == lnz[uj] + 1)) superFirst_.push_back(j);
+    if (boundary && j == secondFrom) superSecond_ = static_cast<int>(superFirst_.size()) - 1;
+    if (boundary && j == separatorFrom) superSeparator_ = static_cast<int>(superFirst_.size()) - 1;
   }
   if (n_ > 0) superFirst_.push_back(n_);
   const std::size_t ns = superFirst_.size() - 1;
+  if (superSecond_ < 0 || superSeparator_ < 0)
+    superSecond_ = superSeparator_ = static_cast<int>(ns);
   superHeight_.assign(ns, 0);
   superStart_.assign(ns, 0);
   colStart_.assign(n, 0);
@@ -95,7 +239,13 @@ void SparseLdlt::analyze(const Eigen::SparseMatrix<double>& A) {
   }
   li_.assign(size, 0);
   lx_.assign(size, 0.0);  // the unused upper part of each block stays zero
-  gather_ = Eigen::VectorXd::Zero(maxHeight);
+  for (Workspace& ws : workspace_) {
+    ws.relative.assign(n, 0);
+    ws.gather = Eigen::VectorXd::Zero(maxHeight);
+    ws.waiting.clear();
+    ws.waiting.reserve(ns);
+    ws.toSeparator.clear();
+  }
   d_ = Eigen::VectorXd::Zero(n_);
   work_ = Eigen::VectorXd::Zero(n_);
 
@@ -118,6 +268,14 @@ void SparseLdlt::analyze(const Eigen::SparseMatrix<double>& A) {
   for (std::size_t s = 0; s < ns; ++s)
     for (int j = superFirst_[s]; j < superFirst_[s + 1]; ++j)
       colSuper_[static_cast<std::size_t>(j)] = static_cast<int>(s);
+  std::size_t toSeparator = 0;  // the second half's rows in the separator, for the solve
+  for (int s = superSecond_; s < superSeparator_; ++s) {
+    const auto us = static_cast<std::size_t>(s);
+    const int w = superFirst_[us + 1] - superFirst_[us];
+    for (int r = w; r < superHeight_[us]; ++r)
+      if (li_[static_cast<std::size_t>(superStart_[us] + r)] >= separatorFrom) ++toSeparator;
+  }
+  workspace_[1].toSeparator.reserve(toSeparator);
 
   // Each value of A on or above the diagonal of P A P^T (the triangle the tree was formed from)
   // goes straight to its mirror place in L's blocks (row r of column k of supernode s:
@@ -149,7 +307,6 @@ void SparseLdlt::analyze(const Eigen::SparseMatrix<double>& A) {
         std::lower_bound(scatter_.begin(), scatter_.end(), superStart_[s],
                          [](const auto& entry, int start) { return entry.second < start; }) -
         scatter_.begin());
-  relative_.assign(n, 0);
   nextUpdate_.assign(ns, -1);
   firstUpdate_.assign(ns, -1);
   updateRow_.assign(ns, 0);
@@ -163,12 +320,68 @@ Status SparseLdlt::factorize(const Eigen::SparseMatrix<double>& A) {
   // descendant reaches), and is factorised densely.
   // A descendant waits in the list of the supernode that holds its next row (updateRow_), so
   // every block is visited once per supernode it updates.
+  // Split: the halves' supernodes on two threads (or one after the other), their waits on the
+  // separator added to its lists afterwards in the order one thread would have added them (the
+  // first half's, then the second's), then the separator.
   const double* values = A.valuePtr();
-  const std::size_t ns = superFirst_.size() > 0 ? superFirst_.size() - 1 : 0;
+  const int ns = static_cast<int>(superFirst_.size() > 0 ? superFirst_.size() - 1 : 0);
   std::fill(firstUpdate_.begin(), firstUpdate_.end(), -1);
+  Status status[2] = {Status::Ok, Status::Ok};
+  auto half = [&](int h) {
+    status[h] = h == 0 ? factorizeRange(values, 0, superSecond_, superSeparator_, workspace_[0])
+                       : factorizeRange(values, superSecond_, superSeparator_, superSeparator_,
+                                        workspace_[1]);
+  };
+  if (threads_ > 1 && superSecond_ < superSeparator_) {
+#pragma omp parallel num_threads(2)
+    {
+#ifdef _OPENMP
+      if (omp_get_num_threads() == 2) {
+        half(omp_get_thread_num());
+      } else {
+        half(0);
+        half(1);
+      }
+#else
+      half(0);
+      half(1);
+#endif
+    }
+  } else {
+    half(0);
+    half(1);
+  }
+  if (!ok(status[0]) || !ok(status[1])) return Status::Singular;
+  addWaiting(workspace_[0]);
+  addWaiting(workspace_[1]);
+  return factorizeRange(values, superSeparator_, ns, ns, workspace_[0]);
+}
+
+void SparseLdlt::addWaiting(Workspace& ws) {
+  for (const auto& [k, t] : ws.waiting) {
+    nextUpdate_[static_cast<std::size_t>(k)] = firstUpdate_[static_cast<std::size_t>(t)];
+    firstUpdate_[static_cast<std::size_t>(t)] = k;
+  }
+  ws.waiting.clear();
+}
+
+Status SparseLdlt::factorizeRange(const double* values, int begin, int end, int deferFrom,
+                                  Workspace& ws) {
+  ws.waiting.clear();
   double* dd = d_.data();
-  double* product = gather_.data();  // one column of a descendant's update
-  for (std::size_t s = 0; s < ns; ++s) {
+  double* product = ws.gather.data();  // one column of a descendant's update
+  int* relative = ws.relative.data();
+  // Supernode k waits next for supernode t (t's list, or the deferred waits).
+  auto wait = [&](int k, int t) {
+    if (t >= deferFrom) {
+      ws.waiting.emplace_back(k, t);
+      return;
+    }
+    nextUpdate_[static_cast<std::size_t>(k)] = firstUpdate_[static_cast<std::size_t>(t)];
+    firstUpdate_[static_cast<std::size_t>(t)] = k;
+  };
+  for (int si = begin; si < end; ++si) {
+    const auto s = static_cast<std::size_t>(si);
     const int f = superFirst_[s], w = superFirst_[s + 1] - f, h = superHeight_[s];
     double* block = lx_.data() + superStart_[s];
     const int* rows = li_.data() + superStart_[s];
@@ -178,7 +391,7 @@ Status SparseLdlt::factorize(const Eigen::SparseMatrix<double>& A) {
       const auto& [from, to] = scatter_[static_cast<std::size_t>(e)];
       lx_[static_cast<std::size_t>(to)] = values[static_cast<std::size_t>(from)];
     }
-    for (int r = 0; r < h; ++r) relative_[static_cast<std::size_t>(r < w ? f + r : rows[r])] = r;
+    for (int r = 0; r < h; ++r) relative[r < w ? f + r : rows[r]] = r;
     // Updates from the descendants: with Lk their rows from the first in s's columns down,
     // block(rows, cols) -= Lk D Lk(cols)^T over the rows of Lk in s's columns.
     for (int k = firstUpdate_[s]; k >= 0;) {
@@ -187,10 +400,10 @@ Status SparseLdlt::factorize(const Eigen::SparseMatrix<double>& A) {
       const int fk = superFirst_[uk], wk = superFirst_[uk + 1] - fk, hk = superHeight_[uk];
       const double* blockK = lx_.data() + superStart_[uk];
       const int* rowsK = li_.data() + superStart_[uk];
-      const int begin = updateRow_[uk];
-      int end = begin;
-      while (end < hk && rowsK[end] < f + w) ++end;
-      for (int c = begin; c < end; ++c) {
+      const int first = updateRow_[uk];
+      int last = first;  // one past the last row of Lk in s's columns
+      while (last < hk && rowsK[last] < f + w) ++last;
+      for (int c = first; c < last; ++c) {
         // Column rowsK[c] of s, rows from rowsK[c] down: product = Lk(c.., :) D Lk(c, :)^T, one
         // contiguous multiply-add per column of the descendant (short columns: plain loops beat
         // a library product's set-up here).
@@ -202,16 +415,11 @@ Status SparseLdlt::factorize(const Eigen::SparseMatrix<double>& A) {
           for (int r = 0; r < rowsFromC; ++r) product[r] += scaled * colK[r];
         }
         double* column = block + static_cast<std::ptrdiff_t>(rowsK[c] - f) * h;
-        for (int r = 0; r < rowsFromC; ++r)
-          column[relative_[static_cast<std::size_t>(rowsK[c + r])]] -= product[r];
+        for (int r = 0; r < rowsFromC; ++r) column[relative[rowsK[c + r]]] -= product[r];
       }
       // The descendant waits next for the supernode of its first row below s's columns.
-      updateRow_[uk] = end;
-      if (end < hk) {
-        const auto t = static_cast<std::size_t>(colSuper_[static_cast<std::size_t>(rowsK[end])]);
-        nextUpdate_[uk] = firstUpdate_[t];
-        firstUpdate_[t] = k;
-      }
+      updateRow_[uk] = last;
+      if (last < hk) wait(k, colSuper_[static_cast<std::size_t>(rowsK[last])]);
       k = next;
     }
     // Dense L D L^T of the block, column by column: the pivot, the column of L below it, and the
@@ -230,24 +438,82 @@ Status SparseLdlt::factorize(const Eigen::SparseMatrix<double>& A) {
     }
     if (h > w) {
       updateRow_[s] = w;
-      const auto t = static_cast<std::size_t>(colSuper_[static_cast<std::size_t>(rows[w])]);
-      nextUpdate_[s] = firstUpdate_[t];
-      firstUpdate_[t] = static_cast<int>(s);
+      wait(si, colSuper_[static_cast<std::size_t>(rows[w])]);
     }
   }
   return Status::Ok;
 }
 
 void SparseLdlt::solve(const Eigen::VectorXd& b, Eigen::VectorXd& x) {
+  Eigen::VectorXd& z = work_;
+  for (int i = 0; i < n_; ++i) z(perm_[static_cast<std::size_t>(i)]) = b(i);
+  const int ns = static_cast<int>(superFirst_.size() > 0 ? superFirst_.size() - 1 : 0);
+  // Split: the halves' forward substitutions at once, the second's contributions to the
+  // separator's rows added after the first's (the order of one thread), the separator both
+  // ways, then the halves' backward substitutions at once.
+  const int separatorRow = split_.first + split_.second;
+  auto forwardHalf = [&](int h) {
+    if (h == 0)
+      forwardRange(0, superSecond_, -1, workspace_[0]);
+    else
+      forwardRange(superSecond_, superSeparator_, separatorRow, workspace_[1]);
+  };
+  auto backwardHalf = [&](int h) {
+    if (h == 0)
+      backwardRange(0, superSecond_, workspace_[0]);
+    else
+      backwardRange(superSecond_, superSeparator_, workspace_[1]);
+  };
+  auto separator = [&] {
+    for (const auto& [row, value] : workspace_[1].toSeparator) z(row) += value;
+    workspace_[1].toSeparator.clear();
+    forwardRange(superSeparator_, ns, -1, workspace_[0]);
+    z.array() /= d_.array();
+    backwardRange(superSeparator_, ns, workspace_[0]);
+  };
+  auto inTurn = [&] {
+    forwardHalf(0);
+    forwardHalf(1);
+    separator();
+    backwardHalf(0);
+    backwardHalf(1);
+  };
+  if (threads_ > 1 && superSecond_ < superSeparator_) {
+#pragma omp parallel num_threads(2)
+    {
+#ifdef _OPENMP
+      const bool two = omp_get_num_threads() == 2;
+      const int h = omp_get_thread_num();
+#else
+      const bool two = false;
+      const int h = 0;
+#endif
+      if (two) {
+        forwardHalf(h);
+#pragma omp barrier
+#pragma omp single
+        separator();
+        backwardHalf(h);
+      } else {
+        inTurn();
+      }
+    }
+  } else {
+    inTurn();
+  }
+  if (x.size() != n_) x.resize(n_);
+  for (int i = 0; i < n_; ++i) x(i) = z(perm_[static_cast<std::size_t>(i)]);
+}
+
+void SparseLdlt::forwardRange(int begin, int end, int deferRowsFrom, Workspace& ws) {
   using Column = Eigen::Map<const Eigen::VectorXd>;
   using Work = Eigen::Map<Eigen::VectorXd>;
   Eigen::VectorXd& z = work_;
-  for (int i = 0; i < n_; ++i) z(perm_[static_cast<std::size_t>(i)]) = b(i);
-  const std::size_t ns = superFirst_.size() > 0 ? superFirst_.size() - 1 : 0;
-  double* y = gather_.data();  // a supernode's rows: its own columns, then the rows below
+  double* y = ws.gather.data();  // a supernode's rows: its own columns, then the rows below
   // L z = P b, supernode by supernode: y holds the supernode's part of z and the updates of the
   // rows below it; each column is one contiguous update of the rows under its diagonal.
-  for (std::size_t s = 0; s < ns; ++s) {
+  for (int si = begin; si < end; ++si) {
+    const auto s = static_cast<std::size_t>(si);
     const int f = superFirst_[s], w = superFirst_[s + 1] - f, h = superHeight_[s];
     const double* block = lx_.data() + superStart_[s];
     const int* rows = li_.data() + superStart_[s];  // rows[r] of block row r >= w
@@ -258,11 +524,22 @@ void SparseLdlt::solve(const Eigen::VectorXd& b, Eigen::VectorXd& x) {
       Work(y + k + 1, h - k - 1).noalias() -= y[k] * Column(col + k + 1, h - k - 1);
     }
     for (int r = 0; r < w; ++r) z(f + r) = y[r];
-    for (int r = w; r < h; ++r) z(rows[r]) += y[r];
+    for (int r = w; r < h; ++r) {
+      if (deferRowsFrom >= 0 && rows[r] >= deferRowsFrom)
+        ws.toSeparator.emplace_back(rows[r], y[r]);
+      else
+        z(rows[r]) += y[r];
+    }
   }
-  z.array() /= d_.array();
+}
+
+void SparseLdlt::backwardRange(int begin, int end, Workspace& ws) {
+  using Column = Eigen::Map<const Eigen::VectorXd>;
+  Eigen::VectorXd& z = work_;
+  double* y = ws.gather.data();
   // L^T z = z, in reverse: each column's entry less its dot product with the rows below.
-  for (std::size_t s = ns; s-- > 0;) {
+  for (int si = end; si-- > begin;) {
+    const auto s = static_cast<std::size_t>(si);
     const int f = superFirst_[s], w = superFirst_[s + 1] - f, h = superHeight_[s];
     const double* block = lx_.data() + superStart_[s];
     const int* rows = li_.data() + superStart_[s];
@@ -274,8 +551,6 @@ void SparseLdlt::solve(const Eigen::VectorXd& b, Eigen::VectorXd& x) {
     }
     for (int r = 0; r < w; ++r) z(f + r) = y[r];
   }
-  if (x.size() != n_) x.resize(n_);
-  for (int i = 0; i < n_; ++i) x(i) = z(perm_[static_cast<std::size_t>(i)]);
 }
 
 }  // namespace dabs::analysis

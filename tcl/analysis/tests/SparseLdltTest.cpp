@@ -8,7 +8,9 @@
 
 #include <Eigen/Dense>
 #include <array>
+#include <cstring>
 #include <random>
+#include <utility>
 
 #include "tcl/analysis/system/LinearSolver.h"
 
@@ -264,6 +266,127 @@ TEST(SparseLdltTest, GridOfSixDofNodesSolvesLikeDenseCholesky) {
   const Eigen::VectorXd expected = dense.llt().solve(b);
   EXPECT_LT((x - expected).norm(), 1e-9 * expected.norm());
   EXPECT_LT(relativeResidual(A, x, b), kSolveTol);
+}
+
+/// Factorises and solves A x = b with `threads` threads; the pivots and x.
+std::pair<Eigen::VectorXd, Eigen::VectorXd> factorAndSolve(SparseLdlt& ldlt,
+                                                           const Eigen::SparseMatrix<double>& A,
+                                                           const Eigen::VectorXd& b, int threads) {
+  ldlt.setThreads(threads);
+  EXPECT_TRUE(ok(ldlt.factorize(A))) << threads << " threads";
+  Eigen::VectorXd x;
+  ldlt.solve(b, x);
+  return {ldlt.pivots(), x};
+}
+
+bool sameBits(const Eigen::VectorXd& a, const Eigen::VectorXd& b) {
+  return a.size() == b.size() &&
+         std::memcmp(a.data(), b.data(), static_cast<std::size_t>(a.size()) * sizeof(double)) == 0;
+}
+
+TEST(SparseLdltTest, LongChainIsSplitIntoTwoHalvesAndASmallSeparator) {
+  // 150 nodes in a row (450 equations): a breadth-first level across the middle cuts it, a
+  // few nodes wide (the long links reach 7 nodes on), into halves within 40/60 of each other.
+  const Eigen::SparseMatrix<double> A = chain(150, 0.1, 31);
+  SparseLdlt ldlt;
+  ldlt.analyze(A);
+  const SparseLdlt::Split split = ldlt.split();
+  const int n = static_cast<int>(A.rows());
+  EXPECT_EQ(split.first + split.second + split.separator, n);
+  EXPECT_GT(split.separator, 0);
+  EXPECT_LE(16 * split.separator, n);
+  EXPECT_LE(5 * std::abs(split.first - split.second), split.first + split.second);
+  const Eigen::VectorXd b = Eigen::VectorXd::LinSpaced(n, -1.0, 2.0);
+  const auto [pivots, x] = factorAndSolve(ldlt, A, b, 1);
+  const Eigen::VectorXd expected = Eigen::MatrixXd(A).llt().solve(b);
+  EXPECT_LT((x - expected).norm(), kSolveTol * expected.norm());
+  EXPECT_LT(relativeResidual(A, x, b), kSolveTol);
+  EXPECT_GT(pivots.minCoeff(), 0.0);
+}
+
+TEST(SparseLdltTest, SplitOrderGivesTheSameBitsOnOneAndTwoThreads) {
+  // The halves on two threads (or one after the other when the team has one): the pivots and
+  // the solution are the one-thread ones bit for bit, over refactorisations with new values
+  // and for an indefinite matrix (negative pivots in either half).
+  Eigen::SparseMatrix<double> A = chain(120, 0.05, 32);
+  SparseLdlt ldlt;
+  ldlt.analyze(A);
+  ASSERT_GT(ldlt.split().separator, 0);
+  const Eigen::VectorXd b = Eigen::VectorXd::LinSpaced(A.rows(), 3.0, -1.0);
+  for (int round = 0; round < 3; ++round) {
+    if (round == 1) addToDiagonal(A, 0.3);
+    if (round == 2) {
+      const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eig{Eigen::MatrixXd(A)};
+      addToDiagonal(A, -0.5 * (eig.eigenvalues()(2) + eig.eigenvalues()(3)));
+    }
+    const auto [pivots1, x1] = factorAndSolve(ldlt, A, b, 1);
+    const auto [pivots2, x2] = factorAndSolve(ldlt, A, b, 2);
+    EXPECT_TRUE(sameBits(pivots1, pivots2)) << "round " << round;
+    EXPECT_TRUE(sameBits(x1, x2)) << "round " << round;
+    EXPECT_LT(relativeResidual(A, x2, b), 1e-8) << "round " << round;
+    if (round == 2) {
+      EXPECT_EQ((pivots2.array() < 0.0).count(), 3);  // Sylvester's law of inertia
+    }
+  }
+}
+
+TEST(SparseLdltTest, SmallOrWellConnectedMatricesAreNotSplit) {
+  // Below 192 equations the halves are not worth a thread; a lattice whose every level is a
+  // large share of it has no small separator: both keep the one minimum-degree order.
+  SparseLdlt small;
+  small.analyze(chain(40, 0.1, 33));
+  EXPECT_EQ(small.split().separator, 0);
+  constexpr int n = 200;  // every equation coupled to the next 30: levels of 30 equations
+  Eigen::MatrixXd dense = Eigen::MatrixXd::Zero(n, n);
+  for (int i = 0; i < n; ++i)
+    for (int j = i + 1; j < std::min(n, i + 31); ++j) dense(i, j) = dense(j, i) = -0.01;
+  dense.diagonal().array() = 1.0;
+  SparseLdlt wide;
+  const Eigen::SparseMatrix<double> A = dense.sparseView(0.0, 0.0);
+  wide.analyze(A);
+  EXPECT_EQ(wide.split().separator, 0);
+  EXPECT_EQ(wide.split().first, n);
+}
+
+TEST(SparseLdltTest, SplitOrderOfTwoUnconnectedChainsSolvesLikeDense) {
+  // Two chains with no coupling: the search reaches one, whose middle level is the separator,
+  // and the other joins the smaller half.
+  const Eigen::SparseMatrix<double> a = chain(90, 0.2, 34), c = chain(30, 0.2, 35);
+  const int na = static_cast<int>(a.rows()), n = na + static_cast<int>(c.rows());
+  std::vector<Eigen::Triplet<double>> t;
+  for (int j = 0; j < a.outerSize(); ++j)
+    for (Eigen::SparseMatrix<double>::InnerIterator it(a, j); it; ++it)
+      t.emplace_back(it.row(), it.col(), it.value());
+  for (int j = 0; j < c.outerSize(); ++j)
+    for (Eigen::SparseMatrix<double>::InnerIterator it(c, j); it; ++it)
+      t.emplace_back(na + it.row(), na + it.col(), it.value());
+  Eigen::SparseMatrix<double> A(n, n);
+  A.setFromTriplets(t.begin(), t.end());
+  A.makeCompressed();
+  SparseLdlt ldlt;
+  ldlt.analyze(A);
+  const Eigen::VectorXd b = Eigen::VectorXd::LinSpaced(n, 1.0, -2.0);
+  const auto [pivots1, x1] = factorAndSolve(ldlt, A, b, 1);
+  const auto [pivots2, x2] = factorAndSolve(ldlt, A, b, 2);
+  const Eigen::VectorXd expected = Eigen::MatrixXd(A).llt().solve(b);
+  EXPECT_LT((x1 - expected).norm(), kSolveTol * expected.norm());
+  EXPECT_TRUE(sameBits(x1, x2));
+}
+
+TEST(SparseLdltTest, ZeroPivotInEitherHalfIsSingularOnTwoThreads) {
+  for (const int row : {10, 400}) {
+    Eigen::SparseMatrix<double> A = chain(150, 1.0, 36);
+    for (int j = 0; j < A.cols(); ++j)
+      for (Eigen::SparseMatrix<double>::InnerIterator it(A, j); it; ++it)
+        if (it.row() == row || j == row) it.valueRef() = 0.0;
+    SparseLdlt ldlt;
+    ldlt.analyze(A);
+    ASSERT_GT(ldlt.split().separator, 0);
+    for (const int threads : {1, 2}) {
+      ldlt.setThreads(threads);
+      EXPECT_EQ(ldlt.factorize(A), Status::Singular) << "row " << row << ", " << threads;
+    }
+  }
 }
 
 }  // namespace
