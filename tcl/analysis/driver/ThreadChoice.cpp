@@ -19,6 +19,7 @@ ThreadChoice::ThreadChoice(int available) noexcept : available_(std::max(availab
 
 void ThreadChoice::reset(std::size_t sharedWork) noexcept {
   recorded_ = 0;
+  trials_ = 0;
   chosen_ = 1;
   measured_ = false;
   ratio_ = 1.0;
@@ -53,9 +54,16 @@ void ThreadChoice::record(double seconds, int iterations) noexcept {
   std::nth_element(ratio.begin(), middle, ratio.end());
   double median = *middle;
   if (kPairs % 2 == 0) median = 0.5 * (median + *std::max_element(ratio.begin(), middle));
-  chosen_ = median <= 1.0 - kMargin ? available_ : 1;
   ratio_ = median;
-  measured_ = decided_ = true;
+  measured_ = true;
+  ++trials_;
+  const bool gain = median <= 1.0 - kMargin;
+  if (!gain && median < kRecheckBelow && trials_ < kTrials) {
+    recorded_ = kWarmUp;  // the next steps are the next trial's pairs
+    return;
+  }
+  chosen_ = gain ? available_ : 1;
+  decided_ = true;
 }
 
 }  // namespace dabs::analysis

@@ -1,8 +1,9 @@
 // SPDX-License-Identifier: MIT
 // The automatic thread choice on made-up step times: the order of its trial (warm-up on one
 // thread, then pairs of steps with the order swapped from pair to pair), the decision by the
-// median of the pairs' time-per-iteration ratios against the margin, and that a steady rise of
-// the steps' cost (a model yielding more and more) does not pass for a gain of the threads.
+// median of the pairs' time-per-iteration ratios against the margin, a second trial when the
+// first gives no clear answer, and that a steady rise of the steps' cost (a model yielding more
+// and more) does not pass for a gain of the threads.
 #include "tcl/analysis/driver/ThreadChoice.h"
 
 #include <gtest/gtest.h>
@@ -50,7 +51,7 @@ TEST(ThreadChoiceTest, FewerThanTwoElementsAreDecidedAtOnce) {
 
 TEST(ThreadChoiceTest, TrialWarmsUpOnOneThreadThenAlternatesInSwappedPairs) {
   ThreadChoice choice(2);
-  const auto asked = runTrial(choice, [](int, int) { return 1.0; });
+  const auto asked = runTrial(choice, [](int n, int) { return n == 2 ? 0.6 : 1.0; });
   const std::vector<int> expected{1, 1,                           // warm-up
                                   1, 2, 2, 1, 1, 2, 2, 1, 1, 2,   // pairs 0-4
                                   2, 1, 1, 2, 2, 1, 1, 2, 2, 1};  // pairs 5-9
@@ -66,16 +67,63 @@ TEST(ThreadChoiceTest, KeepsTheThreadsWhenTheySaveMoreThanTheMargin) {
   EXPECT_EQ(choice.next(), 2);
 }
 
-TEST(ThreadChoiceTest, OneThreadWhenTheGainIsWithinTheMargin) {
+/// The steps of a trial after the first: its pairs alone (no warm-up).
+template <class Time>
+std::vector<int> runNextTrial(ThreadChoice& choice, Time time, int firstStep) {
+  std::vector<int> asked;
+  for (int step = firstStep; step < firstStep + 2 * ThreadChoice::kPairs; ++step) {
+    const int n = choice.next();
+    asked.push_back(n);
+    choice.record(2.0 * time(n, step), 2);
+  }
+  return asked;
+}
+
+// A gain within the margin is no clear answer: a second trial (pairs alone, in the same swapped
+// order) measures again, and the same gain then keeps one thread.
+TEST(ThreadChoiceTest, OneThreadWhenTheGainIsWithinTheMarginTwice) {
   ThreadChoice choice(2);
-  runTrial(choice, [](int n, int) { return n == 2 ? 0.97 : 1.0; });
+  const auto time = [](int n, int) { return n == 2 ? 0.97 : 1.0; };
+  runTrial(choice, time);
+  EXPECT_NEAR(choice.ratio(), 0.97, 1e-12);
+  EXPECT_TRUE(choice.measured());
+  EXPECT_FALSE(choice.decided());
+  const auto asked = runNextTrial(choice, time, kTrialSteps);
+  const std::vector<int> expected{1, 2, 2, 1, 1, 2, 2, 1, 1, 2, 2, 1, 1, 2, 2, 1, 1, 2, 2, 1};
+  EXPECT_EQ(asked, expected);
+  EXPECT_TRUE(choice.decided());
   EXPECT_NEAR(choice.ratio(), 0.97, 1e-12);
   EXPECT_EQ(choice.next(), 1);
+}
+
+// Another job's work during the first trial's two-thread steps hides a gain of 40 %: the second
+// trial finds it and keeps the threads.
+TEST(ThreadChoiceTest, ASecondTrialFindsTheGainANoisyFirstOneMissed) {
+  ThreadChoice choice(2);
+  runTrial(choice, [](int n, int) { return n == 2 ? 1.02 : 1.0; });
+  ASSERT_FALSE(choice.decided());
+  runNextTrial(
+      choice, [](int n, int) { return n == 2 ? 0.6 : 1.0; }, kTrialSteps);
+  ASSERT_TRUE(choice.decided());
+  EXPECT_NEAR(choice.ratio(), 0.6, 1e-12);
+  EXPECT_EQ(choice.next(), 2);
+}
+
+// A clear loss (past kRecheckBelow, 1.5) decides at once; a gain past the margin too.
+TEST(ThreadChoiceTest, AClearAnswerIsNotMeasuredAgain) {
+  for (const double twoThreads : {1.6, 0.6}) {
+    ThreadChoice choice(2);
+    runTrial(choice, [&](int n, int) { return n == 2 ? twoThreads : 1.0; });
+    EXPECT_TRUE(choice.decided()) << twoThreads;
+  }
 }
 
 TEST(ThreadChoiceTest, OneThreadWhenTheThreadsAreSlower) {
   ThreadChoice choice(2);
   runTrial(choice, [](int n, int) { return n == 2 ? 1.2 : 1.0; });
+  runNextTrial(
+      choice, [](int n, int) { return n == 2 ? 1.2 : 1.0; }, kTrialSteps);
+  EXPECT_TRUE(choice.decided());
   EXPECT_EQ(choice.next(), 1);
 }
 
@@ -85,11 +133,15 @@ TEST(ThreadChoiceTest, OneThreadWhenTheThreadsAreSlower) {
 // = 0.91 for the threads, past the margin.
 TEST(ThreadChoiceTest, ASteadyRiseOfTheStepsCostIsNoGain) {
   ThreadChoice choice(2);
-  runTrial(choice, [](int, int step) {
+  const auto rise = [](int, int step) {
     double t = 1.0;
     for (int i = 0; i < step; ++i) t *= 1.1;
     return t;
-  });
+  };
+  runTrial(choice, rise);
+  EXPECT_NEAR(choice.ratio(), 0.5 * (1.1 + 1.0 / 1.1), 1e-12);
+  runNextTrial(choice, rise, kTrialSteps);  // no clear answer: measured again, the same
+  EXPECT_TRUE(choice.decided());
   EXPECT_NEAR(choice.ratio(), 0.5 * (1.1 + 1.0 / 1.1), 1e-12);
   EXPECT_EQ(choice.next(), 1);
 }
@@ -102,7 +154,7 @@ TEST(ThreadChoiceTest, ResetMeasuresAnew) {
   EXPECT_FALSE(choice.decided());
   EXPECT_FALSE(choice.measured());
   EXPECT_EQ(choice.next(), 1);
-  runTrial(choice, [](int n, int) { return n == 2 ? 1.5 : 1.0; });
+  runTrial(choice, [](int n, int) { return n == 2 ? 1.8 : 1.0; });
   EXPECT_EQ(choice.next(), 1);
 }
 
