@@ -80,7 +80,6 @@ void ForceBeamColumn<Ndm>::initialize(const NodalCoordinates& x) {
   this->initializeGeometry(x);
   const double length = this->transf_->initialLength();
   bmat_.clear();
-  initialFlex_.clear();
   fe_.setZero();
   State s;
   for (std::size_t i = 0; i < this->points_.size(); ++i) {
@@ -91,7 +90,6 @@ void ForceBeamColumn<Ndm>::initialize(const NodalCoordinates& x) {
       throw InputError("section", std::to_string(p.section->tag()) +
                                       " has a singular initial tangent (missing -GJ?)");
     s.fs[i] = f;
-    initialFlex_.push_back(f);
     s.e[i] = p.section->getDeformation();
     s.sr[i] = p.section->getStressResultant();
     fe_ += p.weight * length * bmat_[i].transpose() * f * bmat_[i];
@@ -162,7 +160,7 @@ Status ForceBeamColumn<Ndm>::iterateWith(State& s, const Basic& target, Correcti
       typename View::Vec force = b * s.q;
       if (!sp_.empty()) force += View::vec(sp_[static_cast<std::size_t>(i)]);
       if (initial)
-        e += View::mat(initialFlex_[static_cast<std::size_t>(i)]) * (force - sr);
+        e += View::mat(virgin_.fs[i]) * (force - sr);  // the initial flexibility
       else
         e += fs * (force - sr);
       const Status st = sec.setTrialDeformation(s.e[i]);

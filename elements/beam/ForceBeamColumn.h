@@ -94,12 +94,13 @@ class ForceBeamColumn final : public SectionBeamColumn<Ndm> {
   int maxIter_;
   double tol_;
   std::vector<SectionBasicMatrix<kBasic>> bmat_;
-  BasicMatrix fe_ = BasicMatrix::Zero();    ///< initial (elastic) flexibility
-  std::vector<SectionMatrix> initialFlex_;  ///< each point's initial section flexibility
+  BasicMatrix fe_ = BasicMatrix::Zero();  ///< initial (elastic) flexibility
   /// Section forces of the member loads in the basic system, per point (empty without loads).
   std::vector<SectionVector> sp_;
   State trial_, committed_;
-  State virgin_;                  ///< the state at zero deformation, formed once by initialize()
+  /// The state at zero deformation, formed once by initialize(); its fs are the sections'
+  /// initial flexibilities, which the initial-flexibility strategies iterate with.
+  State virgin_;
   State attemptStart_;            ///< an update's start point, for its second and third strategy
   bool trialIsCommitted_ = true;  ///< trial_ equals committed_ (no update since commit/revert)
   /// Updated since initialize(), revertToStart() or the last change of member loads.

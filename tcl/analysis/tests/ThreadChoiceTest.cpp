@@ -15,17 +15,23 @@ namespace {
 
 constexpr int kTrialSteps = ThreadChoice::kWarmUp + 2 * ThreadChoice::kPairs;
 
-/// Runs the trial with a step time `time(threads, step)` per iteration (two iterations a step)
-/// and returns the thread counts it asked for.
+/// Runs steps [first, first + count) with a step time `time(threads, step)` per iteration (two
+/// iterations a step) and returns the thread counts the choice asked for.
 template <class Time>
-std::vector<int> runTrial(ThreadChoice& choice, Time time) {
+std::vector<int> runSteps(ThreadChoice& choice, Time time, int first, int count) {
   std::vector<int> asked;
-  for (int step = 0; step < kTrialSteps; ++step) {
+  for (int step = first; step < first + count; ++step) {
     const int n = choice.next();
     asked.push_back(n);
     choice.record(2.0 * time(n, step), 2);
   }
   return asked;
+}
+
+/// The first trial: warm-up and pairs.
+template <class Time>
+std::vector<int> runTrial(ThreadChoice& choice, Time time) {
+  return runSteps(choice, time, 0, kTrialSteps);
 }
 
 TEST(ThreadChoiceTest, OneAvailableThreadIsDecidedAtOnce) {
@@ -67,16 +73,10 @@ TEST(ThreadChoiceTest, KeepsTheThreadsWhenTheySaveMoreThanTheMargin) {
   EXPECT_EQ(choice.next(), 2);
 }
 
-/// The steps of a trial after the first: its pairs alone (no warm-up).
+/// The second trial, after the first: its pairs alone (no warm-up).
 template <class Time>
-std::vector<int> runNextTrial(ThreadChoice& choice, Time time, int firstStep) {
-  std::vector<int> asked;
-  for (int step = firstStep; step < firstStep + 2 * ThreadChoice::kPairs; ++step) {
-    const int n = choice.next();
-    asked.push_back(n);
-    choice.record(2.0 * time(n, step), 2);
-  }
-  return asked;
+std::vector<int> runNextTrial(ThreadChoice& choice, Time time) {
+  return runSteps(choice, time, kTrialSteps, 2 * ThreadChoice::kPairs);
 }
 
 // A gain within the margin is no clear answer: a second trial (pairs alone, in the same swapped
@@ -88,7 +88,7 @@ TEST(ThreadChoiceTest, OneThreadWhenTheGainIsWithinTheMarginTwice) {
   EXPECT_NEAR(choice.ratio(), 0.97, 1e-12);
   EXPECT_TRUE(choice.measured());
   EXPECT_FALSE(choice.decided());
-  const auto asked = runNextTrial(choice, time, kTrialSteps);
+  const auto asked = runNextTrial(choice, time);
   const std::vector<int> expected{1, 2, 2, 1, 1, 2, 2, 1, 1, 2, 2, 1, 1, 2, 2, 1, 1, 2, 2, 1};
   EXPECT_EQ(asked, expected);
   EXPECT_TRUE(choice.decided());
@@ -102,8 +102,7 @@ TEST(ThreadChoiceTest, ASecondTrialFindsTheGainANoisyFirstOneMissed) {
   ThreadChoice choice(2);
   runTrial(choice, [](int n, int) { return n == 2 ? 1.02 : 1.0; });
   ASSERT_FALSE(choice.decided());
-  runNextTrial(
-      choice, [](int n, int) { return n == 2 ? 0.6 : 1.0; }, kTrialSteps);
+  runNextTrial(choice, [](int n, int) { return n == 2 ? 0.6 : 1.0; });
   ASSERT_TRUE(choice.decided());
   EXPECT_NEAR(choice.ratio(), 0.6, 1e-12);
   EXPECT_EQ(choice.next(), 2);
@@ -121,8 +120,7 @@ TEST(ThreadChoiceTest, AClearAnswerIsNotMeasuredAgain) {
 TEST(ThreadChoiceTest, OneThreadWhenTheThreadsAreSlower) {
   ThreadChoice choice(2);
   runTrial(choice, [](int n, int) { return n == 2 ? 1.2 : 1.0; });
-  runNextTrial(
-      choice, [](int n, int) { return n == 2 ? 1.2 : 1.0; }, kTrialSteps);
+  runNextTrial(choice, [](int n, int) { return n == 2 ? 1.2 : 1.0; });
   EXPECT_TRUE(choice.decided());
   EXPECT_EQ(choice.next(), 1);
 }
@@ -140,7 +138,7 @@ TEST(ThreadChoiceTest, ASteadyRiseOfTheStepsCostIsNoGain) {
   };
   runTrial(choice, rise);
   EXPECT_NEAR(choice.ratio(), 0.5 * (1.1 + 1.0 / 1.1), 1e-12);
-  runNextTrial(choice, rise, kTrialSteps);  // no clear answer: measured again, the same
+  runNextTrial(choice, rise);  // no clear answer: measured again, the same
   EXPECT_TRUE(choice.decided());
   EXPECT_NEAR(choice.ratio(), 0.5 * (1.1 + 1.0 / 1.1), 1e-12);
   EXPECT_EQ(choice.next(), 1);
