@@ -2,7 +2,6 @@
 #include "tcl/analysis/algorithms/NewtonRaphson.h"
 
 #include <limits>
-#include <optional>
 
 namespace dabs::analysis {
 
@@ -11,21 +10,7 @@ Status NewtonRaphson::solveCurrentStep(LinearSystem& system, Integrator& integra
   if (test == nullptr) return Status::Failed;
   iterations_ = 0;
   const bool linear = system.model().allLinear();
-  // Newton with the current tangent forms the residual and, unless the iteration has converged,
-  // the tangent of the same state next: on more than one thread the two are assembled at once
-  // (the tangent is wasted when the test says converged, a time the second thread would idle).
-  const bool together =
-      !modified_ && !linear && tangent_ == Tangent::Current && system.model().threads() > 1;
-  std::optional<AssemblyCoefficients> assembled;  // the tangent assembled with the residual
-  auto formResidual = [&](const AssemblyCoefficients& c) {
-    if (together) {
-      system.formResidualAndTangent(c);
-      assembled = c;
-    } else {
-      system.formResidual(c);
-    }
-  };
-  formResidual(integrator.coefficients(StiffnessKind::Current));
+  system.formResidual(integrator.coefficients(StiffnessKind::Current));
   test->start();
   bool formTangent = true;  // modified Newton forms it at the first iteration (and after a switch)
   bool holding = false;     // some element's status is held
@@ -40,12 +25,9 @@ Status NewtonRaphson::solveCurrentStep(LinearSystem& system, Integrator& integra
       formTangent = false;
       // A constant matrix (initial stiffness, or a linear model) is factorised only when the
       // step coefficients change; a current tangent at every iteration otherwise.
-      const Status s = assembled && assembled->sameMatrix(c)
-                           ? system.factorizeAssembled(c)
-                           : system.formTangent(c, kind == StiffnessKind::Initial || linear);
+      const Status s = system.formTangent(c, kind == StiffnessKind::Initial || linear);
       if (!ok(s)) return s;
     }
-    assembled.reset();
     Status s = system.solve();
     if (!ok(s)) return s;
     s = integrator.update(system, system.X);
@@ -61,10 +43,9 @@ Status NewtonRaphson::solveCurrentStep(LinearSystem& system, Integrator& integra
         system.X *= scale;
       }
     }
-    formResidual(c);
+    system.formResidual(c);
     countIteration();
     const Next next = afterTest(test->test(system.X, system.B), system, c);
-    if (next == Next::Switched) assembled.reset();  // the elements were updated again
     // Modified Newton forms its tangent anew when it holds the statuses (its tangent is that of
     // the step's start, which may miss a contact that closed since), after a switch, and while
     // statuses are held whenever the norm grows (a held release force is strongly curved).

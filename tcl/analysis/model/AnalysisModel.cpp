@@ -13,7 +13,6 @@
 #include <algorithm>
 #include <atomic>
 #include <cstring>
-#include <exception>
 #include <limits>
 #include <map>
 #include <set>
@@ -585,34 +584,6 @@ void AnalysisModel::formResidual(const AssemblyCoefficients& c, Eigen::VectorXd&
 const Eigen::SparseMatrix<double>& AnalysisModel::formTangent(const AssemblyCoefficients& c) {
   tangent_.form(c, A_.valuePtr(), static_cast<std::size_t>(A_.nonZeros()), awakeLinks(), nodes_,
                 penalties_);
-  return A_;
-}
-
-const Eigen::SparseMatrix<double>& AnalysisModel::formResidualAndTangent(
-    const AssemblyCoefficients& c, Eigen::VectorXd& B) {
-  if (threads_ < 2 || A_.nonZeros() == 0) {
-    formResidual(c, B);
-    return formTangent(c);
-  }
-  // An exception must not leave an OpenMP section: each is kept and the first rethrown after.
-  std::exception_ptr residualError, tangentError;
-#pragma omp parallel sections num_threads(2)
-  {
-#pragma omp section
-    try {
-      formResidual(c, B);
-    } catch (...) {
-      residualError = std::current_exception();
-    }
-#pragma omp section
-    try {
-      formTangent(c);
-    } catch (...) {
-      tangentError = std::current_exception();
-    }
-  }
-  if (residualError) std::rethrow_exception(residualError);
-  if (tangentError) std::rethrow_exception(tangentError);
   return A_;
 }
 

@@ -105,12 +105,6 @@ class AnalysisModel {
   void formResidual(const AssemblyCoefficients& c, Eigen::VectorXd& B) const;
   /// Tangent A = cK K + cC C + cM M; returns the matrix (pattern fixed at build).
   const Eigen::SparseMatrix<double>& formTangent(const AssemblyCoefficients& c);
-  /// formResidual and formTangent of the same state, on two threads at once when the model runs
-  /// on more than one: each is formed whole by one thread, by the same code, so both are the
-  /// serial ones to the bit. They read the elements' states and write apart (B; the matrix
-  /// values and the tangent's constant parts; each scatter's own buffer for each).
-  const Eigen::SparseMatrix<double>& formResidualAndTangent(const AssemblyCoefficients& c,
-                                                            Eigen::VectorXd& B);
   /// Mass matrix (elements and nodes) in equation space.
   Eigen::SparseMatrix<double> formMass();
   /// Equation of (node, dof), or -1 when the dof is prescribed.

@@ -32,26 +32,13 @@ long LinearSystem::keptPivots() const noexcept { return sumOverSolvers(&LinearSo
 
 Status LinearSystem::formTangent(const AssemblyCoefficients& c, bool reuse) {
   if (reuse && factored_ && c.sameMatrix(lastCoefficients_)) return Status::Ok;
-  if (model_.numEquations() > 0) model_.formTangent(c);
-  return factorizeAssembled(c);
-}
-
-void LinearSystem::formResidualAndTangent(const AssemblyCoefficients& c) {
-  if (model_.numEquations() == 0) {
-    formResidual(c);
-    return;
-  }
-  model_.formResidualAndTangent(c, B);
-}
-
-Status LinearSystem::factorizeAssembled(const AssemblyCoefficients& c) {
   if (model_.numEquations() == 0) {  // everything is prescribed: nothing to factorise
     factored_ = true;
     lastCoefficients_ = c;
     modalScale_ = 0.0;
     return Status::Ok;
   }
-  const auto& A = model_.pattern();  // the values the last assembly wrote
+  const auto& A = model_.formTangent(c);
   factored_ = false;
   // The model's threads, for a factorisation that can share its work (results do not change).
   for (LinearSolver* solver : {primary_.get(), general_.get(), definite_.get()})

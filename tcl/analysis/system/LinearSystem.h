@@ -23,14 +23,6 @@ class LinearSystem {
   [[nodiscard]] Status formTangent(const AssemblyCoefficients& c, bool reuse = false);
   /// Assembles the residual into B.
   void formResidual(const AssemblyCoefficients& c);
-  /// Assembles the residual into B and the tangent with coefficients c, at once on two threads
-  /// when the model has them (AnalysisModel::formResidualAndTangent), without factorising: a
-  /// Newton iteration forms the residual and then, unless it has converged, the tangent of the
-  /// same state. factorizeAssembled factorises it.
-  void formResidualAndTangent(const AssemblyCoefficients& c);
-  /// Factorises the tangent formResidualAndTangent assembled with these coefficients, as
-  /// formTangent(c) would have (the caller knows that no element changed since).
-  [[nodiscard]] Status factorizeAssembled(const AssemblyCoefficients& c);
   /// Solves A X = B with the last factorisation.
   [[nodiscard]] Status solve();
   /// Solves A x = b with the last factorisation (e.g. for a reference load).

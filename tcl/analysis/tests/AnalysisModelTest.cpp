@@ -24,7 +24,6 @@
 #include <gtest/gtest.h>
 
 #include <Eigen/Dense>
-#include <cstring>
 #include <limits>
 #include <map>
 #include <memory>
@@ -359,41 +358,6 @@ TEST_F(AnalysisModelTest, InactiveElementLeavesAndReentersTheAssembly) {
     expectMatches(am, ConstraintKind::Transformation, c, 1.0);
   }
   EXPECT_TRUE(wasOpen && wasClosed);
-}
-
-// The residual and the tangent formed together on two threads (as Newton forms them) are the
-// ones formed one after the other on one thread, bit for bit, and the reference's; with the gate
-// opening and closing and new coefficients between the trials, so that the tangent's thread
-// forms new constant parts while the residual's runs.
-TEST_F(AnalysisModelTest, ResidualAndTangentTogetherOnTwoThreadsAreTheSerialOnes) {
-  std::mt19937 rng(4711);
-  std::bernoulli_distribution flip(0.5), newCoefficients(0.4);
-  AnalysisModel am(domain, ConstraintKind::Transformation, NumbererKind::RCM);
-  am.build();
-  randomRayleigh(am, rng);
-  am.applyLoad(0.7);
-  AssemblyCoefficients c = randomCoefficients(rng);
-  for (int trial = 0; trial < 30; ++trial) {
-    gate->setClosed(flip(rng));
-    if (newCoefficients(rng)) c = randomCoefficients(rng);
-    randomState(am, rng);
-    am.setThreads(1);
-    VectorXd serialB;
-    am.formResidual(c, serialB);
-    const MatrixXd serialA = MatrixXd(am.formTangent(c));
-    AssemblyCoefficients other = c;  // overwrites the matrix values: the next call must form A
-    other.cK *= 2.0;
-    am.formTangent(other);
-    am.setThreads(2);
-    VectorXd B = VectorXd::Constant(serialB.size(), std::numeric_limits<double>::quiet_NaN());
-    const MatrixXd A = MatrixXd(am.formResidualAndTangent(c, B));
-    ASSERT_EQ(B.size(), serialB.size());
-    EXPECT_EQ(std::memcmp(B.data(), serialB.data(), sizeof(double) * B.size()), 0) << trial;
-    EXPECT_EQ(std::memcmp(A.data(), serialA.data(), sizeof(double) * A.size()), 0) << trial;
-    const Reference ref = reference(am, ConstraintKind::Transformation, c, 0.7);
-    expectClose(A, ref.A, "tangent");
-    expectClose(B, ref.B, "residual");
-  }
 }
 
 // The tangent's cache: the same request twice gives the same matrix, bit for bit; a change of
