@@ -23,7 +23,9 @@ void ThreadChoice::reset(std::size_t sharedWork) noexcept {
   chosen_ = 1;
   measured_ = false;
   ratio_ = 1.0;
-  decided_ = available_ < 2 || sharedWork < 2;
+  sinceChoice_ = 0;
+  fixed_ = available_ < 2 || sharedWork < 2;
+  decided_ = fixed_;
 }
 
 int ThreadChoice::next() const noexcept {
@@ -37,7 +39,14 @@ int ThreadChoice::next() const noexcept {
 }
 
 void ThreadChoice::record(double seconds, int iterations) noexcept {
-  if (decided_) return;
+  if (fixed_) return;
+  if (decided_) {
+    if (++sinceChoice_ < kRevisitAfter) return;
+    decided_ = false;  // measured again: the pairs alone, the choice's steps were the warm-up
+    trials_ = 0;
+    recorded_ = kWarmUp;
+    return;
+  }
   const int k = recorded_ - kWarmUp;
   if (k >= 0) {
     const double perIteration = seconds / std::max(iterations, 1);
@@ -64,6 +73,7 @@ void ThreadChoice::record(double seconds, int iterations) noexcept {
   }
   chosen_ = gain ? available_ : 1;
   decided_ = true;
+  sinceChoice_ = 0;
 }
 
 }  // namespace dabs::analysis

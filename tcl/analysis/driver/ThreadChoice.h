@@ -22,6 +22,13 @@ namespace dabs::analysis {
 /// bit-identical at any thread count (AnalysisModel::updateElements), so the trial changes
 /// nothing but the time.
 ///
+/// A choice is measured again every kRevisitAfter steps (a trial of pairs alone, with the same
+/// rules): what the machine gives a second core changes over a run. On the 2-core machine of
+/// 2026-11-29 (03:48 UTC) the trial on the 10-span bridge's early steps measured 1.12 to 1.26 in
+/// 3 of 7 runs, twice in a row, and kept one thread for runs in which two threads gave 1.47 over
+/// one. A revisit costs a run whose choice was right about half its one-thread steps' extra
+/// time: 10 steps in 420 (1.3 % where the threads save a third).
+///
 /// Why measured: two threads pay at 10 and 30 spans of the case study's bridge (1.5 times), not at
 /// 3 or 100 spans nor on a 2D RC frame of 16 elements (0.86): the share of the time in element
 /// updates, the memory the fiber states stream through and what else runs on the machine decide,
@@ -37,9 +44,12 @@ class ThreadChoice {
   void reset(std::size_t sharedWork = 2) noexcept;
   /// The thread count for the next step.
   int next() const noexcept;
-  /// True once the choice is made (after the trial, or at once with one thread available).
+  /// True while a choice is in force (after a trial, or for good with one thread available or
+  /// nothing to share); false during a trial.
   bool decided() const noexcept { return decided_; }
-  /// Records the step just run with next() threads: its wall time and its iterations.
+  /// Records the step just run with next() threads: its wall time and its iterations. Call it
+  /// after every converged step, decided or not: the steps since the choice count towards the
+  /// next trial.
   void record(double seconds, int iterations) noexcept;
   /// True once a trial has measured (false with one thread available).
   bool measured() const noexcept { return measured_; }
@@ -55,8 +65,10 @@ class ThreadChoice {
   static constexpr double kMargin = 0.05;
   /// A first trial's median below this (and above 1 - kMargin) is measured again.
   static constexpr double kRecheckBelow = 1.5;
-  /// Trials at most.
+  /// Trials at most in a row (a first and the one that follows an unclear answer).
   static constexpr int kTrials = 2;
+  /// Steps run on a choice before it is measured again.
+  static constexpr int kRevisitAfter = 400;
   /// Most threads a script or DABS_THREADS may ask for.
   static constexpr int kMaxThreads = 256;
 
@@ -67,6 +79,8 @@ class ThreadChoice {
  private:
   int available_;
   bool decided_ = false;
+  bool fixed_ = false;   ///< nothing to choose (one thread available, or nothing to share)
+  int sinceChoice_ = 0;  ///< steps run on the choice in force
   int chosen_ = 1;
   int recorded_ = 0;  ///< steps recorded since reset() or since the trial before
   int trials_ = 0;    ///< trials completed since reset()

@@ -2,8 +2,9 @@
 // The automatic thread choice on made-up step times: the order of its trial (warm-up on one
 // thread, then pairs of steps with the order swapped from pair to pair), the decision by the
 // median of the pairs' time-per-iteration ratios against the margin, a second trial when the
-// first gives no clear answer, and that a steady rise of the steps' cost (a model yielding more
-// and more) does not pass for a gain of the threads.
+// first gives no clear answer, the trials that measure a choice again after a while, and that a
+// steady rise of the steps' cost (a model yielding more and more) does not pass for a gain of the
+// threads.
 #include "tcl/analysis/driver/ThreadChoice.h"
 
 #include <gtest/gtest.h>
@@ -142,6 +143,50 @@ TEST(ThreadChoiceTest, ASteadyRiseOfTheStepsCostIsNoGain) {
   EXPECT_TRUE(choice.decided());
   EXPECT_NEAR(choice.ratio(), 0.5 * (1.1 + 1.0 / 1.1), 1e-12);
   EXPECT_EQ(choice.next(), 1);
+}
+
+// A choice holds for kRevisitAfter steps and is then measured again (pairs alone, in the swapped
+// order): the machine that gave the threads 40 % now gives them a clear loss, and the choice
+// follows it; the next revisit finds the gain again.
+TEST(ThreadChoiceTest, AChoiceIsMeasuredAgainAfterKRevisitAfterSteps) {
+  ThreadChoice choice(2);
+  const auto gain = [](int n, int) { return n == 2 ? 0.6 : 1.0; };
+  const auto loss = [](int n, int) { return n == 2 ? 1.6 : 1.0; };
+  runTrial(choice, gain);
+  ASSERT_EQ(choice.next(), 2);
+  int step = kTrialSteps;
+  const auto held = runSteps(choice, loss, step, ThreadChoice::kRevisitAfter);
+  step += ThreadChoice::kRevisitAfter;
+  EXPECT_EQ(held, std::vector<int>(ThreadChoice::kRevisitAfter, 2));
+  EXPECT_FALSE(choice.decided());
+  EXPECT_NEAR(choice.ratio(), 0.6, 1e-12);  // the last trial's until the new one ends
+  const auto revisit = runSteps(choice, loss, step, 2 * ThreadChoice::kPairs);
+  step += 2 * ThreadChoice::kPairs;
+  const std::vector<int> pairs{1, 2, 2, 1, 1, 2, 2, 1, 1, 2, 2, 1, 1, 2, 2, 1, 1, 2, 2, 1};
+  EXPECT_EQ(revisit, pairs);
+  ASSERT_TRUE(choice.decided());
+  EXPECT_NEAR(choice.ratio(), 1.6, 1e-12);
+  EXPECT_EQ(choice.next(), 1);
+  EXPECT_EQ(runSteps(choice, gain, step, ThreadChoice::kRevisitAfter),
+            std::vector<int>(ThreadChoice::kRevisitAfter, 1));
+  step += ThreadChoice::kRevisitAfter;
+  EXPECT_EQ(runSteps(choice, gain, step, 2 * ThreadChoice::kPairs), pairs);
+  EXPECT_NEAR(choice.ratio(), 0.6, 1e-12);
+  EXPECT_EQ(choice.next(), 2);
+}
+
+// With nothing to choose the choice is never measured, however long the run.
+TEST(ThreadChoiceTest, NothingToChooseIsNeverMeasured) {
+  ThreadChoice one(1);
+  ThreadChoice single(2);
+  single.reset(1);
+  for (ThreadChoice* choice : {&one, &single}) {
+    const auto asked = runSteps(
+        *choice, [](int n, int) { return n == 2 ? 0.5 : 1.0; }, 0, 3 * ThreadChoice::kRevisitAfter);
+    EXPECT_EQ(asked, std::vector<int>(3 * ThreadChoice::kRevisitAfter, 1));
+    EXPECT_FALSE(choice->measured());
+    EXPECT_TRUE(choice->decided());
+  }
 }
 
 TEST(ThreadChoiceTest, ResetMeasuresAnew) {
