@@ -24,6 +24,8 @@ void ThreadChoice::reset(std::size_t sharedWork) noexcept {
   measured_ = false;
   ratio_ = 1.0;
   sinceChoice_ = 0;
+  revisitAfter_ = kRevisitAfter;
+  revisited_ = 0;
   fixed_ = available_ < 2 || sharedWork < 2;
   decided_ = fixed_;
 }
@@ -41,7 +43,8 @@ int ThreadChoice::next() const noexcept {
 void ThreadChoice::record(double seconds, int iterations) noexcept {
   if (fixed_) return;
   if (decided_) {
-    if (++sinceChoice_ < kRevisitAfter) return;
+    if (++sinceChoice_ < revisitAfter_) return;
+    revisited_ = chosen_;
     decided_ = false;  // measured again: the pairs alone, the choice's steps were the warm-up
     trials_ = 0;
     recorded_ = kWarmUp;
@@ -74,6 +77,9 @@ void ThreadChoice::record(double seconds, int iterations) noexcept {
   chosen_ = gain ? available_ : 1;
   decided_ = true;
   sinceChoice_ = 0;
+  revisitAfter_ =
+      revisited_ == chosen_ ? std::min(2 * revisitAfter_, kRevisitAtMost) : kRevisitAfter;
+  revisited_ = 0;
 }
 
 }  // namespace dabs::analysis

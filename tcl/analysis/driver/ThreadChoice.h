@@ -22,12 +22,15 @@ namespace dabs::analysis {
 /// bit-identical at any thread count (AnalysisModel::updateElements), so the trial changes
 /// nothing but the time.
 ///
-/// A choice is measured again every kRevisitAfter steps (a trial of pairs alone, with the same
-/// rules): what the machine gives a second core changes over a run. On the 2-core machine of
+/// A choice is measured again after kRevisitAfter steps (a trial of pairs alone, with the same
+/// rules): what the machine gives a second core changes over a run. Each revisit that confirms
+/// the choice doubles the steps to the next (up to kRevisitAtMost); one that changes it starts
+/// again from kRevisitAfter. On the 2-core machine of
 /// 2026-11-29 (03:48 UTC) the trial on the 10-span bridge's early steps measured 1.12 to 1.26 in
 /// 3 of 7 runs, twice in a row, and kept one thread for runs in which two threads gave 1.47 over
 /// one. A revisit costs a run whose choice was right about half its one-thread steps' extra
-/// time: 10 steps in 420 (1.3 % where the threads save a third).
+/// time: 10 steps in 420 (1.3 % where the threads save a third), and less as confirmations space
+/// the revisits out.
 ///
 /// Why measured: two threads pay at 10 and 30 spans of the case study's bridge (1.5 times), not at
 /// 3 or 100 spans nor on a 2D RC frame of 16 elements (0.86): the share of the time in element
@@ -67,8 +70,10 @@ class ThreadChoice {
   static constexpr double kRecheckBelow = 1.5;
   /// Trials at most in a row (a first and the one that follows an unclear answer).
   static constexpr int kTrials = 2;
-  /// Steps run on a choice before it is measured again.
+  /// Steps run on a new choice before it is measured again.
   static constexpr int kRevisitAfter = 400;
+  /// Most steps between revisits (after confirmations).
+  static constexpr int kRevisitAtMost = 6400;
   /// Most threads a script or DABS_THREADS may ask for.
   static constexpr int kMaxThreads = 256;
 
@@ -81,6 +86,8 @@ class ThreadChoice {
   bool decided_ = false;
   bool fixed_ = false;   ///< nothing to choose (one thread available, or nothing to share)
   int sinceChoice_ = 0;  ///< steps run on the choice in force
+  int revisitAfter_ = kRevisitAfter;  ///< steps from the choice in force to its revisit
+  int revisited_ = 0;                 ///< the choice a revisit trial measures (0: a first trial)
   int chosen_ = 1;
   int recorded_ = 0;  ///< steps recorded since reset() or since the trial before
   int trials_ = 0;    ///< trials completed since reset()

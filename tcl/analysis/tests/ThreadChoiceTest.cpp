@@ -175,6 +175,39 @@ TEST(ThreadChoiceTest, AChoiceIsMeasuredAgainAfterKRevisitAfterSteps) {
   EXPECT_EQ(choice.next(), 2);
 }
 
+// A revisit that confirms the choice doubles the steps to the next one (400, 800, 1600, up to
+// 6400); one that changes the choice starts again from 400.
+TEST(ThreadChoiceTest, ConfirmedChoicesAreRevisitedLessOften) {
+  ThreadChoice choice(2);
+  const auto gain = [](int n, int) { return n == 2 ? 0.6 : 1.0; };
+  const auto loss = [](int n, int) { return n == 2 ? 1.6 : 1.0; };
+  runTrial(choice, gain);
+  int step = kTrialSteps;
+  // Steps on the choice until the next trial starts.
+  auto stepsToRevisit = [&](auto time) {
+    int held = 0;
+    while (choice.decided()) {
+      EXPECT_EQ(choice.next(), 2);
+      choice.record(2.0 * time(choice.next(), step++), 2);
+      ++held;
+    }
+    runSteps(choice, time, step, 2 * ThreadChoice::kPairs);
+    step += 2 * ThreadChoice::kPairs;
+    return held;
+  };
+  std::vector<int> intervals;
+  for (int k = 0; k < 6; ++k) intervals.push_back(stepsToRevisit(gain));
+  EXPECT_EQ(intervals, (std::vector<int>{400, 800, 1600, 3200, 6400, 6400}));
+  EXPECT_EQ(stepsToRevisit(loss), 6400);  // this revisit finds a loss: one thread
+  ASSERT_EQ(choice.next(), 1);
+  int held = 0;
+  while (choice.decided()) {
+    choice.record(2.0, 2);
+    ++held;
+  }
+  EXPECT_EQ(held, ThreadChoice::kRevisitAfter);
+}
+
 // With nothing to choose the choice is never measured, however long the run.
 TEST(ThreadChoiceTest, NothingToChooseIsNeverMeasured) {
   ThreadChoice one(1);
