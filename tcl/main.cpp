@@ -147,7 +147,8 @@ int printHelp() {
       "\nEnvironment:\n"
       "  DABS_THREADS=n|auto            threads that update elements (as the `threads n`\n"
       "                                 command; default auto: measured on the model's first\n"
-      "                                 steps, one thread or all)\n"
+      "                                 steps and again after 400 to 6,400 steps, one thread\n"
+      "                                 or all)\n"
       "\nDocumentation: README.md at the top of the source tree (%s): the command table,\n"
       "speed against OpenSees, where dabs differs from OpenSees; docs/ beside it: the case\n"
       "study, contact (impact laws, contact stepping), bearings, ensembles and MPI.\n",

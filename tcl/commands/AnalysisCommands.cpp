@@ -188,8 +188,9 @@ void testIterCmd(Runtime& rt, ArgReader& a) {
 }
 
 // DABS extension: `threads ?n|auto?` sets how many threads update the elements (1 to 256, or
-// auto: measured on the model's first steps, ThreadChoice; results are bit-identical at any
-// count) and returns the count in force (while auto is still measuring, the next step's).
+// auto: measured on the model's first steps and again during the run, ThreadChoice; results are
+// bit-identical at any count) and returns the count in force (auto's last decision; before its
+// first, the next step's).
 void threadsCmd(Runtime& rt, ArgReader& a) {
   if (a.hasMore()) {
     const auto n = analysis::ThreadChoice::parseCount(a.word("n"));

@@ -288,7 +288,7 @@ void ensembleCmd(Runtime& rt, ArgReader& a) {
   Progress progress(static_cast<int>(pending.size()),
                     rank == 0 && (progressAsked || isatty(STDERR_FILENO) != 0));
   // The farm's processes take the cores: under more than one, an automatic thread count would try
-  // two threads against a busy core in every job's first steps, so its jobs run on one thread
+  // two threads against a busy core in every job's trials, so its jobs run on one thread
   // (a count the script asked for stands) and the choice comes back afterwards.
   struct OneThreadPerProcess {
     analysis::AnalysisBuilder& analysis;

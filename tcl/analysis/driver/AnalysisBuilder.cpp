@@ -151,7 +151,7 @@ void AnalysisBuilder::refreshModalDamping() {
 
 Status AnalysisBuilder::analyzeStep(double dt) {
   // Every step of the automatic choice is recorded: a choice is measured again after a while.
-  const bool choosing = threads_ == 0;
+  const bool choosing = threads_ == 0 && !threadChoice_.fixed();
   const auto start =
       choosing ? std::chrono::steady_clock::now() : std::chrono::steady_clock::time_point{};
   if (choosing) model_->setThreads(threadChoice_.next());

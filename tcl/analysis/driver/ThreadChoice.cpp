@@ -26,6 +26,7 @@ void ThreadChoice::reset(std::size_t sharedWork) noexcept {
   sinceChoice_ = 0;
   revisitAfter_ = kRevisitAfter;
   revisited_ = 0;
+  decisions_ = 0;
   fixed_ = available_ < 2 || sharedWork < 2;
   decided_ = fixed_;
 }
@@ -76,6 +77,7 @@ void ThreadChoice::record(double seconds, int iterations) noexcept {
   }
   chosen_ = gain ? available_ : 1;
   decided_ = true;
+  ++decisions_;
   sinceChoice_ = 0;
   revisitAfter_ =
       revisited_ == chosen_ ? std::min(2 * revisitAfter_, kRevisitAtMost) : kRevisitAfter;

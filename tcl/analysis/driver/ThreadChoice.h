@@ -25,17 +25,18 @@ namespace dabs::analysis {
 /// A choice is measured again after kRevisitAfter steps (a trial of pairs alone, with the same
 /// rules): what the machine gives a second core changes over a run. Each revisit that confirms
 /// the choice doubles the steps to the next (up to kRevisitAtMost); one that changes it starts
-/// again from kRevisitAfter. On the 2-core machine of
-/// 2026-11-29 (03:48 UTC) the trial on the 10-span bridge's early steps measured 1.12 to 1.26 in
-/// 3 of 7 runs, twice in a row, and kept one thread for runs in which two threads gave 1.47 over
-/// one. A revisit costs a run whose choice was right about half its one-thread steps' extra
-/// time: 10 steps in 420 (1.3 % where the threads save a third), and less as confirmations space
-/// the revisits out.
+/// again from kRevisitAfter. On the 2-core machine of 2026-11-29 (03:48 UTC) the trial on the
+/// 10-span bridge's early steps measured 1.12 to 1.26 in 3 of 7 runs, twice in a row, and kept
+/// one thread for runs in which two threads gave 1.47 over one. A clear revisit runs 10 of its
+/// 20 steps on the count not chosen: where two threads save a third, 10 one-thread steps cost
+/// about 5 steps' time more in 420 (1.2 %); an unclear one (a second trial) twice that; less as
+/// confirmations space the revisits out.
 ///
-/// Why measured: two threads pay at 10 and 30 spans of the case study's bridge (1.5 times), not at
-/// 3 or 100 spans nor on a 2D RC frame of 16 elements (0.86): the share of the time in element
-/// updates, the memory the fiber states stream through and what else runs on the machine decide,
-/// and a size threshold gets at least one of them wrong.
+/// Why measured: on the machine of 2026-11-24 two threads paid at 10 and 30 spans of the case
+/// study's bridge (1.5 times), not at 3 or 100 spans nor on a 2D RC frame of 16 elements (0.86),
+/// and on the machine of 2026-11-29 at every size and on that frame (1.34 to 1.87): the share of
+/// the time in element updates, the memory the fiber states stream through and what else runs on
+/// the machine decide, and a size threshold gets at least one of them wrong.
 class ThreadChoice {
  public:
   /// `available`: the threads the process may use (1: nothing to choose).
@@ -54,6 +55,13 @@ class ThreadChoice {
   /// after every converged step, decided or not: the steps since the choice count towards the
   /// next trial.
   void record(double seconds, int iterations) noexcept;
+  /// True when there is nothing to choose (one thread available, or fewer than two elements to
+  /// share): one thread for good, never measured.
+  bool fixed() const noexcept { return fixed_; }
+  /// The count chosen by the last decision (1 before the first).
+  int chosen() const noexcept { return chosen_; }
+  /// Decisions made since reset() (the first trial's and each revisit's).
+  int decisions() const noexcept { return decisions_; }
   /// True once a trial has measured (false with one thread available).
   bool measured() const noexcept { return measured_; }
   /// The threads' wall time per iteration over one thread's (the median of the last trial's
@@ -89,8 +97,9 @@ class ThreadChoice {
   int revisitAfter_ = kRevisitAfter;  ///< steps from the choice in force to its revisit
   int revisited_ = 0;                 ///< the choice a revisit trial measures (0: a first trial)
   int chosen_ = 1;
-  int recorded_ = 0;  ///< steps recorded since reset() or since the trial before
-  int trials_ = 0;    ///< trials completed since reset()
+  int recorded_ = 0;   ///< the trial's steps so far, its warm-up counted (kWarmUp at a revisit)
+  int trials_ = 0;     ///< trials in a row, since reset() or the start of a revisit
+  int decisions_ = 0;  ///< decisions since reset() (the first trial's, each revisit's)
   bool measured_ = false;
   double ratio_ = 1.0;
   std::array<double, kPairs> one_{};

@@ -29,6 +29,17 @@ std::vector<int> runSteps(ThreadChoice& choice, Time time, int first, int count)
   return asked;
 }
 
+/// Steps of two iterations and equal times while the choice holds (at most kRevisitAtMost + 1):
+/// how many ran before a revisit began.
+int holdSteps(ThreadChoice& choice) {
+  int held = 0;
+  while (choice.decided() && held <= ThreadChoice::kRevisitAtMost) {
+    choice.record(2.0, 2);
+    ++held;
+  }
+  return held;
+}
+
 /// The first trial: warm-up and pairs.
 template <class Time>
 std::vector<int> runTrial(ThreadChoice& choice, Time time) {
@@ -186,7 +197,7 @@ TEST(ThreadChoiceTest, ConfirmedChoicesAreRevisitedLessOften) {
   // Steps on the choice until the next trial starts.
   auto stepsToRevisit = [&](auto time) {
     int held = 0;
-    while (choice.decided()) {
+    while (choice.decided() && held <= ThreadChoice::kRevisitAtMost) {
       EXPECT_EQ(choice.next(), 2);
       choice.record(2.0 * time(choice.next(), step++), 2);
       ++held;
@@ -200,12 +211,31 @@ TEST(ThreadChoiceTest, ConfirmedChoicesAreRevisitedLessOften) {
   EXPECT_EQ(intervals, (std::vector<int>{400, 800, 1600, 3200, 6400, 6400}));
   EXPECT_EQ(stepsToRevisit(loss), 6400);  // this revisit finds a loss: one thread
   ASSERT_EQ(choice.next(), 1);
-  int held = 0;
-  while (choice.decided()) {
-    choice.record(2.0, 2);
-    ++held;
-  }
-  EXPECT_EQ(held, ThreadChoice::kRevisitAfter);
+  EXPECT_EQ(holdSteps(choice), ThreadChoice::kRevisitAfter);
+}
+
+// A revisit without a clear answer measures a second time, as a first trial does (40 steps in
+// all), and a confirmation after the two still doubles the steps to the next revisit; a reset in
+// the middle of a revisit starts over (a first trial, then 400 steps).
+TEST(ThreadChoiceTest, AnUnclearRevisitMeasuresTwiceAndAResetStartsOver) {
+  ThreadChoice choice(2);
+  const auto gain = [](int n, int) { return n == 2 ? 0.6 : 1.0; };
+  const auto even = [](int, int) { return 1.0; };
+  runTrial(choice, gain);
+  EXPECT_EQ(holdSteps(choice), ThreadChoice::kRevisitAfter);
+  runSteps(choice, even, 0, 2 * ThreadChoice::kPairs);
+  EXPECT_FALSE(choice.decided());  // no clear answer: a second trial
+  EXPECT_EQ(choice.decisions(), 1);
+  runSteps(choice, gain, 0, 2 * ThreadChoice::kPairs);
+  ASSERT_TRUE(choice.decided());
+  EXPECT_EQ(choice.decisions(), 2);
+  EXPECT_EQ(choice.next(), 2);
+  EXPECT_EQ(holdSteps(choice), 2 * ThreadChoice::kRevisitAfter);
+  runSteps(choice, gain, 0, 4);  // into the revisit
+  choice.reset();
+  EXPECT_EQ(choice.decisions(), 0);
+  runTrial(choice, gain);
+  EXPECT_EQ(holdSteps(choice), ThreadChoice::kRevisitAfter);
 }
 
 // With nothing to choose the choice is never measured, however long the run.
