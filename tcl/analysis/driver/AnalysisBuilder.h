@@ -111,12 +111,8 @@ class AnalysisBuilder {
   }
   /// The count asked for: n, or 0 for the automatic choice.
   int threadsAsked() const noexcept { return threads_; }
-  /// The count in force: the one asked for, or the automatic choice's (its last decision once it
-  /// has one, also while a revisit alternates; before, the next step's count).
-  int threads() const noexcept {
-    if (threads_ > 0) return threads_;
-    return threadChoice_.decisions() > 0 ? threadChoice_.chosen() : threadChoice_.next();
-  }
+  /// The count in force: the one asked for, or the automatic choice's (ThreadChoice::inForce).
+  int threads() const noexcept { return threads_ > 0 ? threads_ : threadChoice_.inForce(); }
   /// The automatic choice (its decision, for reports).
   const ThreadChoice& threadChoice() const noexcept { return threadChoice_; }
   /// Where convergence-test output goes.

@@ -60,6 +60,9 @@ class ThreadChoice {
   bool fixed() const noexcept { return fixed_; }
   /// The count chosen by the last decision (1 before the first).
   int chosen() const noexcept { return chosen_; }
+  /// The count in force, for reports: the last decision's, also while a revisit alternates;
+  /// before the first decision, the next step's.
+  int inForce() const noexcept { return decisions_ > 0 ? chosen_ : next(); }
   /// Decisions made since reset() (the first trial's and each revisit's).
   int decisions() const noexcept { return decisions_; }
   /// True once a trial has measured (false with one thread available).

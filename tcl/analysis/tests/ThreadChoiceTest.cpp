@@ -29,11 +29,12 @@ std::vector<int> runSteps(ThreadChoice& choice, Time time, int first, int count)
   return asked;
 }
 
-/// Steps of two iterations and equal times while the choice holds (at most kRevisitAtMost + 1):
-/// how many ran before a revisit began.
+/// Steps of two iterations and equal times while the choice holds (at most kRevisitAtMost + 1),
+/// each on the chosen count: how many ran before a revisit began.
 int holdSteps(ThreadChoice& choice) {
   int held = 0;
   while (choice.decided() && held <= ThreadChoice::kRevisitAtMost) {
+    EXPECT_EQ(choice.next(), choice.chosen());
     choice.record(2.0, 2);
     ++held;
   }
@@ -193,17 +194,11 @@ TEST(ThreadChoiceTest, ConfirmedChoicesAreRevisitedLessOften) {
   const auto gain = [](int n, int) { return n == 2 ? 0.6 : 1.0; };
   const auto loss = [](int n, int) { return n == 2 ? 1.6 : 1.0; };
   runTrial(choice, gain);
-  int step = kTrialSteps;
-  // Steps on the choice until the next trial starts.
+  // Steps on the two threads chosen until the next trial starts, then that trial.
   auto stepsToRevisit = [&](auto time) {
-    int held = 0;
-    while (choice.decided() && held <= ThreadChoice::kRevisitAtMost) {
-      EXPECT_EQ(choice.next(), 2);
-      choice.record(2.0 * time(choice.next(), step++), 2);
-      ++held;
-    }
-    runSteps(choice, time, step, 2 * ThreadChoice::kPairs);
-    step += 2 * ThreadChoice::kPairs;
+    EXPECT_EQ(choice.chosen(), 2);
+    const int held = holdSteps(choice);
+    runSteps(choice, time, 0, 2 * ThreadChoice::kPairs);
     return held;
   };
   std::vector<int> intervals;
