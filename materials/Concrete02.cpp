@@ -4,8 +4,15 @@
 #include <cassert>
 #include <cfloat>
 #include <cmath>
+#include <cstddef>
+#include <type_traits>
 
 #include "materials/InputError.h"
+
+#if defined(__x86_64__) || defined(__i386__)
+#include <immintrin.h>
+#define DABS_CONCRETE02_LANES 1
+#endif
 
 namespace dabs::materials {
 
@@ -44,5 +51,180 @@ Concrete02::State Concrete02::initialState() const {
   setMinimumStrain(s, 0.0, 0.0);
   return s;
 }
+
+void Concrete02::computeTrials(const State* committed, const double* strains, StressTangent* out,
+                               std::size_t n) const {
+  const std::size_t done = updatesFourAtOnce() ? computeFourAtOnce(committed, strains, out, n) : 0;
+  for (std::size_t i = done; i < n; ++i) {
+    State trial;
+    static_cast<void>(computeTrial(committed[i], trial, strains[i]));
+    out[i] = StressTangent{trial.stress, trial.tangent};
+  }
+}
+
+#ifdef DABS_CONCRETE02_LANES
+
+bool Concrete02::updatesFourAtOnce() {
+  // A property of the processor, the same for the whole run.
+  static const bool hasAvx = __builtin_cpu_supports("avx");
+  return hasAvx;
+}
+
+namespace {
+
+// The state is read as two rows of four doubles, transposed into one vector per field.
+static_assert(std::is_standard_layout_v<Concrete02State> && sizeof(Concrete02State) == 64);
+static_assert(offsetof(Concrete02State, strain) == 0 && offsetof(Concrete02State, stress) == 8 &&
+              offsetof(Concrete02State, tangent) == 16 && offsetof(Concrete02State, ecmin) == 24);
+static_assert(offsetof(Concrete02State, dept) == 32 && offsetof(Concrete02State, sigMin) == 40 &&
+              offsetof(Concrete02State, Er) == 48 && offsetof(Concrete02State, ept) == 56);
+
+/// Rows r0..r3 (one fiber each) to columns c0..c3 (one field each).
+__attribute__((target("avx"))) inline void transpose(__m256d r0, __m256d r1, __m256d r2, __m256d r3,
+                                                     __m256d& c0, __m256d& c1, __m256d& c2,
+                                                     __m256d& c3) {
+  const __m256d t0 = _mm256_unpacklo_pd(r0, r1), t1 = _mm256_unpackhi_pd(r0, r1);
+  const __m256d t2 = _mm256_unpacklo_pd(r2, r3), t3 = _mm256_unpackhi_pd(r2, r3);
+  c0 = _mm256_permute2f128_pd(t0, t2, 0x20);
+  c1 = _mm256_permute2f128_pd(t1, t3, 0x20);
+  c2 = _mm256_permute2f128_pd(t0, t2, 0x31);
+  c3 = _mm256_permute2f128_pd(t1, t3, 0x31);
+}
+
+/// `where` ? a : b, lane by lane (`where` all ones or all zeros in each lane). Bitwise rather than
+/// a blend: GCC folds a blend of a comparison into a select that it then splits into scalars.
+__attribute__((target("avx"))) inline __m256d pick(__m256d where, __m256d a, __m256d b) {
+  return _mm256_or_pd(_mm256_and_pd(where, a), _mm256_andnot_pd(where, b));
+}
+
+__attribute__((target("avx"))) inline bool any(__m256d mask) {
+  return _mm256_movemask_pd(mask) != 0;
+}
+
+/// Concrete02::tensionEnvelope in four lanes.
+struct TensionLanes {
+  __m256d Ec0, epsCrack, epsZero, ft, Ets, minusEts, residualTangent, zero;
+
+  __attribute__((target("avx"))) void at(__m256d x, __m256d& stress, __m256d& tangent) const {
+    const __m256d uncracked = _mm256_cmp_pd(x, epsCrack, _CMP_LE_OQ);
+    const __m256d softening = _mm256_cmp_pd(x, epsZero, _CMP_LE_OQ);
+    const __m256d softStress = _mm256_sub_pd(ft, _mm256_mul_pd(Ets, _mm256_sub_pd(x, epsCrack)));
+    stress = pick(uncracked, _mm256_mul_pd(x, Ec0), pick(softening, softStress, zero));
+    tangent = pick(uncracked, Ec0, pick(softening, minusEts, residualTangent));
+  }
+};
+
+}  // namespace
+
+// computeTrial, lane by lane: each branch is evaluated with the scalar code's operations in its
+// order (so the same bits) wherever one of the four lanes takes it, and each lane keeps the
+// result of its own branch. A comparison with a NaN is false here as there, so a NaN strain
+// takes the same branch too.
+__attribute__((target("avx"))) std::size_t Concrete02::computeFourAtOnce(const State* committed,
+                                                                         const double* strains,
+                                                                         StressTangent* out,
+                                                                         std::size_t n) const {
+  const auto& p = params_;
+  const __m256d Ec0 = _mm256_set1_pd(Ec0_);
+  const __m256d half = _mm256_set1_pd(0.5), one = _mm256_set1_pd(1.0), two = _mm256_set1_pd(2.0);
+  const __m256d fpc = _mm256_set1_pd(p.fpc), epsc0 = _mm256_set1_pd(p.epsc0);
+  const __m256d fpcu = _mm256_set1_pd(p.fpcu), epsU = _mm256_set1_pd(p.epsU);
+  const __m256d descent = _mm256_set1_pd(p.fpcu - p.fpc),
+                descentSpan = _mm256_set1_pd(p.epsU - p.epsc0);
+  const __m256d descentSlope = _mm256_set1_pd((p.fpcu - p.fpc) / (p.epsU - p.epsc0));
+  const __m256d residualTangent = _mm256_set1_pd(concrete02::kResidualTangent);
+  const __m256d ft = _mm256_set1_pd(p.ft), Ets = _mm256_set1_pd(p.Ets);
+  const __m256d minusEts = _mm256_set1_pd(-p.Ets);
+  const __m256d epsCrack = _mm256_set1_pd(epsCrack_), epsZero = _mm256_set1_pd(epsZero_);
+  const __m256d zero = _mm256_setzero_pd(), epsilon = _mm256_set1_pd(DBL_EPSILON);
+  const __m256d signBit = _mm256_set1_pd(-0.0);
+
+  const TensionLanes tensionLanes{Ec0, epsCrack, epsZero, ft, Ets, minusEts, residualTangent, zero};
+
+  std::size_t i = 0;
+  for (; i + 4 <= n; i += 4) {
+    const State* c = committed + i;
+    __m256d cStrain, cStress, cTangent, ecmin, dept, sigMin, Er, ept;
+    transpose(_mm256_loadu_pd(&c[0].strain), _mm256_loadu_pd(&c[1].strain),
+              _mm256_loadu_pd(&c[2].strain), _mm256_loadu_pd(&c[3].strain), cStrain, cStress,
+              cTangent, ecmin);
+    transpose(_mm256_loadu_pd(&c[0].dept), _mm256_loadu_pd(&c[1].dept), _mm256_loadu_pd(&c[2].dept),
+              _mm256_loadu_pd(&c[3].dept), dept, sigMin, Er, ept);
+    const __m256d strain = _mm256_loadu_pd(strains + i);
+    const __m256d deps = _mm256_sub_pd(strain, cStrain);
+    const __m256d unchanged = _mm256_cmp_pd(_mm256_andnot_pd(signBit, deps), epsilon, _CMP_LT_OQ);
+    const __m256d newMinimum =
+        _mm256_andnot_pd(unchanged, _mm256_cmp_pd(strain, ecmin, _CMP_LT_OQ));
+    const __m256d belowEpt = _mm256_cmp_pd(strain, ept, _CMP_LE_OQ);
+
+    // Between the reloading line and half its slope through ept.
+    const __m256d lower = _mm256_add_pd(sigMin, _mm256_mul_pd(Er, _mm256_sub_pd(strain, ecmin)));
+    const __m256d halfEr = _mm256_mul_pd(half, Er);
+    const __m256d upper = _mm256_mul_pd(halfEr, _mm256_sub_pd(strain, ept));
+    __m256d stress = _mm256_add_pd(cStress, _mm256_mul_pd(Ec0, deps));
+    __m256d tangent = Ec0;
+    const __m256d atLower = _mm256_cmp_pd(stress, lower, _CMP_LE_OQ);
+    stress = pick(atLower, lower, stress);
+    tangent = pick(atLower, Er, tangent);
+    const __m256d atUpper = _mm256_cmp_pd(stress, upper, _CMP_GE_OQ);
+    stress = pick(atUpper, upper, stress);
+    tangent = pick(atUpper, halfEr, tangent);
+
+    // Tension: along the line to the largest tensile strain reached, then the envelope.
+    if (_mm256_movemask_pd(belowEpt) != 0xF) {
+      const __m256d strainFromEpt = _mm256_sub_pd(strain, ept);
+      const __m256d reloading = _mm256_cmp_pd(strain, _mm256_add_pd(ept, dept), _CMP_LE_OQ);
+      __m256d tensionStress, tensionTangent;
+      tensionLanes.at(strainFromEpt, tensionStress, tensionTangent);
+      if (any(_mm256_andnot_pd(belowEpt, reloading))) {
+        __m256d peakStress, ignored;
+        tensionLanes.at(dept, peakStress, ignored);
+        const __m256d secant =
+            pick(_mm256_cmp_pd(dept, zero, _CMP_NEQ_UQ), _mm256_div_pd(peakStress, dept), Ec0);
+        tensionStress = pick(reloading, _mm256_mul_pd(secant, strainFromEpt), tensionStress);
+        tensionTangent = pick(reloading, secant, tensionTangent);
+      }
+      stress = pick(belowEpt, stress, tensionStress);
+      tangent = pick(belowEpt, tangent, tensionTangent);
+    }
+
+    // A new most compressive strain: the compression envelope.
+    if (any(newMinimum)) {
+      const __m256d ratio = _mm256_div_pd(strain, epsc0);
+      const __m256d parabola = _mm256_cmp_pd(strain, epsc0, _CMP_GE_OQ);
+      const __m256d descending = _mm256_cmp_pd(strain, epsU, _CMP_GT_OQ);
+      const __m256d parabolaStress =
+          _mm256_mul_pd(_mm256_mul_pd(fpc, ratio), _mm256_sub_pd(two, ratio));
+      const __m256d parabolaTangent = _mm256_mul_pd(Ec0, _mm256_sub_pd(one, ratio));
+      const __m256d descentStress = _mm256_add_pd(
+          _mm256_div_pd(_mm256_mul_pd(descent, _mm256_sub_pd(strain, epsc0)), descentSpan), fpc);
+      const __m256d envelopeStress =
+          pick(parabola, parabolaStress, pick(descending, descentStress, fpcu));
+      const __m256d envelopeTangent =
+          pick(parabola, parabolaTangent, pick(descending, descentSlope, residualTangent));
+      stress = pick(newMinimum, envelopeStress, stress);
+      tangent = pick(newMinimum, envelopeTangent, tangent);
+    }
+    stress = pick(unchanged, cStress, stress);
+    tangent = pick(unchanged, cTangent, tangent);
+
+    // Interleaved back into (stress, tangent) pairs.
+    const __m256d low = _mm256_unpacklo_pd(stress, tangent);   // s0 t0 s2 t2
+    const __m256d high = _mm256_unpackhi_pd(stress, tangent);  // s1 t1 s3 t3
+    _mm256_storeu_pd(&out[i].stress, _mm256_permute2f128_pd(low, high, 0x20));
+    _mm256_storeu_pd(&out[i + 2].stress, _mm256_permute2f128_pd(low, high, 0x31));
+  }
+  return i;
+}
+
+#else
+
+bool Concrete02::updatesFourAtOnce() { return false; }
+std::size_t Concrete02::computeFourAtOnce(const State*, const double*, StressTangent*,
+                                          std::size_t) const {
+  return 0;
+}
+
+#endif
 
 }  // namespace dabs::materials

@@ -7,6 +7,11 @@
 
 namespace dabs::materials {
 
+/// The response of a material point: all a fiber section keeps of a fiber's trial state.
+struct StressTangent {
+  double stress = 0.0, tangent = 0.0;
+};
+
 /// Keeps a material's whole history in one value struct, so commit, revert and revertToStart are
 /// one assignment each and adding a history variable means editing one struct (style.md section 2;
 /// compare peer-open-source/xara BoucWenMG `cState = tState`).

@@ -144,6 +144,11 @@ class StateFiberGroup final : public FiberGroup {
   static constexpr bool kKeepsResponse = requires(const M& m, State& s) {
     m.commitTrial(s, 0.0, 0.0, 0.0);
   };
+  /// A law whose computeTrials updates a whole array of fibers in one call (several at once).
+  static constexpr bool kUpdatesArrays =
+      requires(const M& m, const State* c, const double* e, StressTangent* out) {
+    m.computeTrials(c, e, out, std::size_t{0});
+  };
   /// `prototype` is the material object whose fibers this group holds (identity decides
   /// membership) and whose parameters it uses.
   explicit StateFiberGroup(const M& prototype) : law_(prototype), source_(&prototype) {}
@@ -156,6 +161,7 @@ class StateFiberGroup final : public FiberGroup {
     addGeometry(y, z, area);
     committed_.push_back(law_.virginState());
     trial_.push_back(Trial{});
+    if constexpr (kUpdatesArrays) strains_.push_back(0.0);
   }
   bool accepts(const UniaxialMaterial& material) const override { return &material == source_; }
 
@@ -204,9 +210,7 @@ class StateFiberGroup final : public FiberGroup {
   bool keepsStateAtSameStrains() const override { return law_.keepsStateAtSameStrain(); }
 
  private:
-  struct Response {
-    double stress = 0.0, tangent = 0.0;
-  };
+  using Response = StressTangent;
   using Trial = std::conditional_t<kKeepsResponse, Response, State>;
   enum class Phase {
     Committed,      ///< committed_ is the current state; trial_ is stale
@@ -242,21 +246,35 @@ class StateFiberGroup final : public FiberGroup {
     Trial* trial = trial_.data();
     const double e0Pending = e0_, kzPending = kz_, kyPending = ky_;
     const std::size_t n = committed_.size();
-    for (std::size_t i = 0; i < n; ++i) {
-      const double y = ys[i];
-      const double strain = fiberStrain<Planar>(e0, kz, ky, y, zs[i]);
-      // The only failure of these laws is a non-finite stress or tangent, and it makes the
-      // sums non-finite too: the caller checks those once instead of every fiber here.
-      if constexpr (kKeepsResponse) {
+    if constexpr (kUpdatesArrays) {
+      // The strains (and the pending commits) first, then the law's own loop over the arrays.
+      double* strains = strains_.data();
+      for (std::size_t i = 0; i < n; ++i) {
+        const double y = ys[i];
+        strains[i] = fiberStrain<Planar>(e0, kz, ky, y, zs[i]);
         if constexpr (Fold) {
           const double pending = fiberStrain<Planar>(e0Pending, kzPending, kyPending, y, zs[i]);
           law_.commitTrial(committed[i], pending, trial[i].stress, trial[i].tangent);
         }
-        State t;
-        static_cast<void>(law_.computeTrial(committed[i], t, strain));
-        trial[i] = Response{t.stress, t.tangent};
-      } else {
-        static_cast<void>(law_.computeTrial(committed[i], trial[i], strain));
+      }
+      law_.computeTrials(committed, strains, trial, n);
+    } else {
+      for (std::size_t i = 0; i < n; ++i) {
+        const double y = ys[i];
+        const double strain = fiberStrain<Planar>(e0, kz, ky, y, zs[i]);
+        // The only failure of these laws is a non-finite stress or tangent, and it makes the
+        // sums non-finite too: the caller checks those once instead of every fiber here.
+        if constexpr (kKeepsResponse) {
+          if constexpr (Fold) {
+            const double pending = fiberStrain<Planar>(e0Pending, kzPending, kyPending, y, zs[i]);
+            law_.commitTrial(committed[i], pending, trial[i].stress, trial[i].tangent);
+          }
+          State t;
+          static_cast<void>(law_.computeTrial(committed[i], t, strain));
+          trial[i] = Response{t.stress, t.tangent};
+        } else {
+          static_cast<void>(law_.computeTrial(committed[i], trial[i], strain));
+        }
       }
     }
     for (std::size_t i = 0; i < n; ++i) {
@@ -312,6 +330,7 @@ class StateFiberGroup final : public FiberGroup {
   const UniaxialMaterial* source_;  ///< only compared with, while the section is built
   std::vector<State> committed_;
   std::vector<Trial> trial_;
+  std::vector<double> strains_;  ///< the fibers' strains in a pass of a law that updates arrays
   double e0_ = 0.0, kz_ = 0.0, ky_ = 0.0;  ///< section strains of the last setTrial
   bool planar_ = false;                    ///< the last setTrial was a plane one
   Phase phase_ = Phase::Committed;

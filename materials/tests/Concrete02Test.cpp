@@ -5,8 +5,13 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <bit>
+#include <cfloat>
 #include <cmath>
+#include <cstdint>
 #include <random>
+#include <vector>
 
 namespace dabs::materials {
 namespace {
@@ -97,6 +102,95 @@ TEST(Concrete02Test, CommitFromTrialResponseEqualsTheTrialState) {
   EXPECT_LT(committed.ecmin, kEpsU);
   EXPECT_GT(committed.dept, kFt / kEc);
   EXPECT_EQ(commits, 9 * 12);
+}
+
+// computeTrials (four fibers at a time where the processor has AVX) must give computeTrial's
+// stress and tangent to the bit, for every fiber whatever branch its neighbours in the same four
+// take. States from a walk through every branch, each paired with strains in every range
+// (unchanged, a new minimum on each part of the envelope, the reloading band and its two bounds,
+// tension reloading and the tension envelope, a NaN), shuffled so that the four lanes mix branches,
+// and a count not a multiple of four.
+TEST(Concrete02Test, ArraysOfFibersGiveEachFibersOwnUpdate) {
+  const Concrete02 m = make();
+  std::vector<Concrete02::State> states{m.virginState()};
+  const double peaks[] = {-0.001, 0.0004, -0.0025, 0.001, -0.004, 0.002, -0.008, 0.003, -0.012};
+  double strain = 0.0;
+  for (const double peak : peaks) {
+    for (int k = 1; k <= 6; ++k) {
+      Concrete02::State trial;
+      ASSERT_TRUE(ok(m.computeTrial(states.back(), trial, strain + (peak - strain) * k / 6.0)));
+      states.push_back(trial);
+    }
+    strain = peak;
+  }
+  std::mt19937 random(11);
+  std::uniform_real_distribution<double> anywhere(-0.014, 0.004);
+  std::vector<Concrete02::State> committed;
+  std::vector<double> strains;
+  for (const auto& s : states) {
+    const double near[] = {s.strain,
+                           s.strain + 0.25 * DBL_EPSILON,
+                           s.strain - 1e-5,
+                           s.strain + 1e-5,
+                           s.ecmin - 1e-4,
+                           0.5 * kEps0,
+                           0.5 * (kEps0 + kEpsU),
+                           1.5 * kEpsU,
+                           s.ept,
+                           s.ept - 1e-4,
+                           s.ept + 0.5 * s.dept,
+                           s.ept + s.dept + 1e-4,
+                           s.ept + 0.5 * kFt / kEc,
+                           std::nan(""),
+                           anywhere(random),
+                           anywhere(random)};
+    for (const double e : near) {
+      committed.push_back(s);
+      strains.push_back(e);
+    }
+  }
+  std::vector<std::size_t> order(strains.size());
+  for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
+  std::shuffle(order.begin(), order.end(), random);
+  std::vector<Concrete02::State> shuffledStates;
+  std::vector<double> shuffledStrains;
+  for (std::size_t i : order) {
+    shuffledStates.push_back(committed[i]);
+    shuffledStrains.push_back(strains[i]);
+  }
+  const std::size_t n = shuffledStrains.size() - 1;  // not a multiple of four
+  ASSERT_NE(n % 4, 0u);
+  std::vector<StressTangent> out(n);
+  m.computeTrials(shuffledStates.data(), shuffledStrains.data(), out.data(), n);
+  // What the fibers exercise: unchanged, new minimum (parabola, descending, residual), the
+  // reloading band, tension reloading, the tension envelope.
+  int unchanged = 0, parabola = 0, descending = 0, residual = 0, band = 0, reloading = 0,
+      envelope = 0;
+  for (std::size_t i = 0; i < n; ++i) {
+    const auto& c = shuffledStates[i];
+    const double e = shuffledStrains[i];
+    Concrete02::State trial;
+    static_cast<void>(m.computeTrial(c, trial, e));
+    // Equal to the bit (a NaN stress equals a NaN stress here).
+    EXPECT_EQ(std::bit_cast<std::uint64_t>(out[i].stress),
+              std::bit_cast<std::uint64_t>(trial.stress))
+        << "fiber " << i << " strain " << e;
+    EXPECT_EQ(std::bit_cast<std::uint64_t>(out[i].tangent),
+              std::bit_cast<std::uint64_t>(trial.tangent))
+        << "fiber " << i << " strain " << e;
+    if (std::fabs(e - c.strain) < DBL_EPSILON) {
+      ++unchanged;
+    } else if (e < c.ecmin) {
+      e >= kEps0 ? ++parabola : e > kEpsU ? ++descending : ++residual;
+    } else if (e <= c.ept) {
+      ++band;
+    } else {
+      e <= c.ept + c.dept ? ++reloading : ++envelope;
+    }
+  }
+  for (const int count : {unchanged, parabola, descending, residual, band, reloading, envelope})
+    EXPECT_GT(count, 4);
+  RecordProperty("fourAtOnce", Concrete02::updatesFourAtOnce() ? "yes" : "no");
 }
 
 }  // namespace
