@@ -4,7 +4,10 @@
 #include <cassert>
 #include <cfloat>
 #include <cmath>
+#include <cstddef>
+#include <type_traits>
 
+#include "materials/FourLanes.h"
 #include "materials/InputError.h"
 
 namespace dabs::materials {
@@ -36,5 +39,150 @@ Concrete01::State Concrete01::initialState() const {
   s.unloadSlope = s.tangent;
   return s;
 }
+
+void Concrete01::computeTrials(const State* committed, const double* strains, StressTangent* out,
+                               std::size_t n) const {
+  const std::size_t done = updatesFourAtOnce() ? computeFourAtOnce(committed, strains, out, n) : 0;
+  for (std::size_t i = done; i < n; ++i) {
+    State trial;
+    static_cast<void>(computeTrial(committed[i], trial, strains[i]));
+    out[i] = StressTangent{trial.stress, trial.tangent};
+  }
+}
+
+#ifdef DABS_FOUR_LANES
+
+bool Concrete01::updatesFourAtOnce() { return lanes::available(); }
+
+namespace {
+
+using lanes::any;
+using lanes::pick;
+
+// The state is read as a row of four doubles and a row of two, transposed into one vector per
+// field.
+static_assert(std::is_standard_layout_v<Concrete01State> && sizeof(Concrete01State) == 48);
+static_assert(offsetof(Concrete01State, strain) == 0 && offsetof(Concrete01State, stress) == 8 &&
+              offsetof(Concrete01State, tangent) == 16 &&
+              offsetof(Concrete01State, minStrain) == 24 &&
+              offsetof(Concrete01State, endStrain) == 32 &&
+              offsetof(Concrete01State, unloadSlope) == 40);
+
+}  // namespace
+
+// computeTrial, lane by lane: each branch is evaluated with the scalar code's operations in its
+// order (so the same bits) wherever one of the four lanes takes it, and each lane keeps the
+// result of its own branch. Comparisons with a NaN are false here as there.
+__attribute__((target("avx"))) std::size_t Concrete01::computeFourAtOnce(const State* committed,
+                                                                         const double* strains,
+                                                                         StressTangent* out,
+                                                                         std::size_t n) const {
+  const auto& p = params_;
+  const __m256d Ec0 = _mm256_set1_pd(Ec0_), descentSlope = _mm256_set1_pd(descentSlope_);
+  const __m256d fpc = _mm256_set1_pd(p.fpc), epsc0 = _mm256_set1_pd(p.epsc0);
+  const __m256d fpcu = _mm256_set1_pd(p.fpcu), epsU = _mm256_set1_pd(p.epsU);
+  const __m256d zero = _mm256_setzero_pd(), one = _mm256_set1_pd(1.0), two = _mm256_set1_pd(2.0);
+  const __m256d epsilon = _mm256_set1_pd(DBL_EPSILON), minusEpsilon = _mm256_set1_pd(-DBL_EPSILON);
+  const __m256d signBit = _mm256_set1_pd(-0.0);
+  // Karsan-Jirsa's zero-stress strain (unload): its two polynomials' coefficients.
+  const __m256d a2 = _mm256_set1_pd(0.145), a1 = _mm256_set1_pd(0.13);
+  const __m256d b1 = _mm256_set1_pd(0.707), b0 = _mm256_set1_pd(0.834);
+
+  std::size_t i = 0;
+  for (; i + 4 <= n; i += 4) {
+    const State* c = committed + i;
+    __m256d cStrain, cStress, cTangent, minStrain;
+    lanes::transpose(_mm256_loadu_pd(&c[0].strain), _mm256_loadu_pd(&c[1].strain),
+                     _mm256_loadu_pd(&c[2].strain), _mm256_loadu_pd(&c[3].strain), cStrain, cStress,
+                     cTangent, minStrain);
+    // (endStrain, unloadSlope) of fibers 0 and 2, and of 1 and 3, then one vector each.
+    const __m256d ends02 = _mm256_insertf128_pd(
+        _mm256_castpd128_pd256(_mm_loadu_pd(&c[0].endStrain)), _mm_loadu_pd(&c[2].endStrain), 1);
+    const __m256d ends13 = _mm256_insertf128_pd(
+        _mm256_castpd128_pd256(_mm_loadu_pd(&c[1].endStrain)), _mm_loadu_pd(&c[3].endStrain), 1);
+    const __m256d endStrain = _mm256_unpacklo_pd(ends02, ends13);
+    const __m256d slope = _mm256_unpackhi_pd(ends02, ends13);
+
+    const __m256d strain = _mm256_loadu_pd(strains + i);
+    const __m256d unchanged = _mm256_cmp_pd(
+        _mm256_andnot_pd(signBit, _mm256_sub_pd(strain, cStrain)), epsilon, _CMP_LT_OQ);
+    const __m256d tensile = _mm256_cmp_pd(strain, zero, _CMP_GT_OQ);
+    const __m256d linear = _mm256_sub_pd(_mm256_add_pd(cStress, _mm256_mul_pd(slope, strain)),
+                                         _mm256_mul_pd(slope, cStrain));
+    const __m256d loading = _mm256_cmp_pd(strain, cStrain, _CMP_LT_OQ);
+
+    // Unloading (strain at or above the committed one): along the line while in compression.
+    const __m256d onLine = _mm256_andnot_pd(loading, _mm256_cmp_pd(linear, zero, _CMP_LE_OQ));
+    __m256d stress = pick(onLine, linear, zero);
+    __m256d tangent = pick(onLine, slope, zero);
+
+    if (any(loading)) {
+      // reload: the envelope past the most compressive strain, else the unloading line to
+      // endStrain, else zero; then the committed line where it lies above.
+      const __m256d reloadLine = _mm256_cmp_pd(strain, endStrain, _CMP_LE_OQ);
+      __m256d loadStress =
+          pick(reloadLine, _mm256_mul_pd(slope, _mm256_sub_pd(strain, endStrain)), zero);
+      __m256d loadTangent = pick(reloadLine, slope, zero);
+      __m256d lineSlope = slope;
+      const __m256d newMinimum =
+          _mm256_and_pd(loading, _mm256_cmp_pd(strain, minStrain, _CMP_LE_OQ));
+      if (any(newMinimum)) {
+        const __m256d parabola = _mm256_cmp_pd(strain, epsc0, _CMP_GT_OQ);
+        const __m256d descending = _mm256_cmp_pd(strain, epsU, _CMP_GT_OQ);
+        const __m256d eta = _mm256_div_pd(strain, epsc0);
+        const __m256d parabolaStress =
+            _mm256_mul_pd(fpc, _mm256_sub_pd(_mm256_mul_pd(two, eta), _mm256_mul_pd(eta, eta)));
+        const __m256d parabolaTangent = _mm256_mul_pd(Ec0, _mm256_sub_pd(one, eta));
+        const __m256d descentStress =
+            _mm256_add_pd(fpc, _mm256_mul_pd(descentSlope, _mm256_sub_pd(strain, epsc0)));
+        const __m256d envelopeStress =
+            pick(parabola, parabolaStress, pick(descending, descentStress, fpcu));
+        const __m256d envelopeTangent =
+            pick(parabola, parabolaTangent, pick(descending, descentSlope, zero));
+        loadStress = pick(newMinimum, envelopeStress, loadStress);
+        loadTangent = pick(newMinimum, envelopeTangent, loadTangent);
+        // The new unloading slope matters only where the committed line lies above the
+        // envelope and gives the stress (unload).
+        const __m256d unloads =
+            _mm256_and_pd(newMinimum, _mm256_cmp_pd(linear, envelopeStress, _CMP_GT_OQ));
+        if (any(unloads)) {
+          const __m256d forRatio = pick(_mm256_cmp_pd(strain, epsU, _CMP_LT_OQ), epsU, strain);
+          const __m256d etaU = _mm256_div_pd(forRatio, epsc0);
+          const __m256d ratio = pick(
+              _mm256_cmp_pd(etaU, two, _CMP_LT_OQ),
+              _mm256_add_pd(_mm256_mul_pd(_mm256_mul_pd(a2, etaU), etaU), _mm256_mul_pd(a1, etaU)),
+              _mm256_add_pd(_mm256_mul_pd(b1, _mm256_sub_pd(etaU, two)), b0));
+          const __m256d span = _mm256_sub_pd(strain, _mm256_mul_pd(ratio, epsc0));
+          const __m256d elasticSpan = _mm256_div_pd(envelopeStress, Ec0);
+          const __m256d secant = _mm256_div_pd(envelopeStress, span);
+          const __m256d steep = _mm256_andnot_pd(_mm256_cmp_pd(span, minusEpsilon, _CMP_GT_OQ),
+                                                 _mm256_cmp_pd(span, elasticSpan, _CMP_LE_OQ));
+          lineSlope = pick(unloads, pick(steep, secant, Ec0), lineSlope);
+        }
+      }
+      const __m256d aboveLine = _mm256_cmp_pd(linear, loadStress, _CMP_GT_OQ);
+      loadStress = pick(aboveLine, linear, loadStress);
+      loadTangent = pick(aboveLine, lineSlope, loadTangent);
+      stress = pick(loading, loadStress, stress);
+      tangent = pick(loading, loadTangent, tangent);
+    }
+    stress = pick(tensile, zero, stress);
+    tangent = pick(tensile, zero, tangent);
+    stress = pick(unchanged, cStress, stress);
+    tangent = pick(unchanged, cTangent, tangent);
+    lanes::storePairs(&out[i].stress, stress, tangent);
+  }
+  return i;
+}
+
+#else
+
+bool Concrete01::updatesFourAtOnce() { return false; }
+std::size_t Concrete01::computeFourAtOnce(const State*, const double*, StressTangent*,
+                                          std::size_t) const {
+  return 0;
+}
+
+#endif
 
 }  // namespace dabs::materials

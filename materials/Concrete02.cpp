@@ -7,12 +7,8 @@
 #include <cstddef>
 #include <type_traits>
 
+#include "materials/FourLanes.h"
 #include "materials/InputError.h"
-
-#if defined(__x86_64__) || defined(__i386__)
-#include <immintrin.h>
-#define DABS_CONCRETE02_LANES 1
-#endif
 
 namespace dabs::materials {
 
@@ -62,15 +58,14 @@ void Concrete02::computeTrials(const State* committed, const double* strains, St
   }
 }
 
-#ifdef DABS_CONCRETE02_LANES
+#ifdef DABS_FOUR_LANES
 
-bool Concrete02::updatesFourAtOnce() {
-  // A property of the processor, the same for the whole run.
-  static const bool hasAvx = __builtin_cpu_supports("avx");
-  return hasAvx;
-}
+bool Concrete02::updatesFourAtOnce() { return lanes::available(); }
 
 namespace {
+
+using lanes::any;
+using lanes::pick;
 
 // The state is read as two rows of four doubles, transposed into one vector per field.
 static_assert(std::is_standard_layout_v<Concrete02State> && sizeof(Concrete02State) == 64);
@@ -78,28 +73,6 @@ static_assert(offsetof(Concrete02State, strain) == 0 && offsetof(Concrete02State
               offsetof(Concrete02State, tangent) == 16 && offsetof(Concrete02State, ecmin) == 24);
 static_assert(offsetof(Concrete02State, dept) == 32 && offsetof(Concrete02State, sigMin) == 40 &&
               offsetof(Concrete02State, Er) == 48 && offsetof(Concrete02State, ept) == 56);
-
-/// Rows r0..r3 (one fiber each) to columns c0..c3 (one field each).
-__attribute__((target("avx"))) inline void transpose(__m256d r0, __m256d r1, __m256d r2, __m256d r3,
-                                                     __m256d& c0, __m256d& c1, __m256d& c2,
-                                                     __m256d& c3) {
-  const __m256d t0 = _mm256_unpacklo_pd(r0, r1), t1 = _mm256_unpackhi_pd(r0, r1);
-  const __m256d t2 = _mm256_unpacklo_pd(r2, r3), t3 = _mm256_unpackhi_pd(r2, r3);
-  c0 = _mm256_permute2f128_pd(t0, t2, 0x20);
-  c1 = _mm256_permute2f128_pd(t1, t3, 0x20);
-  c2 = _mm256_permute2f128_pd(t0, t2, 0x31);
-  c3 = _mm256_permute2f128_pd(t1, t3, 0x31);
-}
-
-/// `where` ? a : b, lane by lane (`where` all ones or all zeros in each lane). Bitwise rather than
-/// a blend: GCC folds a blend of a comparison into a select that it then splits into scalars.
-__attribute__((target("avx"))) inline __m256d pick(__m256d where, __m256d a, __m256d b) {
-  return _mm256_or_pd(_mm256_and_pd(where, a), _mm256_andnot_pd(where, b));
-}
-
-__attribute__((target("avx"))) inline bool any(__m256d mask) {
-  return _mm256_movemask_pd(mask) != 0;
-}
 
 /// Concrete02::tensionEnvelope in four lanes.
 struct TensionLanes {
@@ -145,11 +118,12 @@ __attribute__((target("avx"))) std::size_t Concrete02::computeFourAtOnce(const S
   for (; i + 4 <= n; i += 4) {
     const State* c = committed + i;
     __m256d cStrain, cStress, cTangent, ecmin, dept, sigMin, Er, ept;
-    transpose(_mm256_loadu_pd(&c[0].strain), _mm256_loadu_pd(&c[1].strain),
-              _mm256_loadu_pd(&c[2].strain), _mm256_loadu_pd(&c[3].strain), cStrain, cStress,
-              cTangent, ecmin);
-    transpose(_mm256_loadu_pd(&c[0].dept), _mm256_loadu_pd(&c[1].dept), _mm256_loadu_pd(&c[2].dept),
-              _mm256_loadu_pd(&c[3].dept), dept, sigMin, Er, ept);
+    lanes::transpose(_mm256_loadu_pd(&c[0].strain), _mm256_loadu_pd(&c[1].strain),
+                     _mm256_loadu_pd(&c[2].strain), _mm256_loadu_pd(&c[3].strain), cStrain, cStress,
+                     cTangent, ecmin);
+    lanes::transpose(_mm256_loadu_pd(&c[0].dept), _mm256_loadu_pd(&c[1].dept),
+                     _mm256_loadu_pd(&c[2].dept), _mm256_loadu_pd(&c[3].dept), dept, sigMin, Er,
+                     ept);
     const __m256d strain = _mm256_loadu_pd(strains + i);
     const __m256d deps = _mm256_sub_pd(strain, cStrain);
     const __m256d unchanged = _mm256_cmp_pd(_mm256_andnot_pd(signBit, deps), epsilon, _CMP_LT_OQ);
@@ -171,7 +145,7 @@ __attribute__((target("avx"))) std::size_t Concrete02::computeFourAtOnce(const S
     tangent = pick(atUpper, halfEr, tangent);
 
     // Tension: along the line to the largest tensile strain reached, then the envelope.
-    if (_mm256_movemask_pd(belowEpt) != 0xF) {
+    if (!lanes::all(belowEpt)) {
       const __m256d strainFromEpt = _mm256_sub_pd(strain, ept);
       const __m256d reloading = _mm256_cmp_pd(strain, _mm256_add_pd(ept, dept), _CMP_LE_OQ);
       __m256d tensionStress, tensionTangent;
@@ -208,11 +182,7 @@ __attribute__((target("avx"))) std::size_t Concrete02::computeFourAtOnce(const S
     stress = pick(unchanged, cStress, stress);
     tangent = pick(unchanged, cTangent, tangent);
 
-    // Interleaved back into (stress, tangent) pairs.
-    const __m256d low = _mm256_unpacklo_pd(stress, tangent);   // s0 t0 s2 t2
-    const __m256d high = _mm256_unpackhi_pd(stress, tangent);  // s1 t1 s3 t3
-    _mm256_storeu_pd(&out[i].stress, _mm256_permute2f128_pd(low, high, 0x20));
-    _mm256_storeu_pd(&out[i + 2].stress, _mm256_permute2f128_pd(low, high, 0x31));
+    lanes::storePairs(&out[i].stress, stress, tangent);
   }
   return i;
 }

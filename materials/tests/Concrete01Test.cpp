@@ -5,9 +5,13 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <bit>
 #include <cfloat>
 #include <cmath>
+#include <cstdint>
 #include <random>
+#include <vector>
 
 namespace dabs::materials {
 namespace {
@@ -104,6 +108,87 @@ TEST(Concrete01Test, CommitFromTrialResponseEqualsTheTrialState) {
   // branches went untested).
   EXPECT_LT(committed.minStrain, kEpsU);
   EXPECT_GT(newMinima, 20);
+}
+
+// computeTrials (four fibers at a time where the processor has AVX) must give computeTrial's
+// stress and tangent to the bit, for every fiber whatever branch its neighbours in the same four
+// take: states from a walk of unloading and reloading cycles, each with strains in every range,
+// shuffled so that the four lanes mix branches, and a count not a multiple of four.
+TEST(Concrete01Test, ArraysOfFibersGiveEachFibersOwnUpdate) {
+  const Concrete01 m(1, Concrete01::Params{kFpc, kEps0, kFpcu, kEpsU});
+  std::vector<Concrete01::State> states{m.virginState()};
+  const double peaks[] = {-0.001, -0.0002, -0.0025, 0.0005, -0.004, -0.001, -0.008, 0.001, -0.012};
+  double strain = 0.0;
+  for (const double peak : peaks) {
+    for (int k = 1; k <= 6; ++k) {
+      Concrete01::State trial;
+      ASSERT_TRUE(ok(m.computeTrial(states.back(), trial, strain + (peak - strain) * k / 6.0)));
+      states.push_back(trial);
+    }
+    strain = peak;
+  }
+  std::mt19937 random(13);
+  std::uniform_real_distribution<double> anywhere(-0.014, 0.002);
+  std::vector<std::pair<Concrete01::State, double>> fibers;
+  for (const auto& s : states) {
+    const double near[] = {s.strain,
+                           s.strain + 0.25 * DBL_EPSILON,
+                           s.strain - 1e-5,
+                           s.strain + 1e-5,
+                           s.minStrain - 1e-6,
+                           s.minStrain - 1e-4,
+                           0.5 * kEps0,
+                           0.5 * (kEps0 + kEpsU),
+                           1.5 * kEpsU,
+                           s.endStrain - 1e-5,
+                           0.5 * (s.strain + s.endStrain),
+                           1e-4,
+                           std::nan(""),
+                           anywhere(random),
+                           anywhere(random)};
+    for (const double e : near) fibers.emplace_back(s, e);
+  }
+  std::shuffle(fibers.begin(), fibers.end(), random);
+  const std::size_t n = fibers.size() / 4 * 4 - 1;  // three left after the fours
+  std::vector<Concrete01::State> committed;
+  std::vector<double> strains;
+  for (const auto& [state, e] : fibers) {
+    committed.push_back(state);
+    strains.push_back(e);
+  }
+  std::vector<StressTangent> out(n);
+  m.computeTrials(committed.data(), strains.data(), out.data(), n);
+  // What the fibers exercise: unchanged, tension, a new minimum (on the envelope, or below the
+  // committed line, which then takes the new unloading slope), reloading along the unloading line,
+  // unloading along the committed line.
+  int unchanged = 0, tension = 0, newMinimum = 0, lineAboveEnvelope = 0, reloading = 0,
+      unloading = 0;
+  for (std::size_t i = 0; i < n; ++i) {
+    const auto& c = committed[i];
+    const double e = strains[i];
+    Concrete01::State trial;
+    static_cast<void>(m.computeTrial(c, trial, e));
+    EXPECT_EQ(std::bit_cast<std::uint64_t>(out[i].stress),
+              std::bit_cast<std::uint64_t>(trial.stress))
+        << "fiber " << i << " strain " << e;
+    EXPECT_EQ(std::bit_cast<std::uint64_t>(out[i].tangent),
+              std::bit_cast<std::uint64_t>(trial.tangent))
+        << "fiber " << i << " strain " << e;
+    const double linear = c.stress + c.unloadSlope * e - c.unloadSlope * c.strain;
+    if (std::fabs(e - c.strain) < DBL_EPSILON) {
+      ++unchanged;
+    } else if (e > 0.0) {
+      ++tension;
+    } else if (e < c.strain && e <= c.minStrain) {
+      linear > trial.stress || trial.stress == linear ? ++lineAboveEnvelope : ++newMinimum;
+    } else if (e < c.strain) {
+      ++reloading;
+    } else {
+      ++unloading;
+    }
+  }
+  for (const int count : {unchanged, tension, newMinimum, lineAboveEnvelope, reloading, unloading})
+    EXPECT_GT(count, 4);
 }
 
 }  // namespace

@@ -1,0 +1,57 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+
+// Helpers for material updates of four fibers at a time in AVX registers (x86 only; the callers
+// check the processor first). Each function carries the AVX target itself, so that the rest of
+// the program keeps the baseline instruction set.
+
+#if defined(__x86_64__) || defined(__i386__)
+#define DABS_FOUR_LANES 1
+#include <immintrin.h>
+
+namespace dabs::materials::lanes {
+
+/// Whether this processor runs AVX; a property of the machine, the same for the whole run.
+inline bool available() {
+  static const bool hasAvx = __builtin_cpu_supports("avx");
+  return hasAvx;
+}
+
+/// `where` ? a : b, lane by lane (`where` all ones or all zeros in each lane). Bitwise rather than
+/// a blend: GCC folds a blend of a comparison into a select that it then splits into scalars.
+__attribute__((target("avx"))) inline __m256d pick(__m256d where, __m256d a, __m256d b) {
+  return _mm256_or_pd(_mm256_and_pd(where, a), _mm256_andnot_pd(where, b));
+}
+
+__attribute__((target("avx"))) inline bool any(__m256d mask) {
+  return _mm256_movemask_pd(mask) != 0;
+}
+
+__attribute__((target("avx"))) inline bool all(__m256d mask) {
+  return _mm256_movemask_pd(mask) == 0xF;
+}
+
+/// Rows r0..r3 (four doubles of one fiber each) to columns c0..c3 (one field of the four each).
+__attribute__((target("avx"))) inline void transpose(__m256d r0, __m256d r1, __m256d r2, __m256d r3,
+                                                     __m256d& c0, __m256d& c1, __m256d& c2,
+                                                     __m256d& c3) {
+  const __m256d t0 = _mm256_unpacklo_pd(r0, r1), t1 = _mm256_unpackhi_pd(r0, r1);
+  const __m256d t2 = _mm256_unpacklo_pd(r2, r3), t3 = _mm256_unpackhi_pd(r2, r3);
+  c0 = _mm256_permute2f128_pd(t0, t2, 0x20);
+  c1 = _mm256_permute2f128_pd(t1, t3, 0x20);
+  c2 = _mm256_permute2f128_pd(t0, t2, 0x31);
+  c3 = _mm256_permute2f128_pd(t1, t3, 0x31);
+}
+
+/// Four fibers' (stress, tangent) pairs stored side by side from a stress and a tangent vector.
+__attribute__((target("avx"))) inline void storePairs(double* out, __m256d stress,
+                                                      __m256d tangent) {
+  const __m256d low = _mm256_unpacklo_pd(stress, tangent);   // s0 t0 s2 t2
+  const __m256d high = _mm256_unpackhi_pd(stress, tangent);  // s1 t1 s3 t3
+  _mm256_storeu_pd(out, _mm256_permute2f128_pd(low, high, 0x20));
+  _mm256_storeu_pd(out + 4, _mm256_permute2f128_pd(low, high, 0x31));
+}
+
+}  // namespace dabs::materials::lanes
+
+#endif
