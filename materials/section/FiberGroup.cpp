@@ -234,7 +234,9 @@ class StateFiberGroup final : public FiberGroup {
   /// and the sums run over two small arrays: 7 % less time on the fiber bridges than one loop
   /// that did both (on the RC frame, whose groups are small, within 1 %), and the same sums in
   /// the same order, so the same numbers to the bit. A plane section skips the z terms (a third
-  /// of the sums). `Fold`: first commit each fiber's pending trial into its state.
+  /// of the sums). `Fold`: first commit each fiber's pending trial into its state. A law that
+  /// updates arrays (the concretes, four fibers at a time) gets the pass's strains in one array
+  /// and writes the responses in its own loop.
   template <bool Planar, bool Fold>
   void sweepFolding(double e0, double kz, double ky, FiberSums& sums) {
     FiberSums local = sums;
