@@ -51,11 +51,7 @@ Concrete02::State Concrete02::initialState() const {
 void Concrete02::computeTrials(const State* committed, const double* strains, StressTangent* out,
                                std::size_t n) const {
   const std::size_t done = updatesFourAtOnce() ? computeFourAtOnce(committed, strains, out, n) : 0;
-  for (std::size_t i = done; i < n; ++i) {
-    State trial;
-    static_cast<void>(computeTrial(committed[i], trial, strains[i]));
-    out[i] = StressTangent{trial.stress, trial.tangent};
-  }
+  lanes::computeOneByOne(*this, committed, strains, out, done, n);
 }
 
 #ifdef DABS_FOUR_LANES

@@ -5,6 +5,26 @@
 // check the processor first). Each function carries the AVX target itself, so that the rest of
 // the program keeps the baseline instruction set.
 
+#include <cstddef>
+
+#include "materials/StatefulUniaxial.h"
+
+namespace dabs::materials::lanes {
+
+/// law.computeTrial of fibers from..n-1, one at a time: the fibers left after the fours, or all
+/// of them where the processor has no AVX.
+template <class Law>
+void computeOneByOne(const Law& law, const typename Law::State* committed, const double* strains,
+                     StressTangent* out, std::size_t from, std::size_t n) {
+  for (std::size_t i = from; i < n; ++i) {
+    typename Law::State trial;
+    static_cast<void>(law.computeTrial(committed[i], trial, strains[i]));
+    out[i] = StressTangent{trial.stress, trial.tangent};
+  }
+}
+
+}  // namespace dabs::materials::lanes
+
 #if defined(__x86_64__) || defined(__i386__)
 #define DABS_FOUR_LANES 1
 #include <immintrin.h>

@@ -6,12 +6,12 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
-#include <bit>
 #include <cfloat>
 #include <cmath>
-#include <cstdint>
 #include <random>
 #include <vector>
+
+#include "materials/tests/SameBits.h"
 
 namespace dabs::materials {
 namespace {
@@ -168,12 +168,7 @@ TEST(Concrete01Test, ArraysOfFibersGiveEachFibersOwnUpdate) {
     const double e = strains[i];
     Concrete01::State trial;
     static_cast<void>(m.computeTrial(c, trial, e));
-    EXPECT_EQ(std::bit_cast<std::uint64_t>(out[i].stress),
-              std::bit_cast<std::uint64_t>(trial.stress))
-        << "fiber " << i << " strain " << e;
-    EXPECT_EQ(std::bit_cast<std::uint64_t>(out[i].tangent),
-              std::bit_cast<std::uint64_t>(trial.tangent))
-        << "fiber " << i << " strain " << e;
+    testing::expectSameBits(out[i], trial, i, e);
     const double linear = c.stress + c.unloadSlope * e - c.unloadSlope * c.strain;
     if (std::fabs(e - c.strain) < DBL_EPSILON) {
       ++unchanged;

@@ -6,12 +6,12 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
-#include <bit>
 #include <cfloat>
 #include <cmath>
-#include <cstdint>
 #include <random>
 #include <vector>
+
+#include "materials/tests/SameBits.h"
 
 namespace dabs::materials {
 namespace {
@@ -170,13 +170,7 @@ TEST(Concrete02Test, ArraysOfFibersGiveEachFibersOwnUpdate) {
     const double e = shuffledStrains[i];
     Concrete02::State trial;
     static_cast<void>(m.computeTrial(c, trial, e));
-    // Equal to the bit (a NaN stress equals a NaN stress here).
-    EXPECT_EQ(std::bit_cast<std::uint64_t>(out[i].stress),
-              std::bit_cast<std::uint64_t>(trial.stress))
-        << "fiber " << i << " strain " << e;
-    EXPECT_EQ(std::bit_cast<std::uint64_t>(out[i].tangent),
-              std::bit_cast<std::uint64_t>(trial.tangent))
-        << "fiber " << i << " strain " << e;
+    testing::expectSameBits(out[i], trial, i, e);
     if (std::fabs(e - c.strain) < DBL_EPSILON) {
       ++unchanged;
     } else if (e < c.ecmin) {
