@@ -8,6 +8,7 @@
 #include "materials/Concrete01.h"
 #include "materials/Concrete02.h"
 #include "materials/Elastic.h"
+#include "materials/FourLanes.h"
 #include "materials/ElasticPP.h"
 #include "materials/Steel01.h"
 #include "materials/Steel02.h"
@@ -15,6 +16,175 @@
 namespace dabs::materials::section {
 
 namespace {
+
+/// Groups of fewer fibers sum in fiber order: their chains are short, and forming and adding
+/// four partials would cost more (a plane section's bars at two heights are two fibers).
+constexpr std::size_t kPartialSumsFrom = 8;
+
+/// A group of fiber states (of kPartialSumsFrom fibers or more) sums its fibers into four partial
+/// sums, fiber i into partial i % 4, pads the last four with fibers of no area, and adds the
+/// partials as (0 + 1) + (2 + 3): four fibers at a time in AVX registers where the processor has
+/// AVX, one at a time in the same order elsewhere, so the same bits on every machine. (Summed in
+/// fiber order, as OpenSees sums, each of the nine sums is one chain of dependent additions, a
+/// fiber's waiting for the last one's.)
+template <bool Planar>
+struct PartialSums {
+  FiberSums part[4];
+
+  void add(std::size_t i, double y, double z, double force, double stiffness) {
+    if constexpr (Planar)
+      part[i & 3].addPlanar(y, force, stiffness);
+    else
+      part[i & 3].add(y, z, force, stiffness);
+  }
+  /// Fibers n to the next multiple of four: no area, so no force and no stiffness.
+  void pad(std::size_t n) {
+    for (std::size_t i = n; i % 4 != 0; ++i) add(i, 0.0, 0.0, 0.0, 0.0);
+  }
+  void addTo(FiberSums& sums) const {
+    const auto total = [this](double FiberSums::*x) {
+      return (part[0].*x + part[1].*x) + (part[2].*x + part[3].*x);
+    };
+    sums.p += total(&FiberSums::p);
+    sums.mz += total(&FiberSums::mz);
+    sums.kPP += total(&FiberSums::kPP);
+    sums.kPz += total(&FiberSums::kPz);
+    sums.kzz += total(&FiberSums::kzz);
+    if constexpr (!Planar) {
+      sums.my += total(&FiberSums::my);
+      sums.kPy += total(&FiberSums::kPy);
+      sums.kzy += total(&FiberSums::kzy);
+      sums.kyy += total(&FiberSums::kyy);
+    }
+  }
+};
+
+/// Adds n fibers to `sums` one at a time, in the order PartialSums describes (fiber order below
+/// kPartialSumsFrom fibers); `response(i)` is fiber i's stress and tangent.
+template <bool Planar, class Response>
+void addOneByOne(const double* ys, const double* zs, const double* as, Response response,
+                 std::size_t n, FiberSums& sums) {
+  if (n < kPartialSumsFrom) {
+    FiberSums local = sums;
+    for (std::size_t i = 0; i < n; ++i) {
+      const StressTangent r = response(i);
+      const double a = as[i];
+      if constexpr (Planar)
+        local.addPlanar(ys[i], r.stress * a, r.tangent * a);
+      else
+        local.add(ys[i], zs[i], r.stress * a, r.tangent * a);
+    }
+    sums = local;
+    return;
+  }
+  PartialSums<Planar> partial;
+  for (std::size_t i = 0; i < n; ++i) {
+    const StressTangent r = response(i);
+    const double a = as[i];
+    partial.add(i, ys[i], Planar ? 0.0 : zs[i], r.stress * a, r.tangent * a);
+  }
+  partial.pad(n);
+  partial.addTo(sums);
+}
+
+#ifdef DABS_FOUR_LANES
+/// The nine sums of four partials, lane k partial k; each lane does FiberSums::add's operations
+/// in its order.
+template <bool Planar>
+struct SumLanes {
+  __m256d p, mz, my, kPP, kPz, kPy, kzz, kzy, kyy;
+
+  __attribute__((target("avx"))) void clear() {
+    p = mz = my = kPP = kPz = kPy = kzz = kzy = kyy = _mm256_setzero_pd();
+  }
+  /// Four fibers: responses r01 = (s0 t0 s1 t1) and r23 = (s2 t2 s3 t3), areas, y and z.
+  __attribute__((target("avx"))) void add(__m256d r01, __m256d r23, __m256d a, __m256d y,
+                                          __m256d z) {
+    const __m256d r02 = _mm256_permute2f128_pd(r01, r23, 0x20);  // s0 t0 s2 t2
+    const __m256d r13 = _mm256_permute2f128_pd(r01, r23, 0x31);  // s1 t1 s3 t3
+    const __m256d force = _mm256_mul_pd(_mm256_unpacklo_pd(r02, r13), a);
+    const __m256d stiffness = _mm256_mul_pd(_mm256_unpackhi_pd(r02, r13), a);
+    const __m256d sy = _mm256_mul_pd(stiffness, y);
+    p = _mm256_add_pd(p, force);
+    mz = _mm256_sub_pd(mz, _mm256_mul_pd(force, y));
+    kPP = _mm256_add_pd(kPP, stiffness);
+    kPz = _mm256_sub_pd(kPz, sy);
+    kzz = _mm256_add_pd(kzz, _mm256_mul_pd(sy, y));
+    if constexpr (!Planar) {
+      const __m256d sz = _mm256_mul_pd(stiffness, z);
+      my = _mm256_add_pd(my, _mm256_mul_pd(force, z));
+      kPy = _mm256_add_pd(kPy, sz);
+      kzy = _mm256_sub_pd(kzy, _mm256_mul_pd(sy, z));
+      kyy = _mm256_add_pd(kyy, _mm256_mul_pd(sz, z));
+    }
+  }
+  /// (lane 0 + lane 1) + (lane 2 + lane 3).
+  __attribute__((target("avx"))) static double total(__m256d v) {
+    const __m256d pairs = _mm256_hadd_pd(v, v);
+    return _mm_cvtsd_f64(
+        _mm_add_sd(_mm256_castpd256_pd128(pairs), _mm256_extractf128_pd(pairs, 1)));
+  }
+  __attribute__((target("avx"))) void addTo(FiberSums& sums) const {
+    sums.p += total(p);
+    sums.mz += total(mz);
+    sums.kPP += total(kPP);
+    sums.kPz += total(kPz);
+    sums.kzz += total(kzz);
+    if constexpr (!Planar) {
+      sums.my += total(my);
+      sums.kPy += total(kPy);
+      sums.kzy += total(kzy);
+      sums.kyy += total(kyy);
+    }
+  }
+};
+
+/// addOneByOne's partial sums, four fibers at a time (AVX); the missing fibers of the last four
+/// are loaded as zeros, the padding PartialSums adds.
+template <bool Planar>
+__attribute__((target("avx"))) void addFourAtOnce(const double* ys, const double* zs,
+                                                  const double* as, const StressTangent* responses,
+                                                  std::size_t n, FiberSums& sums) {
+  SumLanes<Planar> lanes;
+  lanes.clear();
+  const __m256d noZ = _mm256_setzero_pd();
+  std::size_t i = 0;
+  for (; i + 4 <= n; i += 4)
+    lanes.add(_mm256_loadu_pd(&responses[i].stress), _mm256_loadu_pd(&responses[i + 2].stress),
+              _mm256_loadu_pd(as + i), _mm256_loadu_pd(ys + i),
+              Planar ? noZ : _mm256_loadu_pd(zs + i));
+  if (i < n) {
+    // The last one to three fibers by masked loads (no copies: a copy's stores would stall the
+    // vector loads that read them).
+    const long long left = static_cast<long long>(n - i);
+    const auto lane = [left](long long k) { return k < left ? -1LL : 0LL; };
+    const __m256i fibers = _mm256_set_epi64x(lane(3), lane(2), lane(1), lane(0));
+    const __m256i pairs01 = _mm256_set_epi64x(lane(1), lane(1), lane(0), lane(0));
+    const __m256i pairs23 = _mm256_set_epi64x(lane(3), lane(3), lane(2), lane(2));
+    const double* r = &responses[i].stress;
+    lanes.add(_mm256_maskload_pd(r, pairs01),
+              left > 2 ? _mm256_maskload_pd(r + 4, pairs23) : _mm256_setzero_pd(),
+              _mm256_maskload_pd(as + i, fibers), _mm256_maskload_pd(ys + i, fibers),
+              Planar ? noZ : _mm256_maskload_pd(zs + i, fibers));
+  }
+  lanes.addTo(sums);
+}
+#endif
+
+/// Adds the fibers' forces and tangents (`responses[i]` of fiber i) to `sums`, in the order
+/// PartialSums describes.
+template <bool Planar>
+void addResponses(const double* ys, const double* zs, const double* as,
+                  const StressTangent* responses, std::size_t n, FiberSums& sums) {
+#ifdef DABS_FOUR_LANES
+  if (n >= kPartialSumsFrom && lanes::available()) {
+    addFourAtOnce<Planar>(ys, zs, as, responses, n, sums);
+    return;
+  }
+#endif
+  addOneByOne<Planar>(
+      ys, zs, as, [responses](std::size_t i) { return responses[i]; }, n, sums);
+}
 
 /// Any uniaxial material held by pointer, with the calls a fiber loop makes (virtual ones).
 class BoxedMaterial {
@@ -172,19 +342,22 @@ class StateFiberGroup final : public FiberGroup {
     return sweep<true>(e0, kz, 0.0, sums);
   }
   void addTo(FiberSums& sums, bool initial) const override {
-    FiberSums local = sums;
+    // In the order of a pass's sums (the 3D sums; a plane section reads only the plane ones,
+    // which are the same numbers).
     const Geometry& g = geometry();
-    const std::size_t n = committed_.size();
     if (initial) {
       const double e0 = law_.getInitialTangent();
-      for (std::size_t i = 0; i < n; ++i) local.add(g.y[i], g.z[i], 0.0, e0 * g.area[i]);
+      addOneByOne<false>(
+          g.y.data(), g.z.data(), g.area.data(),
+          [e0](std::size_t) {
+            return StressTangent{0.0, e0};
+          },
+          committed_.size(), sums);
     } else {
-      for (std::size_t i = 0; i < n; ++i) {
-        const auto [stress, tangent] = response(i);
-        local.add(g.y[i], g.z[i], stress * g.area[i], tangent * g.area[i]);
-      }
+      addOneByOne<false>(
+          g.y.data(), g.z.data(), g.area.data(), [this](std::size_t i) { return response(i); },
+          committed_.size(), sums);
     }
-    sums = local;
   }
   // Every setTrial writes the trial of all fibers from the committed states, so a revert only
   // has to forget the trial.
@@ -279,12 +452,15 @@ class StateFiberGroup final : public FiberGroup {
         }
       }
     }
-    for (std::size_t i = 0; i < n; ++i) {
-      const double a = as[i];
-      if constexpr (Planar)
-        local.addPlanar(ys[i], trial[i].stress * a, trial[i].tangent * a);
-      else
-        local.add(ys[i], zs[i], trial[i].stress * a, trial[i].tangent * a);
+    if constexpr (kKeepsResponse) {
+      addResponses<Planar>(ys, zs, as, trial, n, local);
+    } else {
+      addOneByOne<Planar>(
+          ys, zs, as,
+          [trial](std::size_t i) {
+            return StressTangent{trial[i].stress, trial[i].tangent};
+          },
+          n, local);
     }
     sums = local;
     e0_ = e0;

@@ -284,6 +284,85 @@ TEST(FiberSectionTest, MixedMaterialsSumLikeTheFibersOneByOne) {
   EXPECT_EQ(sec.materialUpdates(), 60);
 }
 
+// A group of eight fibers or more sums into four partial sums, fiber i of the group into partial
+// i % 4, the last four padded with fibers of no area, added as (0 + 1) + (2 + 3); a smaller group
+// sums in fiber order. With AVX (four fibers at a time) or without, a section's resultants and
+// tangent are those sums to the bit: here 30 Concrete02 fibers and 6 Steel02 bars, symmetric
+// about the origin (so the centroid is the origin), in a plane and a 3D section.
+template <int Ndm>
+void expectPartialSums() {
+  const Concrete02 concrete = concrete02();
+  const Steel02 steel = steel02();
+  std::vector<typename FiberSection<Ndm>::Fiber> fibers;
+  for (int j = 0; j < 15; ++j) {
+    const double y = 0.3 * std::cos(0.37 * j + 0.1), z = 0.2 * std::sin(0.61 * j + 0.2);
+    const double area = 0.01 + 0.001 * (j % 3);
+    fibers.push_back({y, z, area, &concrete});
+    fibers.push_back({-y, -z, area, &concrete});
+  }
+  for (const double y : {0.25, 0.15, 0.05}) {
+    fibers.push_back({y, 0.1 * y, 0.0005, &steel});
+    fibers.push_back({-y, -0.1 * y, 0.0005, &steel});
+  }
+  FiberSection<Ndm> sec(1, fibers, 0.0);
+  ASSERT_EQ(sec.numFibers(), 36);
+  const double e0 = -3e-4, kz = 2e-3, ky = Ndm == 3 ? -1.5e-3 : 0.0;
+  Eigen::VectorXd e = Eigen::VectorXd::Zero(Ndm == 3 ? 4 : 2);
+  e(0) = e0;
+  e(1) = kz;
+  if constexpr (Ndm == 3) e(2) = ky;
+  ASSERT_TRUE(ok(sec.setTrialDeformation(e)));
+
+  const auto strain = [&](const auto& f) {
+    return Ndm == 3 ? e0 - f.y * kz + f.z * ky : e0 - f.y * kz;
+  };
+  FiberSums part[4];
+  for (std::size_t i = 0; i < 30; ++i) {
+    const auto& f = fibers[i];
+    Concrete02::State t;
+    ASSERT_TRUE(ok(concrete.computeTrial(concrete.virginState(), t, strain(f))));
+    part[i % 4].add(f.y, Ndm == 3 ? f.z : 0.0, t.stress * f.area, t.tangent * f.area);
+  }
+  for (std::size_t i = 30; i % 4 != 0; ++i) part[i % 4].add(0.0, 0.0, 0.0, 0.0);
+  FiberSums expected;
+  const auto total = [&part](double FiberSums::*x) {
+    return (part[0].*x + part[1].*x) + (part[2].*x + part[3].*x);
+  };
+  for (double FiberSums::*x :
+       {&FiberSums::p, &FiberSums::mz, &FiberSums::my, &FiberSums::kPP, &FiberSums::kPz,
+        &FiberSums::kPy, &FiberSums::kzz, &FiberSums::kzy, &FiberSums::kyy})
+    expected.*x += total(x);
+  for (std::size_t i = 30; i < 36; ++i) {
+    const auto& f = fibers[i];
+    Steel02::State t;
+    ASSERT_TRUE(ok(steel.computeTrial(steel.virginState(), t, strain(f))));
+    expected.add(f.y, Ndm == 3 ? f.z : 0.0, t.stress * f.area, t.tangent * f.area);
+  }
+  const auto s = sec.getStressResultant();
+  const auto k = sec.getSectionTangent();
+  EXPECT_EQ(s(0), expected.p);
+  EXPECT_EQ(s(1), expected.mz);
+  EXPECT_EQ(k(0, 0), expected.kPP);
+  EXPECT_EQ(k(0, 1), expected.kPz);
+  EXPECT_EQ(k(1, 1), expected.kzz);
+  if constexpr (Ndm == 3) {
+    EXPECT_EQ(s(2), expected.my);
+    EXPECT_EQ(k(0, 2), expected.kPy);
+    EXPECT_EQ(k(1, 2), expected.kzy);
+    EXPECT_EQ(k(2, 2), expected.kyy);
+  }
+  // The same sums again from the committed state (the section's response after a commit).
+  sec.commitState();
+  sec.revertToLastCommit();
+  EXPECT_EQ(sec.getStressResultant()(0), expected.p);
+  EXPECT_EQ(sec.getSectionTangent()(1, 1), expected.kzz);
+}
+
+TEST(FiberSectionTest, GroupsSumInFourPartialSums) {
+  expectPartialSums<2>();
+  expectPartialSums<3>();
+}
+
 TEST(FiberSectionTest, CopiesShareOnlyTheirGeometry) {
   // The copies of a section (one per integration point) share the fibers' coordinates and areas
   // but not their states: a copy and the original driven through different histories (trials,
