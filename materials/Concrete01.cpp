@@ -88,14 +88,16 @@ __attribute__((target("avx"))) std::size_t Concrete01::computeFourAtOnce(const S
   for (; i + 4 <= n; i += 4) {
     const State* c = committed + i;
     __m256d cStrain, cStress, cTangent, minStrain;
-    lanes::transpose(_mm256_loadu_pd(&c[0].strain), _mm256_loadu_pd(&c[1].strain),
-                     _mm256_loadu_pd(&c[2].strain), _mm256_loadu_pd(&c[3].strain), cStrain, cStress,
-                     cTangent, minStrain);
+    lanes::transpose(_mm256_loadu_pd(lanes::fields(c[0])), _mm256_loadu_pd(lanes::fields(c[1])),
+                     _mm256_loadu_pd(lanes::fields(c[2])), _mm256_loadu_pd(lanes::fields(c[3])),
+                     cStrain, cStress, cTangent, minStrain);
     // (endStrain, unloadSlope) of fibers 0 and 2, and of 1 and 3, then one vector each.
-    const __m256d ends02 = _mm256_insertf128_pd(
-        _mm256_castpd128_pd256(_mm_loadu_pd(&c[0].endStrain)), _mm_loadu_pd(&c[2].endStrain), 1);
-    const __m256d ends13 = _mm256_insertf128_pd(
-        _mm256_castpd128_pd256(_mm_loadu_pd(&c[1].endStrain)), _mm_loadu_pd(&c[3].endStrain), 1);
+    const __m256d ends02 =
+        _mm256_insertf128_pd(_mm256_castpd128_pd256(_mm_loadu_pd(lanes::fields(c[0]) + 4)),
+                             _mm_loadu_pd(lanes::fields(c[2]) + 4), 1);
+    const __m256d ends13 =
+        _mm256_insertf128_pd(_mm256_castpd128_pd256(_mm_loadu_pd(lanes::fields(c[1]) + 4)),
+                             _mm_loadu_pd(lanes::fields(c[3]) + 4), 1);
     const __m256d endStrain = _mm256_unpacklo_pd(ends02, ends13);
     const __m256d slope = _mm256_unpackhi_pd(ends02, ends13);
 
@@ -166,7 +168,7 @@ __attribute__((target("avx"))) std::size_t Concrete01::computeFourAtOnce(const S
     tangent = pick(tensile, zero, tangent);
     stress = pick(unchanged, cStress, stress);
     tangent = pick(unchanged, cTangent, tangent);
-    lanes::storePairs(&out[i].stress, stress, tangent);
+    lanes::storePairs(out + i, stress, tangent);
   }
   return i;
 }

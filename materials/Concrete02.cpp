@@ -114,12 +114,13 @@ __attribute__((target("avx"))) std::size_t Concrete02::computeFourAtOnce(const S
   for (; i + 4 <= n; i += 4) {
     const State* c = committed + i;
     __m256d cStrain, cStress, cTangent, ecmin, dept, sigMin, Er, ept;
-    lanes::transpose(_mm256_loadu_pd(&c[0].strain), _mm256_loadu_pd(&c[1].strain),
-                     _mm256_loadu_pd(&c[2].strain), _mm256_loadu_pd(&c[3].strain), cStrain, cStress,
-                     cTangent, ecmin);
-    lanes::transpose(_mm256_loadu_pd(&c[0].dept), _mm256_loadu_pd(&c[1].dept),
-                     _mm256_loadu_pd(&c[2].dept), _mm256_loadu_pd(&c[3].dept), dept, sigMin, Er,
-                     ept);
+    lanes::transpose(_mm256_loadu_pd(lanes::fields(c[0])), _mm256_loadu_pd(lanes::fields(c[1])),
+                     _mm256_loadu_pd(lanes::fields(c[2])), _mm256_loadu_pd(lanes::fields(c[3])),
+                     cStrain, cStress, cTangent, ecmin);
+    lanes::transpose(_mm256_loadu_pd(lanes::fields(c[0]) + 4),
+                     _mm256_loadu_pd(lanes::fields(c[1]) + 4),
+                     _mm256_loadu_pd(lanes::fields(c[2]) + 4),
+                     _mm256_loadu_pd(lanes::fields(c[3]) + 4), dept, sigMin, Er, ept);
     const __m256d strain = _mm256_loadu_pd(strains + i);
     const __m256d deps = _mm256_sub_pd(strain, cStrain);
     const __m256d unchanged = _mm256_cmp_pd(_mm256_andnot_pd(signBit, deps), epsilon, _CMP_LT_OQ);
@@ -178,7 +179,7 @@ __attribute__((target("avx"))) std::size_t Concrete02::computeFourAtOnce(const S
     stress = pick(unchanged, cStress, stress);
     tangent = pick(unchanged, cTangent, tangent);
 
-    lanes::storePairs(&out[i].stress, stress, tangent);
+    lanes::storePairs(out + i, stress, tangent);
   }
   return i;
 }

@@ -64,7 +64,7 @@ class Concrete02 final : public StatefulUniaxial<Concrete02, Concrete02State> {
   void commitTrial(State& state, double strain, double stress, double tangent) const;
   /// computeTrial of n fibers: out[i] is the trial stress and tangent at strains[i] from
   /// committed[i], bit for bit. Where the processor has AVX the fibers go four at a time through
-  /// every branch one of the four takes, each lane keeping its own result: no mispredicted
+  /// every branch one of the four takes, each lane keeping its own result: fewer mispredicted
   /// branches, and the divisions of four fibers in one instruction.
   void computeTrials(const State* committed, const double* strains, StressTangent* out,
                      std::size_t n) const;

@@ -6,6 +6,7 @@
 // the program keeps the baseline instruction set.
 
 #include <cstddef>
+#include <type_traits>
 
 #include "materials/StatefulUniaxial.h"
 
@@ -25,11 +26,24 @@ void computeOneByOne(const Law& law, const typename Law::State* committed, const
 
 }  // namespace dabs::materials::lanes
 
-#if defined(__x86_64__) || defined(__i386__)
+// x86-64 only: 32-bit x86 may compute the scalar updates in x87 extended precision, which the
+// lanes would not reproduce.
+#if defined(__x86_64__)
 #define DABS_FOUR_LANES 1
 #include <immintrin.h>
 
 namespace dabs::materials::lanes {
+
+// Arrays of responses are read and written as (stress, tangent) pairs of doubles.
+static_assert(sizeof(StressTangent) == 16 && offsetof(StressTangent, stress) == 0 &&
+              offsetof(StressTangent, tangent) == 8);
+
+/// A state's fields as an array of doubles (its laws assert the layout: all doubles, no padding).
+template <class State>
+const double* fields(const State& s) {
+  static_assert(std::is_standard_layout_v<State>);
+  return reinterpret_cast<const double*>(&s);
+}
 
 /// Whether this processor runs AVX; a property of the machine, the same for the whole run.
 inline bool available() {
@@ -64,12 +78,13 @@ __attribute__((target("avx"))) inline void transpose(__m256d r0, __m256d r1, __m
 }
 
 /// Four fibers' (stress, tangent) pairs stored side by side from a stress and a tangent vector.
-__attribute__((target("avx"))) inline void storePairs(double* out, __m256d stress,
+__attribute__((target("avx"))) inline void storePairs(StressTangent* out, __m256d stress,
                                                       __m256d tangent) {
   const __m256d low = _mm256_unpacklo_pd(stress, tangent);   // s0 t0 s2 t2
   const __m256d high = _mm256_unpackhi_pd(stress, tangent);  // s1 t1 s3 t3
-  _mm256_storeu_pd(out, _mm256_permute2f128_pd(low, high, 0x20));
-  _mm256_storeu_pd(out + 4, _mm256_permute2f128_pd(low, high, 0x31));
+  double* pairs = reinterpret_cast<double*>(out);
+  _mm256_storeu_pd(pairs, _mm256_permute2f128_pd(low, high, 0x20));
+  _mm256_storeu_pd(pairs + 4, _mm256_permute2f128_pd(low, high, 0x31));
 }
 
 }  // namespace dabs::materials::lanes

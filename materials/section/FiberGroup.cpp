@@ -8,8 +8,8 @@
 #include "materials/Concrete01.h"
 #include "materials/Concrete02.h"
 #include "materials/Elastic.h"
-#include "materials/FourLanes.h"
 #include "materials/ElasticPP.h"
+#include "materials/FourLanes.h"
 #include "materials/Steel01.h"
 #include "materials/Steel02.h"
 
@@ -150,7 +150,8 @@ __attribute__((target("avx"))) void addFourAtOnce(const double* ys, const double
   const __m256d noZ = _mm256_setzero_pd();
   std::size_t i = 0;
   for (; i + 4 <= n; i += 4)
-    lanes.add(_mm256_loadu_pd(&responses[i].stress), _mm256_loadu_pd(&responses[i + 2].stress),
+    lanes.add(_mm256_loadu_pd(reinterpret_cast<const double*>(responses + i)),
+              _mm256_loadu_pd(reinterpret_cast<const double*>(responses + i + 2)),
               _mm256_loadu_pd(as + i), _mm256_loadu_pd(ys + i),
               Planar ? noZ : _mm256_loadu_pd(zs + i));
   if (i < n) {
@@ -161,7 +162,7 @@ __attribute__((target("avx"))) void addFourAtOnce(const double* ys, const double
     const __m256i fibers = _mm256_set_epi64x(lane(3), lane(2), lane(1), lane(0));
     const __m256i pairs01 = _mm256_set_epi64x(lane(1), lane(1), lane(0), lane(0));
     const __m256i pairs23 = _mm256_set_epi64x(lane(3), lane(3), lane(2), lane(2));
-    const double* r = &responses[i].stress;
+    const double* r = reinterpret_cast<const double*>(responses + i);
     lanes.add(_mm256_maskload_pd(r, pairs01),
               left > 2 ? _mm256_maskload_pd(r + 4, pairs23) : _mm256_setzero_pd(),
               _mm256_maskload_pd(as + i, fibers), _mm256_maskload_pd(ys + i, fibers),
@@ -314,9 +315,10 @@ class StateFiberGroup final : public FiberGroup {
   static constexpr bool kKeepsResponse = requires(const M& m, State& s) {
     m.commitTrial(s, 0.0, 0.0, 0.0);
   };
-  /// A law whose computeTrials updates a whole array of fibers in one call (several at once).
+  /// A law whose computeTrials updates a whole array of fibers in one call (several at once);
+  /// the group then keeps only the responses, so the law must commit from them too.
   static constexpr bool kUpdatesArrays =
-      requires(const M& m, const State* c, const double* e, StressTangent* out) {
+      kKeepsResponse && requires(const M& m, const State* c, const double* e, StressTangent* out) {
     m.computeTrials(c, e, out, std::size_t{0});
   };
   /// `prototype` is the material object whose fibers this group holds (identity decides
@@ -331,7 +333,7 @@ class StateFiberGroup final : public FiberGroup {
     addGeometry(y, z, area);
     committed_.push_back(law_.virginState());
     trial_.push_back(Trial{});
-    if constexpr (kUpdatesArrays) strains_.push_back(0.0);
+    if constexpr (kKeepsResponse) strains_.push_back(0.0);
   }
   bool accepts(const UniaxialMaterial& material) const override { return &material == source_; }
 
@@ -405,11 +407,11 @@ class StateFiberGroup final : public FiberGroup {
   /// One pass: the updates, inlined, then the sums of the responses they just wrote (in L1: a
   /// group is one material of one section). Apart, the update loop has the registers to itself
   /// and the sums run over two small arrays: 7 % less time on the fiber bridges than one loop
-  /// that did both (on the RC frame, whose groups are small, within 1 %), and the same sums in
-  /// the same order, so the same numbers to the bit. A plane section skips the z terms (a third
-  /// of the sums). `Fold`: first commit each fiber's pending trial into its state. A law that
-  /// updates arrays (the concretes, four fibers at a time) gets the pass's strains in one array
-  /// and writes the responses in its own loop.
+  /// that did both (on the RC frame, whose groups are small, within 1 %); the sums in the order
+  /// PartialSums describes. A plane section skips the z terms (a third of the sums). `Fold`: first
+  /// commit each fiber's pending trial into its state. A law that keeps responses gets the pass's
+  /// strains in one array; one that updates arrays (the concretes, four fibers at a time) then
+  /// writes the responses in its own loop.
   template <bool Planar, bool Fold>
   void sweepFolding(double e0, double kz, double ky, FiberSums& sums) {
     FiberSums local = sums;
@@ -421,8 +423,10 @@ class StateFiberGroup final : public FiberGroup {
     Trial* trial = trial_.data();
     const double e0Pending = e0_, kzPending = kz_, kyPending = ky_;
     const std::size_t n = committed_.size();
-    if constexpr (kUpdatesArrays) {
-      // The strains (and the pending commits) first, then the law's own loop over the arrays.
+    // The only failure of these laws is a non-finite stress or tangent, and it makes the sums
+    // non-finite too: the caller checks those once instead of every fiber here.
+    if constexpr (kKeepsResponse) {
+      // The strains (and the pending commits) first, then the updates over the arrays.
       double* strains = strains_.data();
       for (std::size_t i = 0; i < n; ++i) {
         const double y = ys[i];
@@ -432,25 +436,14 @@ class StateFiberGroup final : public FiberGroup {
           law_.commitTrial(committed[i], pending, trial[i].stress, trial[i].tangent);
         }
       }
-      law_.computeTrials(committed, strains, trial, n);
+      if constexpr (kUpdatesArrays)
+        law_.computeTrials(committed, strains, trial, n);
+      else
+        lanes::computeOneByOne(law_, committed, strains, trial, 0, n);
     } else {
-      for (std::size_t i = 0; i < n; ++i) {
-        const double y = ys[i];
-        const double strain = fiberStrain<Planar>(e0, kz, ky, y, zs[i]);
-        // The only failure of these laws is a non-finite stress or tangent, and it makes the
-        // sums non-finite too: the caller checks those once instead of every fiber here.
-        if constexpr (kKeepsResponse) {
-          if constexpr (Fold) {
-            const double pending = fiberStrain<Planar>(e0Pending, kzPending, kyPending, y, zs[i]);
-            law_.commitTrial(committed[i], pending, trial[i].stress, trial[i].tangent);
-          }
-          State t;
-          static_cast<void>(law_.computeTrial(committed[i], t, strain));
-          trial[i] = Response{t.stress, t.tangent};
-        } else {
-          static_cast<void>(law_.computeTrial(committed[i], trial[i], strain));
-        }
-      }
+      for (std::size_t i = 0; i < n; ++i)
+        static_cast<void>(law_.computeTrial(committed[i], trial[i],
+                                            fiberStrain<Planar>(e0, kz, ky, ys[i], zs[i])));
     }
     if constexpr (kKeepsResponse) {
       addResponses<Planar>(ys, zs, as, trial, n, local);
@@ -508,7 +501,7 @@ class StateFiberGroup final : public FiberGroup {
   const UniaxialMaterial* source_;  ///< only compared with, while the section is built
   std::vector<State> committed_;
   std::vector<Trial> trial_;
-  std::vector<double> strains_;  ///< the fibers' strains in a pass of a law that updates arrays
+  std::vector<double> strains_;  ///< the fibers' strains in a pass (laws that keep responses)
   double e0_ = 0.0, kz_ = 0.0, ky_ = 0.0;  ///< section strains of the last setTrial
   bool planar_ = false;                    ///< the last setTrial was a plane one
   Phase phase_ = Phase::Committed;
