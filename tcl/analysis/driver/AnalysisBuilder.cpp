@@ -109,7 +109,7 @@ void AnalysisBuilder::ensureModel() {
         std::make_unique<AnalysisModel>(domain_, constraints_, numberer_, alphaSP_, alphaMP_);
     model->build();  // throws InputError for constraints it cannot enforce; nothing changed yet
     threadChoice_.reset(model->awakeElements());  // a new model: measured anew
-    model->setThreads(threadsInForce());
+    model->setThreads(threadsForNextStep());
     model_ = std::move(model);
     system_ = std::make_unique<LinearSystem>(*model_, solver_);
     system_->patternChanged();
@@ -161,7 +161,7 @@ Status AnalysisBuilder::analyzeStep(double dt) {
   if (choosing && ok(s)) {
     const std::chrono::duration<double> took = std::chrono::steady_clock::now() - start;
     threadChoice_.record(took.count(), algorithm_->iterations());
-    model_->setThreads(threadsInForce());
+    model_->setThreads(threadsForNextStep());
   }
   // Sleeping contact pairs are checked once the step converged: one that would carry force in
   // the converged state is woken and the step is redone with it.

@@ -107,7 +107,7 @@ class AnalysisBuilder {
   void setThreads(int threads) {
     threads_ = threads;
     threadChoice_.reset(model_ ? model_->awakeElements() : 2);
-    if (model_) model_->setThreads(threadsInForce());
+    if (model_) model_->setThreads(threadsForNextStep());
   }
   /// The count asked for: n, or 0 for the automatic choice.
   int threadsAsked() const noexcept { return threads_; }
@@ -125,7 +125,8 @@ class AnalysisBuilder {
   };
   int threads_ = 0;
   ThreadChoice threadChoice_{AnalysisModel::availableThreads()};
-  int threadsInForce() const noexcept { return threads_ > 0 ? threads_ : threadChoice_.next(); }
+  /// The count the next step runs on (during a trial of the automatic choice, the trial's).
+  int threadsForNextStep() const noexcept { return threads_ > 0 ? threads_ : threadChoice_.next(); }
   void ensureModel();
   void refreshModalDamping();
   [[nodiscard]] Status analyzeStep(double dt);

@@ -29,6 +29,11 @@ std::vector<int> runSteps(ThreadChoice& choice, Time time, int first, int count)
   return asked;
 }
 
+/// Step times (per iteration, by thread count): two threads 40 % faster, 60 % slower, or even.
+const auto kGain = [](int n, int) { return n == 2 ? 0.6 : 1.0; };
+const auto kLoss = [](int n, int) { return n == 2 ? 1.6 : 1.0; };
+const auto kEven = [](int, int) { return 1.0; };
+
 /// Steps of two iterations and equal times while the choice holds (at most kRevisitAtMost + 1),
 /// each on the chosen count: how many ran before a revisit began.
 int holdSteps(ThreadChoice& choice) {
@@ -70,7 +75,7 @@ TEST(ThreadChoiceTest, FewerThanTwoElementsAreDecidedAtOnce) {
 
 TEST(ThreadChoiceTest, TrialWarmsUpOnOneThreadThenAlternatesInSwappedPairs) {
   ThreadChoice choice(2);
-  const auto asked = runTrial(choice, [](int n, int) { return n == 2 ? 0.6 : 1.0; });
+  const auto asked = runTrial(choice, kGain);
   const std::vector<int> expected{1, 1,                           // warm-up
                                   1, 2, 2, 1, 1, 2, 2, 1, 1, 2,   // pairs 0-4
                                   2, 1, 1, 2, 2, 1, 1, 2, 2, 1};  // pairs 5-9
@@ -80,7 +85,7 @@ TEST(ThreadChoiceTest, TrialWarmsUpOnOneThreadThenAlternatesInSwappedPairs) {
 
 TEST(ThreadChoiceTest, KeepsTheThreadsWhenTheySaveMoreThanTheMargin) {
   ThreadChoice choice(2);
-  runTrial(choice, [](int n, int) { return n == 2 ? 0.6 : 1.0; });
+  runTrial(choice, kGain);
   ASSERT_TRUE(choice.measured());
   EXPECT_NEAR(choice.ratio(), 0.6, 1e-12);
   EXPECT_EQ(choice.next(), 2);
@@ -115,7 +120,7 @@ TEST(ThreadChoiceTest, ASecondTrialFindsTheGainANoisyFirstOneMissed) {
   ThreadChoice choice(2);
   runTrial(choice, [](int n, int) { return n == 2 ? 1.02 : 1.0; });
   ASSERT_FALSE(choice.decided());
-  runNextTrial(choice, [](int n, int) { return n == 2 ? 0.6 : 1.0; });
+  runNextTrial(choice, kGain);
   ASSERT_TRUE(choice.decided());
   EXPECT_NEAR(choice.ratio(), 0.6, 1e-12);
   EXPECT_EQ(choice.next(), 2);
@@ -162,27 +167,25 @@ TEST(ThreadChoiceTest, ASteadyRiseOfTheStepsCostIsNoGain) {
 // follows it; the next revisit finds the gain again.
 TEST(ThreadChoiceTest, AChoiceIsMeasuredAgainAfterKRevisitAfterSteps) {
   ThreadChoice choice(2);
-  const auto gain = [](int n, int) { return n == 2 ? 0.6 : 1.0; };
-  const auto loss = [](int n, int) { return n == 2 ? 1.6 : 1.0; };
-  runTrial(choice, gain);
+  runTrial(choice, kGain);
   ASSERT_EQ(choice.next(), 2);
   int step = kTrialSteps;
-  const auto held = runSteps(choice, loss, step, ThreadChoice::kRevisitAfter);
+  const auto held = runSteps(choice, kLoss, step, ThreadChoice::kRevisitAfter);
   step += ThreadChoice::kRevisitAfter;
   EXPECT_EQ(held, std::vector<int>(ThreadChoice::kRevisitAfter, 2));
   EXPECT_FALSE(choice.decided());
   EXPECT_NEAR(choice.ratio(), 0.6, 1e-12);  // the last trial's until the new one ends
-  const auto revisit = runSteps(choice, loss, step, 2 * ThreadChoice::kPairs);
+  const auto revisit = runSteps(choice, kLoss, step, 2 * ThreadChoice::kPairs);
   step += 2 * ThreadChoice::kPairs;
   const std::vector<int> pairs{1, 2, 2, 1, 1, 2, 2, 1, 1, 2, 2, 1, 1, 2, 2, 1, 1, 2, 2, 1};
   EXPECT_EQ(revisit, pairs);
   ASSERT_TRUE(choice.decided());
   EXPECT_NEAR(choice.ratio(), 1.6, 1e-12);
   EXPECT_EQ(choice.next(), 1);
-  EXPECT_EQ(runSteps(choice, gain, step, ThreadChoice::kRevisitAfter),
+  EXPECT_EQ(runSteps(choice, kGain, step, ThreadChoice::kRevisitAfter),
             std::vector<int>(ThreadChoice::kRevisitAfter, 1));
   step += ThreadChoice::kRevisitAfter;
-  EXPECT_EQ(runSteps(choice, gain, step, 2 * ThreadChoice::kPairs), pairs);
+  EXPECT_EQ(runSteps(choice, kGain, step, 2 * ThreadChoice::kPairs), pairs);
   EXPECT_NEAR(choice.ratio(), 0.6, 1e-12);
   EXPECT_EQ(choice.next(), 2);
 }
@@ -191,9 +194,7 @@ TEST(ThreadChoiceTest, AChoiceIsMeasuredAgainAfterKRevisitAfterSteps) {
 // 6400); one that changes the choice starts again from 400.
 TEST(ThreadChoiceTest, ConfirmedChoicesAreRevisitedLessOften) {
   ThreadChoice choice(2);
-  const auto gain = [](int n, int) { return n == 2 ? 0.6 : 1.0; };
-  const auto loss = [](int n, int) { return n == 2 ? 1.6 : 1.0; };
-  runTrial(choice, gain);
+  runTrial(choice, kGain);
   // Steps on the two threads chosen until the next trial starts, then that trial.
   auto stepsToRevisit = [&](auto time) {
     EXPECT_EQ(choice.chosen(), 2);
@@ -202,9 +203,9 @@ TEST(ThreadChoiceTest, ConfirmedChoicesAreRevisitedLessOften) {
     return held;
   };
   std::vector<int> intervals;
-  for (int k = 0; k < 6; ++k) intervals.push_back(stepsToRevisit(gain));
+  for (int k = 0; k < 6; ++k) intervals.push_back(stepsToRevisit(kGain));
   EXPECT_EQ(intervals, (std::vector<int>{400, 800, 1600, 3200, 6400, 6400}));
-  EXPECT_EQ(stepsToRevisit(loss), 6400);  // this revisit finds a loss: one thread
+  EXPECT_EQ(stepsToRevisit(kLoss), 6400);  // this revisit finds a loss: one thread
   ASSERT_EQ(choice.next(), 1);
   EXPECT_EQ(holdSteps(choice), ThreadChoice::kRevisitAfter);
 }
@@ -214,22 +215,20 @@ TEST(ThreadChoiceTest, ConfirmedChoicesAreRevisitedLessOften) {
 // the middle of a revisit starts over (a first trial, then 400 steps).
 TEST(ThreadChoiceTest, AnUnclearRevisitMeasuresTwiceAndAResetStartsOver) {
   ThreadChoice choice(2);
-  const auto gain = [](int n, int) { return n == 2 ? 0.6 : 1.0; };
-  const auto even = [](int, int) { return 1.0; };
-  runTrial(choice, gain);
+  runTrial(choice, kGain);
   EXPECT_EQ(holdSteps(choice), ThreadChoice::kRevisitAfter);
-  runSteps(choice, even, 0, 2 * ThreadChoice::kPairs);
+  runSteps(choice, kEven, 0, 2 * ThreadChoice::kPairs);
   EXPECT_FALSE(choice.decided());  // no clear answer: a second trial
   EXPECT_EQ(choice.decisions(), 1);
-  runSteps(choice, gain, 0, 2 * ThreadChoice::kPairs);
+  runSteps(choice, kGain, 0, 2 * ThreadChoice::kPairs);
   ASSERT_TRUE(choice.decided());
   EXPECT_EQ(choice.decisions(), 2);
   EXPECT_EQ(choice.next(), 2);
   EXPECT_EQ(holdSteps(choice), 2 * ThreadChoice::kRevisitAfter);
-  runSteps(choice, gain, 0, 4);  // into the revisit
+  runSteps(choice, kGain, 0, 4);  // into the revisit
   choice.reset();
   EXPECT_EQ(choice.decisions(), 0);
-  runTrial(choice, gain);
+  runTrial(choice, kGain);
   EXPECT_EQ(holdSteps(choice), ThreadChoice::kRevisitAfter);
 }
 
@@ -249,7 +248,7 @@ TEST(ThreadChoiceTest, NothingToChooseIsNeverMeasured) {
 
 TEST(ThreadChoiceTest, ResetMeasuresAnew) {
   ThreadChoice choice(2);
-  runTrial(choice, [](int n, int) { return n == 2 ? 0.6 : 1.0; });
+  runTrial(choice, kGain);
   ASSERT_EQ(choice.next(), 2);
   choice.reset();
   EXPECT_FALSE(choice.decided());
