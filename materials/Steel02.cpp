@@ -4,7 +4,10 @@
 #include <cassert>
 #include <cfloat>
 #include <cmath>
+#include <cstddef>
+#include <type_traits>
 
+#include "materials/FourLanes.h"
 #include "materials/InputError.h"
 
 namespace dabs::materials {
@@ -46,5 +49,139 @@ Steel02::State Steel02::initialState() const {
   s.epsMin = -s.epsMax;
   return s;
 }
+
+void Steel02::computeTrials(const State* committed, const double* strains, StressTangent* out,
+                            std::size_t n) const {
+  const std::size_t done = updatesFourAtOnce() ? computeFourAtOnce(committed, strains, out, n) : 0;
+  lanes::computeOneByOne(*this, committed, strains, out, done, n);
+}
+
+#ifdef DABS_FOUR_LANES
+
+bool Steel02::updatesFourAtOnce() { return lanes::available(); }
+
+namespace {
+
+using lanes::any;
+using lanes::pick;
+
+// The branch's fields are read as two rows of four doubles, each transposed into one vector per
+// field.
+static_assert(std::is_standard_layout_v<Steel02State> && sizeof(Steel02State) == 112);
+static_assert(offsetof(Steel02State, strain) == 0 && offsetof(Steel02State, epsR) == 8 &&
+              offsetof(Steel02State, invSpan) == 16 && offsetof(Steel02State, linearLimit) == 24 &&
+              offsetof(Steel02State, sig0) == 32 && offsetof(Steel02State, sigR) == 40 &&
+              offsetof(Steel02State, R) == 48 && offsetof(Steel02State, stress) == 56);
+
+}  // namespace
+
+// computeTrial, lane by lane, for fibers that stay on their committed branch (kon 1 or 2 and no
+// reversal: followBranch changes nothing): the initial line, the binomial series and the
+// quotients with the scalar code's operations in its order, so the same bits; |eps*|^R and the
+// power 1/R by the same library calls, one lane at a time, where a lane needs them. A fiber that
+// starts its first branch or reverses takes computeTrial itself.
+__attribute__((target("avx"))) std::size_t Steel02::computeFourAtOnce(const State* committed,
+                                                                      const double* strains,
+                                                                      StressTangent* out,
+                                                                      std::size_t n) const {
+  const auto& p = params_;
+  const __m256d b = _mm256_set1_pd(p.b), rest = _mm256_set1_pd(1.0 - p.b);
+  const __m256d lineSlope = _mm256_set1_pd(p.b + (1.0 - p.b));
+  const __m256d epsIni = _mm256_set1_pd(epsIni_);
+  const __m256d zero = _mm256_setzero_pd(), one = _mm256_set1_pd(1.0);
+  const __m256d signBit = _mm256_set1_pd(-0.0);
+  const __m256d loading = _mm256_set1_pd(1.0), unloading = _mm256_set1_pd(2.0);
+  const __m256d seriesLimit = _mm256_set1_pd(steel02::kSeriesLimit);
+  const __m256d half = _mm256_set1_pd(0.5), two = _mm256_set1_pd(2.0), six = _mm256_set1_pd(6.0);
+
+  std::size_t i = 0;
+  for (; i + 4 <= n; i += 4) {
+    const State* c = committed + i;
+    const double* f0 = lanes::fields(c[0]);
+    const double* f1 = lanes::fields(c[1]);
+    const double* f2 = lanes::fields(c[2]);
+    const double* f3 = lanes::fields(c[3]);
+    __m256d cStrain, epsR, invSpan, linearLimit, sig0, sigR, R, unused;
+    lanes::transpose(_mm256_loadu_pd(f0), _mm256_loadu_pd(f1), _mm256_loadu_pd(f2),
+                     _mm256_loadu_pd(f3), cStrain, epsR, invSpan, linearLimit);
+    lanes::transpose(_mm256_loadu_pd(f0 + 4), _mm256_loadu_pd(f1 + 4), _mm256_loadu_pd(f2 + 4),
+                     _mm256_loadu_pd(f3 + 4), sig0, sigR, R, unused);
+    const __m256d kon = _mm256_set_pd(c[3].kon, c[2].kon, c[1].kon, c[0].kon);
+
+    // computeTrial's shifted strains and the increment that decides a reversal.
+    const __m256d eps = _mm256_add_pd(_mm256_loadu_pd(strains + i), epsIni);
+    const __m256d deps = _mm256_sub_pd(eps, _mm256_add_pd(cStrain, epsIni));
+    const __m256d steady = _mm256_or_pd(_mm256_and_pd(_mm256_cmp_pd(kon, loading, _CMP_EQ_OQ),
+                                                      _mm256_cmp_pd(deps, zero, _CMP_NLT_UQ)),
+                                        _mm256_and_pd(_mm256_cmp_pd(kon, unloading, _CMP_EQ_OQ),
+                                                      _mm256_cmp_pd(deps, zero, _CMP_NGT_UQ)));
+
+    const __m256d epsRat = _mm256_mul_pd(_mm256_sub_pd(eps, epsR), invSpan);
+    const __m256d absRat = _mm256_andnot_pd(signBit, epsRat);
+    const __m256d span = _mm256_sub_pd(sig0, sigR);
+    // The initial line (absRat below the limit).
+    __m256d stress = _mm256_add_pd(
+        _mm256_mul_pd(_mm256_add_pd(_mm256_mul_pd(b, epsRat), _mm256_mul_pd(rest, epsRat)), span),
+        sigR);
+    __m256d tangent = _mm256_mul_pd(_mm256_mul_pd(lineSlope, span), invSpan);
+    const __m256d curve = _mm256_andnot_pd(_mm256_cmp_pd(absRat, linearLimit, _CMP_LT_OQ), steady);
+    const int curveLanes = _mm256_movemask_pd(curve);
+    if (curveLanes != 0) {
+      alignas(32) double ratio[4], curvature[4], power[4];
+      _mm256_store_pd(ratio, absRat);
+      _mm256_store_pd(curvature, R);
+      for (int l = 0; l < 4; ++l) {
+        power[l] = (curveLanes >> l & 1) && ratio[l] > 0.0
+                       ? std::exp(curvature[l] * std::log(ratio[l]))
+                       : 0.0;
+      }
+      const __m256d t = _mm256_load_pd(power);
+      const __m256d dum1 = _mm256_add_pd(one, t);
+      const __m256d a = _mm256_div_pd(one, R);
+      const __m256d series = _mm256_and_pd(_mm256_cmp_pd(t, seriesLimit, _CMP_LT_OQ),
+                                           _mm256_cmp_pd(R, one, _CMP_GE_OQ));
+      // 1 + a t (1 + (a - 1) t (0.5 + (a - 2) t / 6)), as computeTrial groups it.
+      const __m256d inner =
+          _mm256_add_pd(half, _mm256_div_pd(_mm256_mul_pd(_mm256_sub_pd(a, two), t), six));
+      const __m256d middle =
+          _mm256_add_pd(one, _mm256_mul_pd(_mm256_mul_pd(_mm256_sub_pd(a, one), t), inner));
+      __m256d dum2 = _mm256_add_pd(one, _mm256_mul_pd(_mm256_mul_pd(a, t), middle));
+      const int powerLanes = curveLanes & ~_mm256_movemask_pd(series);
+      if (powerLanes != 0) {
+        alignas(32) double base[4], exponent[4], root[4];
+        _mm256_store_pd(base, dum1);
+        _mm256_store_pd(exponent, a);
+        _mm256_store_pd(root, dum2);
+        for (int l = 0; l < 4; ++l)
+          if (powerLanes >> l & 1) root[l] = std::pow(base[l], exponent[l]);
+        dum2 = _mm256_load_pd(root);
+      }
+      const __m256d sigStar =
+          _mm256_add_pd(_mm256_mul_pd(b, epsRat), _mm256_div_pd(_mm256_mul_pd(rest, epsRat), dum2));
+      const __m256d eStar = _mm256_add_pd(b, _mm256_div_pd(rest, _mm256_mul_pd(dum1, dum2)));
+      stress = pick(curve, _mm256_add_pd(_mm256_mul_pd(sigStar, span), sigR), stress);
+      tangent = pick(curve, _mm256_mul_pd(_mm256_mul_pd(eStar, span), invSpan), tangent);
+    }
+    lanes::storePairs(out + i, stress, tangent);
+    const int steadyLanes = _mm256_movemask_pd(steady);
+    for (int l = 0; l < 4; ++l) {
+      if (steadyLanes >> l & 1) continue;
+      State trial;
+      static_cast<void>(computeTrial(c[l], trial, strains[i + l]));
+      out[i + l] = StressTangent{trial.stress, trial.tangent};
+    }
+  }
+  return i;
+}
+
+#else
+
+bool Steel02::updatesFourAtOnce() { return false; }
+std::size_t Steel02::computeFourAtOnce(const State*, const double*, StressTangent*,
+                                       std::size_t) const {
+  return 0;
+}
+
+#endif
 
 }  // namespace dabs::materials

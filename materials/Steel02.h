@@ -3,6 +3,7 @@
 
 #include <cfloat>
 #include <cmath>
+#include <cstddef>
 
 #include "materials/StatefulUniaxial.h"
 
@@ -14,24 +15,26 @@ inline constexpr double kSeriesLimit = 1e-4;
 }  // namespace steel02
 
 /// History of Steel02 (strains are the material's own, including the initial strain sigInit/E).
+/// The fields an update on the current branch reads come first, as two rows of four doubles: the
+/// four-lane update (computeTrials) loads them so.
 struct Steel02State {
   double strain = 0.0;   ///< strain as given to setTrialStrain
+  double epsR = 0.0;     ///< strain at the last reversal
+  double invSpan = 0.0;  ///< 1 / (eps0 - epsR), the strain normaliser of the branch
+  /// Below this |eps*| the branch is its initial line to round-off: |eps*|^R < e^-38 (below half
+  /// an ulp of 1), so 1 + |eps*|^R and its power 1/R are exactly 1 (0 when R < 1).
+  double linearLimit = 0.0;
+  double sig0 = 0.0;     ///< stress where the asymptotes meet (at eps0)
+  double sigR = 0.0;     ///< stress at the last reversal
+  double R = 0.0;        ///< curvature of the current branch (a function of epsPl and eps0)
   double stress = 0.0;   ///< stress
   double tangent = 0.0;  ///< d(stress)/d(strain)
   double epsMin = 0.0;   ///< most negative reversal strain (starts at -epsy)
   double epsMax = 0.0;   ///< most positive reversal strain (starts at +epsy)
   double epsPl = 0.0;    ///< previous extreme strain in the opposite direction (sets xi)
   double eps0 = 0.0;     ///< strain where the elastic and hardening asymptotes meet
-  double sig0 = 0.0;     ///< stress at that intersection
-  double epsR = 0.0;     ///< strain at the last reversal
-  double sigR = 0.0;     ///< stress at the last reversal
   int kon =
       0;  ///< 0 virgin, 1 loading (towards tension), 2 towards compression, 3 virgin at sigInit
-  double R = 0.0;  ///< curvature of the current branch (a function of epsPl and eps0)
-  /// Below this |eps*| the branch is its initial line to round-off: |eps*|^R < e^-38 (below half
-  /// an ulp of 1), so 1 + |eps*|^R and its power 1/R are exactly 1 (0 when R < 1).
-  double linearLimit = 0.0;
-  double invSpan = 0.0;  ///< 1 / (eps0 - epsR), the strain normaliser of the branch
 };
 
 /// Menegotto-Pinto steel with Filippou isotropic hardening (Menegotto & Pinto 1973; Filippou,
@@ -71,6 +74,14 @@ class Steel02 final : public StatefulUniaxial<Steel02, Steel02State> {
   /// stress and tangent: the branch bookkeeping alone, bit for bit the same. A fiber section
   /// keeps only its fibers' trial stress and tangent, and commits with this.
   void commitTrial(State& state, double strain, double stress, double tangent) const;
+  /// computeTrial of n fibers: out[i] is the trial stress and tangent at strains[i] from
+  /// committed[i], bit for bit. Where the processor has AVX the fibers that stay on their branch
+  /// go four at a time (the powers of the curve lane by lane, with the same library calls); a
+  /// fiber that starts or reverses a branch is updated on its own.
+  void computeTrials(const State* committed, const double* strains, StressTangent* out,
+                     std::size_t n) const;
+  /// Whether computeTrials takes four fibers at a time on this processor.
+  static bool updatesFourAtOnce();
   /// The virgin state.
   State virginState() const { return initialState(); }
   double getInitialTangent() const override { return params_.E; }
@@ -87,6 +98,9 @@ class Steel02 final : public StatefulUniaxial<Steel02, Steel02State> {
   /// reversal. False when the material stays at its virgin point (s then has its stress and
   /// tangent).
   bool followBranch(State& s, double epsP, double sigP, double deps) const;
+  /// computeTrials of the first n - n % 4 fibers, four at a time (AVX); returns their count.
+  std::size_t computeFourAtOnce(const State* committed, const double* strains, StressTangent* out,
+                                std::size_t n) const;
   Params params_;
   double epsy_ = 0.0;    ///< Fy / E
   double Esh_ = 0.0;     ///< b E

@@ -6,8 +6,14 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cfloat>
 #include <cmath>
 #include <random>
+#include <utility>
+#include <vector>
+
+#include "materials/tests/SameBits.h"
 
 namespace dabs::materials {
 namespace {
@@ -163,6 +169,104 @@ TEST(Steel02Test, CommitFromTrialResponseEqualsTheTrialState) {
     strain = peak;
   }
   EXPECT_GE(reversals, 8);  // the virgin point, first yield and every peak's reversal were passed
+}
+
+// computeTrials (four fibers at a time where the processor has AVX) must give computeTrial's
+// stress and tangent to the bit, for every fiber whatever its neighbours in the same four do:
+// states from walks of growing cycles (one material with the usual curvature, one whose R falls
+// below 1 so that the branch has no linear start and no series), each with strains that stay on
+// the branch (the initial line, either side of its limit, the binomial series, the power), that
+// reverse it, or that start the first branch, shuffled so that the four lanes mix them, and a
+// count not a multiple of four.
+TEST(Steel02Test, ArraysOfFibersGiveEachFibersOwnUpdate) {
+#if defined(__x86_64__)
+  // On x86-64 the four-lane path runs wherever the processor has AVX (else this compares the
+  // one-by-one loop with itself).
+  EXPECT_EQ(Steel02::updatesFourAtOnce(), __builtin_cpu_supports("avx") != 0);
+#endif
+  Steel02::Params usual{kFy, kE, kB, 18.0, 0.925, 0.15};
+  usual.a1 = 0.02;
+  usual.a3 = 0.02;
+  usual.sigInit = 40.0;
+  const Steel02::Params flat{kFy, kE, kB, 1.5, 0.925, 0.15};
+  int virgin = 0, reversal = 0, line = 0, series = 0, power = 0, belowOne = 0;
+  for (const auto& params : {usual, flat}) {
+    const Steel02 m(1, params);
+    const double epsIni = params.sigInit / params.E;
+    std::vector<Steel02::State> states{m.virginState()};
+    const double peaks[] = {0.5, -1.0, 3.0, -4.0, 8.0, -2.0, 12.0, -12.0, 20.0};
+    double strain = 0.0;
+    for (const double peak : peaks) {
+      // Two short steps first, so that some states lie at the start of a branch, where the
+      // strains ahead of them are on its initial line.
+      for (const double step : {1e-4, 1e-3, 0.2, 0.4, 0.6, 0.8, 1.0}) {
+        Steel02::State trial;
+        ASSERT_TRUE(
+            ok(m.computeTrial(states.back(), trial, (strain + (peak - strain) * step) * kEpsY)));
+        states.push_back(trial);
+      }
+      strain = peak;
+    }
+    std::mt19937 random(17);
+    std::uniform_real_distribution<double> anywhere(-15.0 * kEpsY, 15.0 * kEpsY);
+    std::vector<std::pair<Steel02::State, double>> fibers;
+    for (const auto& s : states) {
+      // The strain at a normalised strain eps* of the committed branch.
+      const double span = s.invSpan != 0.0 ? 1.0 / s.invSpan : kEpsY;
+      auto at = [&](double ratio) { return s.epsR + ratio * span - epsIni; };
+      const double limit = s.linearLimit;
+      const double near[] = {s.strain,
+                             s.strain + 1e-7 * kEpsY,
+                             s.strain - 1e-7 * kEpsY,
+                             s.strain + 0.05 * kEpsY,
+                             s.strain - 0.05 * kEpsY,
+                             at(0.5 * limit),
+                             at(0.999 * limit),
+                             at(1.001 * limit),
+                             at(3.0 * limit),
+                             at(0.4),
+                             at(0.7),
+                             at(1.5),
+                             at(6.0),
+                             std::nan(""),
+                             anywhere(random),
+                             anywhere(random)};
+      for (const double e : near) fibers.emplace_back(s, e);
+    }
+    std::shuffle(fibers.begin(), fibers.end(), random);
+    const std::size_t n = fibers.size() / 4 * 4 - 1;  // three left after the fours
+    std::vector<Steel02::State> committed;
+    std::vector<double> strains;
+    for (const auto& [state, e] : fibers) {
+      committed.push_back(state);
+      strains.push_back(e);
+    }
+    std::vector<StressTangent> out(n);
+    m.computeTrials(committed.data(), strains.data(), out.data(), n);
+    for (std::size_t i = 0; i < n; ++i) {
+      const auto& c = committed[i];
+      const double e = strains[i];
+      Steel02::State trial;
+      static_cast<void>(m.computeTrial(c, trial, e));
+      testing::expectSameBits(out[i], trial, i, e);
+      // What the fiber exercised, from computeTrial's own tests.
+      const double deps = (e + epsIni) - (c.strain + epsIni);
+      const double absRat = std::fabs((e + epsIni - c.epsR) * c.invSpan);
+      if (c.kon == 0 || c.kon == 3) {
+        ++virgin;
+      } else if ((c.kon == 1 && deps < 0.0) || (c.kon == 2 && deps > 0.0)) {
+        ++reversal;
+      } else if (absRat < c.linearLimit) {
+        ++line;
+      } else if (std::exp(c.R * std::log(absRat)) < steel02::kSeriesLimit && c.R >= 1.0) {
+        ++series;
+      } else {
+        ++power;
+        if (c.R < 1.0) ++belowOne;
+      }
+    }
+  }
+  for (const int count : {virgin, reversal, line, series, power, belowOne}) EXPECT_GT(count, 4);
 }
 
 }  // namespace
