@@ -42,7 +42,9 @@ Concrete01::State Concrete01::initialState() const {
 
 void Concrete01::computeTrials(const State* committed, const double* strains, StressTangent* out,
                                std::size_t n) const {
-  const std::size_t done = updatesFourAtOnce() ? computeFourAtOnce(committed, strains, out, n) : 0;
+  // A group of fewer than four (the RC frame's bar groups of two) goes straight to the loop.
+  const std::size_t done =
+      n >= 4 && updatesFourAtOnce() ? computeFourAtOnce(committed, strains, out, n) : 0;
   lanes::computeOneByOne(*this, committed, strains, out, done, n);
 }
 

@@ -50,7 +50,9 @@ Concrete02::State Concrete02::initialState() const {
 
 void Concrete02::computeTrials(const State* committed, const double* strains, StressTangent* out,
                                std::size_t n) const {
-  const std::size_t done = updatesFourAtOnce() ? computeFourAtOnce(committed, strains, out, n) : 0;
+  // A group of fewer than four (the RC frame's bar groups of two) goes straight to the loop.
+  const std::size_t done =
+      n >= 4 && updatesFourAtOnce() ? computeFourAtOnce(committed, strains, out, n) : 0;
   lanes::computeOneByOne(*this, committed, strains, out, done, n);
 }
 

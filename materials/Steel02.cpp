@@ -52,7 +52,9 @@ Steel02::State Steel02::initialState() const {
 
 void Steel02::computeTrials(const State* committed, const double* strains, StressTangent* out,
                             std::size_t n) const {
-  const std::size_t done = updatesFourAtOnce() ? computeFourAtOnce(committed, strains, out, n) : 0;
+  // A group of fewer than four (the RC frame's bar groups of two) goes straight to the loop.
+  const std::size_t done =
+      n >= 4 && updatesFourAtOnce() ? computeFourAtOnce(committed, strains, out, n) : 0;
   lanes::computeOneByOne(*this, committed, strains, out, done, n);
 }
 
@@ -65,21 +67,23 @@ namespace {
 using lanes::any;
 using lanes::pick;
 
-// The branch's fields are read as two rows of four doubles, each transposed into one vector per
-// field.
+// The branch's fields are read as rows of four doubles (a third for a reversal), each transposed
+// into one vector per field.
 static_assert(std::is_standard_layout_v<Steel02State> && sizeof(Steel02State) == 112);
 static_assert(offsetof(Steel02State, strain) == 0 && offsetof(Steel02State, epsR) == 8 &&
               offsetof(Steel02State, invSpan) == 16 && offsetof(Steel02State, linearLimit) == 24 &&
               offsetof(Steel02State, sig0) == 32 && offsetof(Steel02State, sigR) == 40 &&
-              offsetof(Steel02State, R) == 48 && offsetof(Steel02State, stress) == 56);
+              offsetof(Steel02State, R) == 48 && offsetof(Steel02State, stress) == 56 &&
+              offsetof(Steel02State, tangent) == 64 && offsetof(Steel02State, epsMin) == 72 &&
+              offsetof(Steel02State, epsMax) == 80 && offsetof(Steel02State, epsPl) == 88);
 
 }  // namespace
 
-// computeTrial, lane by lane, for fibers that stay on their committed branch (kon 1 or 2 and no
-// reversal: followBranch changes nothing): the initial line, the binomial series and the
-// quotients with the scalar code's operations in its order, so the same bits; |eps*|^R and the
-// power 1/R by the same library calls, one lane at a time, where a lane needs them. A fiber that
-// starts its first branch or reverses takes computeTrial itself.
+// computeTrial, lane by lane, for fibers on a branch (kon 1 or 2): the new branch of a reversal
+// without isotropic shift, the initial line, the binomial series and the quotients with the
+// scalar code's operations in its order, so the same bits; |eps*|^R, the power 1/R and a new
+// branch's linear limit by the same library calls, one lane at a time, where a lane needs them. A
+// fiber on its first excursion, or reversing with a shift, takes computeTrial itself.
 __attribute__((target("avx"))) std::size_t Steel02::computeFourAtOnce(const State* committed,
                                                                       const double* strains,
                                                                       StressTangent* out,
@@ -93,6 +97,22 @@ __attribute__((target("avx"))) std::size_t Steel02::computeFourAtOnce(const Stat
   const __m256d loading = _mm256_set1_pd(1.0), unloading = _mm256_set1_pd(2.0);
   const __m256d seriesLimit = _mm256_set1_pd(steel02::kSeriesLimit);
   const __m256d half = _mm256_set1_pd(0.5), two = _mm256_set1_pd(2.0), six = _mm256_set1_pd(6.0);
+  // A reversal's new branch (followBranch) where its asymptote has no isotropic shift (a3 = 0
+  // towards tension, a1 = 0 towards compression): the shift is then 1, and x * 1 is x, so these
+  // constants are followBranch's partial results to the bit.
+  const __m256d tensionShiftless = _mm256_castsi256_pd(_mm256_set1_epi64x(p.a3 == 0.0 ? -1 : 0));
+  const __m256d compressionShiftless =
+      _mm256_castsi256_pd(_mm256_set1_epi64x(p.a1 == 0.0 ? -1 : 0));
+  const bool anyShiftless = p.a1 == 0.0 || p.a3 == 0.0;
+  const double shift = 1.0;
+  const __m256d tensionStart = _mm256_set1_pd(p.Fy * shift - Esh_ * epsy_ * shift);
+  const __m256d compressionStart = _mm256_set1_pd(-p.Fy * shift + Esh_ * epsy_ * shift);
+  const __m256d hardeningGap = _mm256_set1_pd(p.E - Esh_);
+  const __m256d E = _mm256_set1_pd(p.E), Esh = _mm256_set1_pd(Esh_);
+  const __m256d Fy = _mm256_set1_pd(p.Fy * shift), minusFy = _mm256_set1_pd(-p.Fy * shift);
+  const __m256d epsy = _mm256_set1_pd(epsy_), epsyShifted = _mm256_set1_pd(epsy_ * shift);
+  const __m256d R0 = _mm256_set1_pd(p.R0), cR1 = _mm256_set1_pd(p.cR1), cR2 = _mm256_set1_pd(p.cR2);
+  const __m256d minus38 = _mm256_set1_pd(-38.0);
 
   std::size_t i = 0;
   for (; i + 4 <= n; i += 4) {
@@ -101,20 +121,67 @@ __attribute__((target("avx"))) std::size_t Steel02::computeFourAtOnce(const Stat
     const double* f1 = lanes::fields(c[1]);
     const double* f2 = lanes::fields(c[2]);
     const double* f3 = lanes::fields(c[3]);
-    __m256d cStrain, epsR, invSpan, linearLimit, sig0, sigR, R, unused;
+    __m256d cStrain, epsR, invSpan, linearLimit, sig0, sigR, R, cStress;
     lanes::transpose(_mm256_loadu_pd(f0), _mm256_loadu_pd(f1), _mm256_loadu_pd(f2),
                      _mm256_loadu_pd(f3), cStrain, epsR, invSpan, linearLimit);
     lanes::transpose(_mm256_loadu_pd(f0 + 4), _mm256_loadu_pd(f1 + 4), _mm256_loadu_pd(f2 + 4),
-                     _mm256_loadu_pd(f3 + 4), sig0, sigR, R, unused);
+                     _mm256_loadu_pd(f3 + 4), sig0, sigR, R, cStress);
     const __m256d kon = _mm256_set_pd(c[3].kon, c[2].kon, c[1].kon, c[0].kon);
 
     // computeTrial's shifted strains and the increment that decides a reversal.
     const __m256d eps = _mm256_add_pd(_mm256_loadu_pd(strains + i), epsIni);
-    const __m256d deps = _mm256_sub_pd(eps, _mm256_add_pd(cStrain, epsIni));
-    const __m256d steady = _mm256_or_pd(_mm256_and_pd(_mm256_cmp_pd(kon, loading, _CMP_EQ_OQ),
-                                                      _mm256_cmp_pd(deps, zero, _CMP_NLT_UQ)),
-                                        _mm256_and_pd(_mm256_cmp_pd(kon, unloading, _CMP_EQ_OQ),
-                                                      _mm256_cmp_pd(deps, zero, _CMP_NGT_UQ)));
+    const __m256d epsP = _mm256_add_pd(cStrain, epsIni);
+    const __m256d deps = _mm256_sub_pd(eps, epsP);
+    const __m256d isLoading = _mm256_cmp_pd(kon, loading, _CMP_EQ_OQ);
+    const __m256d isUnloading = _mm256_cmp_pd(kon, unloading, _CMP_EQ_OQ);
+    const __m256d steady =
+        _mm256_or_pd(_mm256_and_pd(isLoading, _mm256_cmp_pd(deps, zero, _CMP_NLT_UQ)),
+                     _mm256_and_pd(isUnloading, _mm256_cmp_pd(deps, zero, _CMP_NGT_UQ)));
+    __m256d updated = steady;
+    if (anyShiftless && !lanes::all(steady)) {
+      // Reversals: the new origin is the committed point, the asymptotes meet where the elastic
+      // line from it crosses the hardening line, and R follows from the plastic excursion
+      // (followBranch, setCurvature).
+      const __m256d toTension = _mm256_and_pd(
+          tensionShiftless, _mm256_and_pd(isUnloading, _mm256_cmp_pd(deps, zero, _CMP_GT_OQ)));
+      const __m256d toCompression = _mm256_and_pd(
+          compressionShiftless, _mm256_and_pd(isLoading, _mm256_cmp_pd(deps, zero, _CMP_LT_OQ)));
+      const __m256d reversing = _mm256_or_pd(toTension, toCompression);
+      if (any(reversing)) {
+        __m256d cTangent, epsMin, epsMax, epsPl;
+        lanes::transpose(_mm256_loadu_pd(f0 + 8), _mm256_loadu_pd(f1 + 8), _mm256_loadu_pd(f2 + 8),
+                         _mm256_loadu_pd(f3 + 8), cTangent, epsMin, epsMax, epsPl);
+        // epsMin and epsMax move only into the shift, which is 1 here; epsPl is the extreme
+        // reached in the other direction, before this reversal.
+        const __m256d newEps0 = _mm256_div_pd(
+            _mm256_add_pd(_mm256_sub_pd(pick(toTension, tensionStart, compressionStart), cStress),
+                          _mm256_mul_pd(E, epsP)),
+            hardeningGap);
+        const __m256d newSig0 =
+            _mm256_add_pd(pick(toTension, Fy, minusFy),
+                          _mm256_mul_pd(Esh, pick(toTension, _mm256_sub_pd(newEps0, epsyShifted),
+                                                  _mm256_add_pd(newEps0, epsyShifted))));
+        const __m256d newEpsPl = pick(toTension, epsMax, epsMin);
+        const __m256d xi =
+            _mm256_andnot_pd(signBit, _mm256_div_pd(_mm256_sub_pd(newEpsPl, newEps0), epsy));
+        const __m256d newR = _mm256_mul_pd(
+            R0, _mm256_sub_pd(one, _mm256_div_pd(_mm256_mul_pd(cR1, xi), _mm256_add_pd(cR2, xi))));
+        alignas(32) double curvature[4], exponent[4], limit[4];
+        _mm256_store_pd(curvature, newR);
+        _mm256_store_pd(exponent, _mm256_div_pd(minus38, newR));
+        const int reversingLanes = _mm256_movemask_pd(reversing);
+        for (int l = 0; l < 4; ++l)
+          limit[l] = (reversingLanes >> l & 1) && curvature[l] >= 1.0 ? std::exp(exponent[l]) : 0.0;
+        const __m256d newInvSpan = _mm256_div_pd(one, _mm256_sub_pd(newEps0, epsP));
+        epsR = pick(reversing, epsP, epsR);
+        sigR = pick(reversing, cStress, sigR);
+        sig0 = pick(reversing, newSig0, sig0);
+        R = pick(reversing, newR, R);
+        linearLimit = pick(reversing, _mm256_load_pd(limit), linearLimit);
+        invSpan = pick(reversing, newInvSpan, invSpan);
+        updated = _mm256_or_pd(steady, reversing);
+      }
+    }
 
     const __m256d epsRat = _mm256_mul_pd(_mm256_sub_pd(eps, epsR), invSpan);
     const __m256d absRat = _mm256_andnot_pd(signBit, epsRat);
@@ -124,7 +191,7 @@ __attribute__((target("avx"))) std::size_t Steel02::computeFourAtOnce(const Stat
         _mm256_mul_pd(_mm256_add_pd(_mm256_mul_pd(b, epsRat), _mm256_mul_pd(rest, epsRat)), span),
         sigR);
     __m256d tangent = _mm256_mul_pd(_mm256_mul_pd(lineSlope, span), invSpan);
-    const __m256d curve = _mm256_andnot_pd(_mm256_cmp_pd(absRat, linearLimit, _CMP_LT_OQ), steady);
+    const __m256d curve = _mm256_andnot_pd(_mm256_cmp_pd(absRat, linearLimit, _CMP_LT_OQ), updated);
     const int curveLanes = _mm256_movemask_pd(curve);
     if (curveLanes != 0) {
       alignas(32) double ratio[4], curvature[4], power[4];
@@ -163,9 +230,9 @@ __attribute__((target("avx"))) std::size_t Steel02::computeFourAtOnce(const Stat
       tangent = pick(curve, _mm256_mul_pd(_mm256_mul_pd(eStar, span), invSpan), tangent);
     }
     lanes::storePairs(out + i, stress, tangent);
-    const int steadyLanes = _mm256_movemask_pd(steady);
+    const int updatedLanes = _mm256_movemask_pd(updated);
     for (int l = 0; l < 4; ++l) {
-      if (steadyLanes >> l & 1) continue;
+      if (updatedLanes >> l & 1) continue;
       State trial;
       static_cast<void>(computeTrial(c[l], trial, strains[i + l]));
       out[i + l] = StressTangent{trial.stress, trial.tangent};

@@ -75,9 +75,9 @@ class Steel02 final : public StatefulUniaxial<Steel02, Steel02State> {
   /// keeps only its fibers' trial stress and tangent, and commits with this.
   void commitTrial(State& state, double strain, double stress, double tangent) const;
   /// computeTrial of n fibers: out[i] is the trial stress and tangent at strains[i] from
-  /// committed[i], bit for bit. Where the processor has AVX the fibers that stay on their branch
-  /// go four at a time (the powers of the curve lane by lane, with the same library calls); a
-  /// fiber that starts or reverses a branch is updated on its own.
+  /// committed[i], bit for bit. Where the processor has AVX the fibers on a branch go four at a
+  /// time (the powers lane by lane, with the same library calls); a fiber on its first excursion,
+  /// or reversing where a1 or a3 shifts the asymptote, is updated on its own.
   void computeTrials(const State* committed, const double* strains, StressTangent* out,
                      std::size_t n) const;
   /// Whether computeTrials takes four fibers at a time on this processor.
