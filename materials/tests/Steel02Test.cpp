@@ -222,6 +222,10 @@ TEST(Steel02Test, ArraysOfFibersGiveEachFibersOwnUpdate) {
                              s.strain - 1e-7 * kEpsY,
                              s.strain + 0.05 * kEpsY,
                              s.strain - 0.05 * kEpsY,
+                             s.strain + 0.5 * kEpsY,  // reversals past their linear start
+                             s.strain - 0.5 * kEpsY,
+                             s.strain + 3.0 * kEpsY,
+                             s.strain - 3.0 * kEpsY,
                              at(0.5 * limit),
                              at(0.999 * limit),
                              at(1.001 * limit),
