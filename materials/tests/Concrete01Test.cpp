@@ -163,6 +163,11 @@ TEST(Concrete01Test, ArraysOfFibersGiveEachFibersOwnUpdate) {
   }
   std::vector<StressTangent> out(n);
   m.computeTrials(committed.data(), strains.data(), out.data(), n);
+  // Groups of four to seven fibers and tails of one and two after the fours (the last fibers go
+  // again as the last four).
+  for (const std::size_t size :
+       {std::size_t{4}, std::size_t{5}, std::size_t{6}, std::size_t{7}, n - 1, n - 2})
+    testing::expectEachFibersOwnUpdate(m, committed, strains, size);
   // What the fibers exercise: unchanged, tension, a new minimum (on the envelope, or below the
   // committed line, which then takes the new unloading slope), reloading along the unloading line,
   // unloading along the committed line.

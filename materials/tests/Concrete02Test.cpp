@@ -166,6 +166,11 @@ TEST(Concrete02Test, ArraysOfFibersGiveEachFibersOwnUpdate) {
   const std::size_t n = shuffledStrains.size() / 4 * 4 - 1;  // three left after the fours
   std::vector<StressTangent> out(n);
   m.computeTrials(shuffledStates.data(), shuffledStrains.data(), out.data(), n);
+  // Groups of four to seven fibers and tails of one and two after the fours (the last fibers go
+  // again as the last four).
+  for (const std::size_t size :
+       {std::size_t{4}, std::size_t{5}, std::size_t{6}, std::size_t{7}, n - 1, n - 2})
+    testing::expectEachFibersOwnUpdate(m, shuffledStates, shuffledStrains, size);
   // What the fibers exercise: unchanged, new minimum (parabola, descending, residual), the
   // reloading band (initial slope, the reloading line, half its slope), tension reloading, the
   // tension envelope (uncracked, softening, no stress), a NaN strain.

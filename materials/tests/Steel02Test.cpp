@@ -249,6 +249,11 @@ TEST(Steel02Test, ArraysOfFibersGiveEachFibersOwnUpdate) {
     }
     std::vector<StressTangent> out(n);
     m.computeTrials(committed.data(), strains.data(), out.data(), n);
+    // Groups of four to seven fibers and tails of one and two after the fours (the last fibers go
+    // again as the last four).
+    for (const std::size_t size :
+         {std::size_t{4}, std::size_t{5}, std::size_t{6}, std::size_t{7}, n - 1, n - 2})
+      testing::expectEachFibersOwnUpdate(m, committed, strains, size);
     for (std::size_t i = 0; i < n; ++i) {
       const auto& c = committed[i];
       const double e = strains[i];
