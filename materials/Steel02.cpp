@@ -52,15 +52,12 @@ Steel02::State Steel02::initialState() const {
 
 void Steel02::computeTrials(const State* committed, const double* strains, StressTangent* out,
                             std::size_t n) const {
-  // A group of fewer than four (the RC frame's bar groups of two) goes one by one; in a larger
-  // one the last fibers after the fours go as the last four, again (each fiber's update is its
-  // own, so those written twice get the same bits twice).
-  if (n >= 4 && updatesFourAtOnce()) {
-    if (computeFourAtOnce(committed, strains, out, n) < n)
-      computeFourAtOnce(committed + (n - 4), strains + (n - 4), out + (n - 4), 4);
-    return;
-  }
-  lanes::computeOneByOne(*this, committed, strains, out, 0, n);
+  lanes::computeInFours(
+      *this, updatesFourAtOnce(),
+      [this](const State* c, const double* e, StressTangent* o, std::size_t m) {
+        return computeFourAtOnce(c, e, o, m);
+      },
+      committed, strains, out, n);
 }
 
 #ifdef DABS_FOUR_LANES

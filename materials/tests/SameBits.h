@@ -5,7 +5,9 @@
 
 #include <bit>
 #include <cstddef>
+#include <algorithm>
 #include <cstdint>
+#include <utility>
 #include <vector>
 
 #include "materials/StatefulUniaxial.h"
@@ -35,6 +37,33 @@ void expectEachFibersOwnUpdate(const Law& law, const std::vector<typename Law::S
     SCOPED_TRACE(::testing::Message() << "group of " << n);
     expectSameBits(out[i], trial, i, strains[i]);
   }
+}
+
+/// Fibers (a committed state and a strain each) as the two arrays computeTrials reads, shuffled
+/// so that the four lanes of the AVX update mix branches.
+template <class State, class Random>
+std::pair<std::vector<State>, std::vector<double>> shuffledArrays(
+    std::vector<std::pair<State, double>> fibers, Random& random) {
+  std::shuffle(fibers.begin(), fibers.end(), random);
+  std::pair<std::vector<State>, std::vector<double>> arrays;
+  for (const auto& [state, strain] : fibers) {
+    arrays.first.push_back(state);
+    arrays.second.push_back(strain);
+  }
+  return arrays;
+}
+
+/// expectEachFibersOwnUpdate for groups of n fibers (three left after the fours: n is the
+/// largest count one less than a multiple of four), of four to seven, and with tails of one and
+/// two after the fours (the last fibers go again as the group's last four); returns n.
+template <class Law>
+std::size_t expectEveryGroupSize(const Law& law, const std::vector<typename Law::State>& committed,
+                                 const std::vector<double>& strains) {
+  const std::size_t n = strains.size() / 4 * 4 - 1;
+  for (const std::size_t size :
+       {n, std::size_t{4}, std::size_t{5}, std::size_t{6}, std::size_t{7}, n - 1, n - 2})
+    expectEachFibersOwnUpdate(law, committed, strains, size);
+  return n;
 }
 
 }  // namespace dabs::materials::testing
