@@ -20,44 +20,46 @@ constexpr std::uintptr_t kHugePage = std::uintptr_t{2} << 20;
 /// 2.36's <sys/mman.h> does not name yet.
 constexpr int kCollapse = 25;
 
-/// The heap's address range from /proc/self/maps ([0, 0) when it cannot be read).
-void heapRange(std::uintptr_t& begin, std::uintptr_t& end) {
-  begin = end = 0;
+/// Where the heap starts: the lowest address of the `[heap]` lines of /proc/self/maps (asking for
+/// huge pages on part of the heap splits it into several such lines); 0 when it cannot be read.
+std::uintptr_t heapStart() {
   std::FILE* maps = std::fopen("/proc/self/maps", "r");
-  if (maps == nullptr) return;
+  if (maps == nullptr) return 0;
+  std::uintptr_t lowest = 0;
   char line[512];
   while (std::fgets(line, sizeof line, maps) != nullptr) {
     if (std::strstr(line, "[heap]") == nullptr) continue;
-    unsigned long lo = 0, hi = 0;
-    if (std::sscanf(line, "%lx-%lx", &lo, &hi) == 2) {
-      begin = lo;
-      end = hi;
-    }
-    break;
+    unsigned long lo = 0;
+    if (std::sscanf(line, "%lx-", &lo) == 1 && (lowest == 0 || lo < lowest)) lowest = lo;
   }
   std::fclose(maps);
+  return lowest;
 }
 
 }  // namespace
 
 void HugePageHeap::backGrowth() {
-  // sbrk(0) is the heap's end as glibc keeps it (no system call).
+  // sbrk(0) is the heap's end as glibc keeps it (no system call). A heap that shrank and grows
+  // again has lost the request on the part it gave back.
   const auto brk = reinterpret_cast<std::uintptr_t>(sbrk(0));
-  if (brk < backedEnd_ + kHugePage) return;
-  std::uintptr_t begin = 0, end = 0;
-  heapRange(begin, end);
-  if (end == 0) return;
-  if (backedEnd_ > begin) begin = backedEnd_;
+  const std::uintptr_t last = brk & ~(kHugePage - 1);
+  if (last < backedEnd_) backedEnd_ = last;
+  if (last < backedEnd_ + kHugePage) return;
+  // The heap's start is read once; afterwards the growth starts where the last request ended
+  // (a 2 MB boundary), never below the start.
+  if (start_ == 0) start_ = heapStart();
+  const std::uintptr_t begin = backedEnd_ > start_ ? backedEnd_ : start_;
+  backedEnd_ = last;  // also when the start cannot be read: that part is not tried again
+  if (start_ == 0) return;
   const std::uintptr_t first = (begin + kHugePage - 1) & ~(kHugePage - 1);
-  const std::uintptr_t last = end & ~(kHugePage - 1);
-  backedEnd_ = end;
   if (last <= first) return;
-  void* const start = reinterpret_cast<void*>(first);
+  void* const pages = reinterpret_cast<void*>(first);
   const std::size_t length = last - first;
-  if (madvise(start, length, MADV_HUGEPAGE) != 0) return;
+  if (madvise(pages, length, MADV_HUGEPAGE) != 0) return;
   // Best effort: a kernel without it (EINVAL), or without free huge pages, leaves the pages as
-  // they are.
-  static_cast<void>(madvise(start, length, kCollapse));
+  // they are. It also backs the part of those pages that malloc has not handed out yet (the
+  // heap's top below its last whole 2 MB page).
+  static_cast<void>(madvise(pages, length, kCollapse));
 }
 
 #else

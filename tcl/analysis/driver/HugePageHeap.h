@@ -18,12 +18,14 @@ namespace dabs::analysis {
 /// the requests fail and nothing changes.
 class HugePageHeap {
  public:
-  /// Asks for huge pages on the heap grown by 2 MB or more since the last call; cheap otherwise
-  /// (one comparison of the heap's end).
+  /// Asks for huge pages on the heap grown by a whole 2 MB page or more since the last call;
+  /// cheap otherwise (one comparison of the heap's end). The heap is the process's: a second
+  /// interpreter's analyses ask again for what the first one's asked for, once.
   void backGrowth();
 
  private:
-  std::uintptr_t backedEnd_ = 0;  ///< the heap up to here was asked for already
+  std::uintptr_t start_ = 0;      ///< the heap's start (0 before it is read)
+  std::uintptr_t backedEnd_ = 0;  ///< the heap up to here (a 2 MB boundary) was asked for
 };
 
 }  // namespace dabs::analysis
