@@ -3,9 +3,9 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <bit>
 #include <cstddef>
-#include <algorithm>
 #include <cstdint>
 #include <utility>
 #include <vector>
@@ -31,10 +31,10 @@ void expectEachFibersOwnUpdate(const Law& law, const std::vector<typename Law::S
                                const std::vector<double>& strains, std::size_t n) {
   std::vector<StressTangent> out(n);
   law.computeTrials(committed.data(), strains.data(), out.data(), n);
+  SCOPED_TRACE(::testing::Message() << "group of " << n);
   for (std::size_t i = 0; i < n; ++i) {
     typename Law::State trial;
     static_cast<void>(law.computeTrial(committed[i], trial, strains[i]));
-    SCOPED_TRACE(::testing::Message() << "group of " << n);
     expectSameBits(out[i], trial, i, strains[i]);
   }
 }

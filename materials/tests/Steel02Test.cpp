@@ -184,15 +184,21 @@ TEST(Steel02Test, ArraysOfFibersGiveEachFibersOwnUpdate) {
   EXPECT_EQ(Steel02::updatesFourAtOnce(), __builtin_cpu_supports("avx") != 0);
 #endif
   // The usual curvature with an initial stress; the same with isotropic hardening (whose
-  // reversals shift the asymptotes: those fibers go one by one); a curvature that falls below 1.
+  // reversals shift the asymptotes: those fibers go one by one), both ways and each way alone; a
+  // curvature that falls below 1.
   Steel02::Params usual{kFy, kE, kB, 18.0, 0.925, 0.15};
   usual.sigInit = 40.0;
   Steel02::Params hardening = usual;
   hardening.a1 = 0.02;
   hardening.a3 = 0.02;
+  // Hardening one way only: reversals the other way go through the lanes.
+  Steel02::Params compressiveHardening = usual;
+  compressiveHardening.a1 = 0.02;
+  Steel02::Params tensileHardening = usual;
+  tensileHardening.a3 = 0.02;
   const Steel02::Params flat{kFy, kE, kB, 1.5, 0.925, 0.15};
   int virgin = 0, reversal = 0, shiftedReversal = 0, line = 0, series = 0, power = 0, belowOne = 0;
-  for (const auto& params : {usual, hardening, flat}) {
+  for (const auto& params : {usual, hardening, compressiveHardening, tensileHardening, flat}) {
     const Steel02 m(1, params);
     const double epsIni = params.sigInit / params.E;
     std::vector<Steel02::State> states{m.virginState()};
@@ -250,7 +256,8 @@ TEST(Steel02Test, ArraysOfFibersGiveEachFibersOwnUpdate) {
       if (c.kon == 0 || c.kon == 3) {
         ++virgin;
       } else if ((c.kon == 1 && deps < 0.0) || (c.kon == 2 && deps > 0.0)) {
-        ++(params.a1 == 0.0 ? reversal : shiftedReversal);
+        const bool shifted = c.kon == 1 ? params.a1 != 0.0 : params.a3 != 0.0;
+        ++(shifted ? shiftedReversal : reversal);
       } else if (absRat < c.linearLimit) {
         ++line;
       } else if (std::exp(c.R * std::log(absRat)) < steel02::kSeriesLimit && c.R >= 1.0) {
