@@ -42,12 +42,7 @@ Concrete01::State Concrete01::initialState() const {
 
 void Concrete01::computeTrials(const State* committed, const double* strains, StressTangent* out,
                                std::size_t n) const {
-  lanes::computeInFours(
-      *this, updatesFourAtOnce(),
-      [this](const State* c, const double* e, StressTangent* o, std::size_t m) {
-        return computeFourAtOnce(c, e, o, m);
-      },
-      committed, strains, out, n);
+  lanes::computeInFours(*this, &Concrete01::computeFourAtOnce, committed, strains, out, n);
 }
 
 #ifdef DABS_FOUR_LANES

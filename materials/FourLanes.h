@@ -24,18 +24,20 @@ void computeOneByOne(const Law& law, const typename Law::State* committed, const
   }
 }
 
-/// A law's computeTrials: `fours(committed, strains, out, n)` updates the first n - n % 4 fibers
-/// four at a time and returns their count. A group of fewer than four (a plane section's bars at
-/// two heights) goes one by one, and so does every group where `fourAtOnce` is false; in a larger
-/// one the fibers after the fours go as the group's last four again (each fiber's update is its
-/// own, so those written twice get the same bits twice).
-template <class Law, class Fours>
-void computeInFours(const Law& law, bool fourAtOnce, Fours fours,
+/// A law's computeTrials: its `fours` member updates the first n - n % 4 fibers four at a time
+/// and returns their count. A group of fewer than four (a plane section's bars at two heights)
+/// goes one by one, and so does every group where the processor cannot run the fours
+/// (Law::updatesFourAtOnce); in a larger one the fibers after the fours go as the group's last
+/// four again (each fiber's update is its own, so those written twice get the same bits twice).
+template <class Law>
+void computeInFours(const Law& law,
+                    std::size_t (Law::*fours)(const typename Law::State*, const double*,
+                                              StressTangent*, std::size_t) const,
                     const typename Law::State* committed, const double* strains, StressTangent* out,
                     std::size_t n) {
-  if (n >= 4 && fourAtOnce) {
-    if (fours(committed, strains, out, n) < n)
-      fours(committed + (n - 4), strains + (n - 4), out + (n - 4), std::size_t{4});
+  if (n >= 4 && Law::updatesFourAtOnce()) {
+    if ((law.*fours)(committed, strains, out, n) < n)
+      (law.*fours)(committed + (n - 4), strains + (n - 4), out + (n - 4), std::size_t{4});
     return;
   }
   computeOneByOne(law, committed, strains, out, 0, n);

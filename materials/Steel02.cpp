@@ -52,12 +52,7 @@ Steel02::State Steel02::initialState() const {
 
 void Steel02::computeTrials(const State* committed, const double* strains, StressTangent* out,
                             std::size_t n) const {
-  lanes::computeInFours(
-      *this, updatesFourAtOnce(),
-      [this](const State* c, const double* e, StressTangent* o, std::size_t m) {
-        return computeFourAtOnce(c, e, o, m);
-      },
-      committed, strains, out, n);
+  lanes::computeInFours(*this, &Steel02::computeFourAtOnce, committed, strains, out, n);
 }
 
 #ifdef DABS_FOUR_LANES
@@ -101,18 +96,17 @@ __attribute__((target("avx"))) std::size_t Steel02::computeFourAtOnce(const Stat
   const __m256d half = _mm256_set1_pd(0.5), two = _mm256_set1_pd(2.0), six = _mm256_set1_pd(6.0);
   // A reversal's new branch (followBranch) where its asymptote has no isotropic shift (a3 = 0
   // towards tension, a1 = 0 towards compression): the shift is then 1, and x * 1 is x, so these
-  // constants are followBranch's partial results to the bit.
+  // constants, written without it, are followBranch's partial results to the bit.
   const __m256d tensionShiftless = _mm256_castsi256_pd(_mm256_set1_epi64x(p.a3 == 0.0 ? -1 : 0));
   const __m256d compressionShiftless =
       _mm256_castsi256_pd(_mm256_set1_epi64x(p.a1 == 0.0 ? -1 : 0));
   const bool anyShiftless = p.a1 == 0.0 || p.a3 == 0.0;
-  const double shift = 1.0;
-  const __m256d tensionStart = _mm256_set1_pd(p.Fy * shift - Esh_ * epsy_ * shift);
-  const __m256d compressionStart = _mm256_set1_pd(-p.Fy * shift + Esh_ * epsy_ * shift);
+  const __m256d tensionStart = _mm256_set1_pd(p.Fy - Esh_ * epsy_);
+  const __m256d compressionStart = _mm256_set1_pd(-p.Fy + Esh_ * epsy_);
   const __m256d hardeningGap = _mm256_set1_pd(p.E - Esh_);
   const __m256d E = _mm256_set1_pd(p.E), Esh = _mm256_set1_pd(Esh_);
-  const __m256d Fy = _mm256_set1_pd(p.Fy * shift), minusFy = _mm256_set1_pd(-p.Fy * shift);
-  const __m256d epsy = _mm256_set1_pd(epsy_), epsyShifted = _mm256_set1_pd(epsy_ * shift);
+  const __m256d Fy = _mm256_set1_pd(p.Fy), minusFy = _mm256_set1_pd(-p.Fy);
+  const __m256d epsy = _mm256_set1_pd(epsy_);
   const __m256d R0 = _mm256_set1_pd(p.R0), cR1 = _mm256_set1_pd(p.cR1), cR2 = _mm256_set1_pd(p.cR2);
   const __m256d minus38 = _mm256_set1_pd(-38.0);
 
@@ -159,10 +153,10 @@ __attribute__((target("avx"))) std::size_t Steel02::computeFourAtOnce(const Stat
             _mm256_add_pd(_mm256_sub_pd(pick(toTension, tensionStart, compressionStart), cStress),
                           _mm256_mul_pd(E, epsP)),
             hardeningGap);
-        const __m256d newSig0 =
-            _mm256_add_pd(pick(toTension, Fy, minusFy),
-                          _mm256_mul_pd(Esh, pick(toTension, _mm256_sub_pd(newEps0, epsyShifted),
-                                                  _mm256_add_pd(newEps0, epsyShifted))));
+        const __m256d newSig0 = _mm256_add_pd(
+            pick(toTension, Fy, minusFy),
+            _mm256_mul_pd(
+                Esh, pick(toTension, _mm256_sub_pd(newEps0, epsy), _mm256_add_pd(newEps0, epsy))));
         const __m256d newEpsPl = pick(toTension, epsMax, epsMin);
         const __m256d xi =
             _mm256_andnot_pd(signBit, _mm256_div_pd(_mm256_sub_pd(newEpsPl, newEps0), epsy));

@@ -115,11 +115,6 @@ TEST(Concrete01Test, CommitFromTrialResponseEqualsTheTrialState) {
 // take: states from a walk of unloading and reloading cycles, each with strains in every range,
 // shuffled so that the four lanes mix branches, and a count not a multiple of four.
 TEST(Concrete01Test, ArraysOfFibersGiveEachFibersOwnUpdate) {
-#if defined(__x86_64__)
-  // On x86-64 the four-lane path runs wherever the processor has AVX (else this compares the
-  // one-by-one loop with itself).
-  EXPECT_EQ(Concrete01::updatesFourAtOnce(), __builtin_cpu_supports("avx") != 0);
-#endif
   const Concrete01 m(1, Concrete01::Params{kFpc, kEps0, kFpcu, kEpsU});
   std::vector<Concrete01::State> states{m.virginState()};
   const double peaks[] = {-0.001, -0.0002, -0.0025, 0.0005, -0.004, -0.001, -0.008, 0.001, -0.012};

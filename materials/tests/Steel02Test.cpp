@@ -178,11 +178,6 @@ TEST(Steel02Test, CommitFromTrialResponseEqualsTheTrialState) {
 // reverse it, or that start the first branch, shuffled so that the four lanes mix them, and a
 // count not a multiple of four.
 TEST(Steel02Test, ArraysOfFibersGiveEachFibersOwnUpdate) {
-#if defined(__x86_64__)
-  // On x86-64 the four-lane path runs wherever the processor has AVX (else this compares the
-  // one-by-one loop with itself).
-  EXPECT_EQ(Steel02::updatesFourAtOnce(), __builtin_cpu_supports("avx") != 0);
-#endif
   // The usual curvature with an initial stress; the same with isotropic hardening (whose
   // reversals shift the asymptotes: those fibers go one by one), both ways and each way alone; a
   // curvature that falls below 1.
