@@ -80,6 +80,7 @@ int runCommand(Runtime& rt, const CommandEntry& entry, int objc, Tcl_Obj* const 
   try {
     Tcl_ResetResult(rt.interp);
     entry.fn(rt, args);
+    rt.heap.adviseGrowth();
     return TCL_OK;
   } catch (const ArgError& e) {
     setError(rt.interp, e.what());

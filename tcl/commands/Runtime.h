@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "materials/UniaxialMaterial.h"
+#include "tcl/analysis/driver/HugePageHeap.h"
 #include "tcl/domain/Domain.h"
 #include "tcl/domain/ModelBuilder.h"
 
@@ -29,6 +30,8 @@ struct Runtime {
   Runtime& operator=(const Runtime&) = delete;
 
   Tcl_Interp* interp;
+  /// Set up first, so that the model's blocks land on the heap it prepares.
+  analysis::HugePageHeap heap;
   domain::Domain domain;
   domain::ModelBuilder builder;
   std::unique_ptr<analysis::AnalysisBuilder> analysis;

@@ -8,7 +8,6 @@
 
 #include "tcl/analysis/model/AnalysisModel.h"
 #include "tcl/analysis/driver/ContactStepping.h"
-#include "tcl/analysis/driver/HugePageHeap.h"
 #include "tcl/analysis/driver/ThreadChoice.h"
 #include "tcl/analysis/algorithms/ConvergenceTest.h"
 #include "tcl/analysis/system/EigenSolver.h"
@@ -125,7 +124,6 @@ class AnalysisBuilder {
     long all = 0, kept = 0;
   };
   int threads_ = 0;
-  HugePageHeap heap_;  ///< the heap's growth asked onto huge pages before each analysis
   ThreadChoice threadChoice_{AnalysisModel::availableThreads()};
   /// The count the next step runs on (during a trial of the automatic choice, the trial's).
   int threadsForNextStep() const noexcept { return threads_ > 0 ? threads_ : threadChoice_.next(); }
