@@ -29,6 +29,61 @@ namespace {
 constexpr int kSplitAtLeast = 192;
 constexpr int kSeparatorShare = 16;
 
+/// product[r] += sum over q of (column q's entry 0 times d[q]) times column q's entry r, for r <
+/// rows and the `width` columns of `columns` (`stride` apart): a descendant supernode's update of
+/// one column. Four columns at a time, so that product is loaded and stored once per four; each
+/// row still takes its terms one by one in column order, so the result of one column at a time,
+/// bit for bit.
+void addColumnProducts(const double* __restrict columns, int stride, int width,
+                       const double* __restrict d, int rows, double* __restrict product) {
+  const auto column = [columns, stride](int q) {
+    return columns + static_cast<std::ptrdiff_t>(q) * stride;
+  };
+  int q = 0;
+  for (; q + 4 <= width; q += 4) {
+    const double* c0 = column(q);
+    const double* c1 = column(q + 1);
+    const double* c2 = column(q + 2);
+    const double* c3 = column(q + 3);
+    const double s0 = c0[0] * d[q], s1 = c1[0] * d[q + 1], s2 = c2[0] * d[q + 2],
+                 s3 = c3[0] * d[q + 3];
+    for (int r = 0; r < rows; ++r)
+      product[r] = (((product[r] + s0 * c0[r]) + s1 * c1[r]) + s2 * c2[r]) + s3 * c3[r];
+  }
+  for (; q < width; ++q) {
+    const double* c = column(q);
+    const double scaled = c[0] * d[q];
+    for (int r = 0; r < rows; ++r) product[r] += scaled * c[r];
+  }
+}
+
+/// target[r] -= (column k's entry j times d[k]) times column k's entry r, for rows r from j down
+/// to the block's height and the block's columns k < j in order: the updates of a supernode's
+/// column j by its earlier columns. Four columns at a time, each row's subtractions still one by
+/// one in column order (bit for bit those of one column at a time).
+void subtractColumnProducts(const double* block, int height, int j, const double* __restrict d,
+                            double* target) {
+  const auto column = [block, height](int k) {
+    return block + static_cast<std::ptrdiff_t>(k) * height;
+  };
+  int k = 0;
+  for (; k + 4 <= j; k += 4) {
+    const double* c0 = column(k);
+    const double* c1 = column(k + 1);
+    const double* c2 = column(k + 2);
+    const double* c3 = column(k + 3);
+    const double l0 = c0[j] * d[k], l1 = c1[j] * d[k + 1], l2 = c2[j] * d[k + 2],
+                 l3 = c3[j] * d[k + 3];
+    for (int r = j; r < height; ++r)
+      target[r] = (((target[r] - l0 * c0[r]) - l1 * c1[r]) - l2 * c2[r]) - l3 * c3[r];
+  }
+  for (; k < j; ++k) {
+    const double* c = column(k);
+    const double l = c[j] * d[k];
+    for (int r = j; r < height; ++r) target[r] -= l * c[r];
+  }
+}
+
 /// The forward substitution inside one supernode's block (w columns of height h, column-major;
 /// column k's entries below the diagonal from row k + 1): y[k + 1, h) -= y[k] * column k for
 /// k = 0 .. w - 1. Four columns at a time, so that each row below is loaded and stored once per
@@ -506,11 +561,7 @@ Status SparseLdlt::factorizeRange(const double* values, int begin, int end, int 
         // a library product's set-up here).
         const int rowsFromC = hk - c;
         std::fill(product, product + rowsFromC, 0.0);
-        for (int q = 0; q < wk; ++q) {
-          const double* colK = blockK + static_cast<std::ptrdiff_t>(q) * hk + c;
-          const double scaled = colK[0] * dd[fk + q];
-          for (int r = 0; r < rowsFromC; ++r) product[r] += scaled * colK[r];
-        }
+        addColumnProducts(blockK + c, hk, wk, dd + fk, rowsFromC, product);
         double* column = block + static_cast<std::ptrdiff_t>(rowsK[c] - f) * h;
         for (int r = 0; r < rowsFromC; ++r) column[relative[rowsK[c + r]]] -= product[r];
       }
@@ -519,19 +570,17 @@ Status SparseLdlt::factorizeRange(const double* values, int begin, int end, int 
       if (last < hk) wait(k, colSuper_[static_cast<std::size_t>(rowsK[last])]);
       k = next;
     }
-    // Dense L D L^T of the block, column by column: the pivot, the column of L below it, and the
-    // update of the block's later columns (their rows from the diagonal down).
-    for (int k = 0; k < w; ++k) {
-      double* col = block + static_cast<std::ptrdiff_t>(k) * h;
-      const double dk = col[k];
-      if (!(dk != 0.0) || !std::isfinite(dk)) return Status::Singular;
-      dd[f + k] = dk;
-      for (int r = k + 1; r < h; ++r) col[r] /= dk;
-      for (int j = k + 1; j < w; ++j) {
-        const double ljk = col[j] * dk;
-        double* target = block + static_cast<std::ptrdiff_t>(j) * h;
-        for (int r = j; r < h; ++r) target[r] -= ljk * col[r];
-      }
+    // Dense L D L^T of the block, column by column (left-looking): the updates of column j by
+    // the columns before it (rows from the diagonal down), the pivot, and the column of L below
+    // it. Each entry takes its updates in column order, as in the right-looking order of the
+    // textbook (each column updating all later ones at once), so the same numbers.
+    for (int j = 0; j < w; ++j) {
+      double* column = block + static_cast<std::ptrdiff_t>(j) * h;
+      subtractColumnProducts(block, h, j, dd + f, column);
+      const double dj = column[j];
+      if (!(dj != 0.0) || !std::isfinite(dj)) return Status::Singular;
+      dd[f + j] = dj;
+      for (int r = j + 1; r < h; ++r) column[r] /= dj;
     }
     if (h > w) {
       updateRow_[s] = w;
