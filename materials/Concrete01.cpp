@@ -90,6 +90,16 @@ __attribute__((target("avx"))) std::size_t Concrete01::computeFourAtOnce(const S
     lanes::transpose(_mm256_loadu_pd(lanes::fields(c[0])), _mm256_loadu_pd(lanes::fields(c[1])),
                      _mm256_loadu_pd(lanes::fields(c[2])), _mm256_loadu_pd(lanes::fields(c[3])),
                      cStrain, cStress, cTangent, minStrain);
+    const __m256d strain = _mm256_loadu_pd(strains + i);
+    const __m256d unchanged = _mm256_cmp_pd(
+        _mm256_andnot_pd(signBit, _mm256_sub_pd(strain, cStrain)), epsilon, _CMP_LT_OQ);
+    const __m256d tensile = _mm256_cmp_pd(strain, zero, _CMP_GT_OQ);
+    if (lanes::all(tensile)) {
+      // Four open cracks (the tension side of a section in bending): no stress, no tangent.
+      lanes::storePairs(out + i, _mm256_and_pd(unchanged, cStress),
+                        _mm256_and_pd(unchanged, cTangent));
+      continue;
+    }
     // (endStrain, unloadSlope) of fibers 0 and 2, and of 1 and 3, then one vector each.
     const __m256d ends02 =
         _mm256_insertf128_pd(_mm256_castpd128_pd256(_mm_loadu_pd(lanes::fields(c[0]) + 4)),
@@ -100,10 +110,6 @@ __attribute__((target("avx"))) std::size_t Concrete01::computeFourAtOnce(const S
     const __m256d endStrain = _mm256_unpacklo_pd(ends02, ends13);
     const __m256d slope = _mm256_unpackhi_pd(ends02, ends13);
 
-    const __m256d strain = _mm256_loadu_pd(strains + i);
-    const __m256d unchanged = _mm256_cmp_pd(
-        _mm256_andnot_pd(signBit, _mm256_sub_pd(strain, cStrain)), epsilon, _CMP_LT_OQ);
-    const __m256d tensile = _mm256_cmp_pd(strain, zero, _CMP_GT_OQ);
     const __m256d linear = _mm256_sub_pd(_mm256_add_pd(cStress, _mm256_mul_pd(slope, strain)),
                                          _mm256_mul_pd(slope, cStrain));
     const __m256d loading = _mm256_cmp_pd(strain, cStrain, _CMP_LT_OQ);
