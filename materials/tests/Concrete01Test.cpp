@@ -150,6 +150,19 @@ TEST(Concrete01Test, ArraysOfFibersGiveEachFibersOwnUpdate) {
   }
   const auto [committed, strains] = testing::shuffledArrays(fibers, random);
   const std::size_t n = testing::expectEveryGroupSize(m, committed, strains);
+  {
+    // Fours whose strains are all tensile (open cracks; the four's shortcut): from every state,
+    // most of them with a compressive stress the update must drop, and the tensile states at
+    // their own strain (unchanged).
+    std::vector<std::pair<Concrete01::State, double>> open;
+    for (const auto& s : states) {
+      open.emplace_back(s, 1e-4 + 1e-7 * static_cast<double>(open.size()));
+      if (s.strain > 0.0) open.emplace_back(s, s.strain);
+    }
+    const auto [openCommitted, openStrains] = testing::shuffledArrays(open, random);
+    SCOPED_TRACE("all tensile");
+    testing::expectEveryGroupSize(m, openCommitted, openStrains);
+  }
   // What the fibers exercise: unchanged, tension, a new minimum (on the envelope, or below the
   // committed line, which then takes the new unloading slope), reloading along the unloading line,
   // unloading along the committed line.
