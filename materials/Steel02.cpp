@@ -78,9 +78,10 @@ static_assert(offsetof(Steel02State, strain) == 0 && offsetof(Steel02State, epsR
 
 // computeTrial, lane by lane, for fibers on a branch (kon 1 or 2): the new branch of a reversal
 // without isotropic shift, the initial line, the binomial series and the quotients with the
-// scalar code's operations in its order, so the same bits; |eps*|^R, the power 1/R and a new
-// branch's linear limit by the same library calls, one lane at a time, where a lane needs them. A
-// fiber on its first excursion, or reversing with a shift, takes computeTrial itself.
+// scalar code's operations in its order, so the same bits; |eps*|^R and the power 1/R by the same
+// library calls and a new branch's linear limit by steel02::linearLimit, one lane at a time, where
+// a lane needs them. A fiber on its first excursion, or reversing with a shift, takes computeTrial
+// itself.
 __attribute__((target("avx"))) std::size_t Steel02::computeFourAtOnce(const State* committed,
                                                                       const double* strains,
                                                                       StressTangent* out,
@@ -108,7 +109,6 @@ __attribute__((target("avx"))) std::size_t Steel02::computeFourAtOnce(const Stat
   const __m256d Fy = _mm256_set1_pd(p.Fy), minusFy = _mm256_set1_pd(-p.Fy);
   const __m256d epsy = _mm256_set1_pd(epsy_);
   const __m256d R0 = _mm256_set1_pd(p.R0), cR1 = _mm256_set1_pd(p.cR1), cR2 = _mm256_set1_pd(p.cR2);
-  const __m256d minus38 = _mm256_set1_pd(-38.0);
 
   std::size_t i = 0;
   for (; i + 4 <= n; i += 4) {
@@ -162,12 +162,11 @@ __attribute__((target("avx"))) std::size_t Steel02::computeFourAtOnce(const Stat
             _mm256_andnot_pd(signBit, _mm256_div_pd(_mm256_sub_pd(newEpsPl, newEps0), epsy));
         const __m256d newR = _mm256_mul_pd(
             R0, _mm256_sub_pd(one, _mm256_div_pd(_mm256_mul_pd(cR1, xi), _mm256_add_pd(cR2, xi))));
-        alignas(32) double curvature[4], exponent[4], limit[4];
+        alignas(32) double curvature[4], limit[4];
         _mm256_store_pd(curvature, newR);
-        _mm256_store_pd(exponent, _mm256_div_pd(minus38, newR));
         const int reversingLanes = _mm256_movemask_pd(reversing);
         for (int l = 0; l < 4; ++l)
-          limit[l] = (reversingLanes >> l & 1) && curvature[l] >= 1.0 ? std::exp(exponent[l]) : 0.0;
+          limit[l] = reversingLanes >> l & 1 ? steel02::linearLimit(curvature[l]) : 0.0;
         const __m256d newInvSpan = _mm256_div_pd(one, _mm256_sub_pd(newEps0, epsP));
         epsR = pick(reversing, epsP, epsR);
         sigR = pick(reversing, cStress, sigR);

@@ -1,9 +1,11 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include <bit>
 #include <cfloat>
 #include <cmath>
 #include <cstddef>
+#include <cstdint>
 
 #include "materials/StatefulUniaxial.h"
 
@@ -12,6 +14,24 @@ namespace dabs::materials {
 namespace steel02 {
 /// Below this value of |eps*|^R the binomial series replaces pow(1 + t, 1/R).
 inline constexpr double kSeriesLimit = 1e-4;
+
+/// The linear limit of a branch of curvature R (Steel02State::linearLimit): 2^(q/4) with
+/// q = floor(-4 (38/R) log2 e), a lower bound of e^(-38/R) within a factor 2^(1/4) of it, from
+/// the bits of 2^floor(q/4) and a power 2^(j/4), j = 0..3 (an exp per reversal, 6 % of the
+/// pushover benchmark's time, costs a division and a few operations here). Only where the
+/// initial line is taken depends on it, never a number: between it and e^(-36.7/R), |eps*|^R is
+/// below half an ulp of 1 and the curve's own operations give the line's bits. 0 for R < 1.
+inline double linearLimit(double R) {
+  if (!(R >= 1.0)) return 0.0;
+  constexpr double kQuarterPowers[4] = {1.0, 1.1892071150027210667, 1.4142135623730950488,
+                                        1.6817928305074290861};
+  constexpr double kQuarterSteps = -4.0 * 38.0 * 1.4426950408889634074;  // -4 * 38 log2 e
+  const double q = std::floor(kQuarterSteps / R);                        // -220 .. -1 (R >= 1)
+  const double whole = std::floor(q * 0.25);
+  const auto j = static_cast<std::size_t>(q - 4.0 * whole);
+  const auto bits = static_cast<std::uint64_t>(static_cast<std::int64_t>(whole) + 1023) << 52;
+  return kQuarterPowers[j] * std::bit_cast<double>(bits);
+}
 }  // namespace steel02
 
 /// History of Steel02 (strains are the material's own, including the initial strain sigInit/E).
@@ -22,7 +42,7 @@ struct Steel02State {
   double epsR = 0.0;     ///< strain at the last reversal
   double invSpan = 0.0;  ///< 1 / (eps0 - epsR), the strain normaliser of the branch
   /// Below this |eps*| the branch is its initial line to round-off: |eps*|^R < e^-38 (below half
-  /// an ulp of 1), so 1 + |eps*|^R and its power 1/R are exactly 1 (0 when R < 1).
+  /// an ulp of 1), so 1 + |eps*|^R and its power 1/R are exactly 1 (steel02::linearLimit).
   double linearLimit = 0.0;
   double sig0 = 0.0;     ///< stress where the asymptotes meet (at eps0)
   double sigR = 0.0;     ///< stress at the last reversal
@@ -114,9 +134,9 @@ inline void Steel02::setCurvature(State& s) const {
   const auto& p = params_;
   const double xi = std::fabs((s.epsPl - s.eps0) / epsy_);
   s.R = p.R0 * (1.0 - (p.cR1 * xi) / (p.cR2 + xi));
-  // exp(-38/R): the limit costs one exp per reversal and saves an exp and a log per update on
+  // The limit costs a few operations per reversal and saves an exp and a log per update on
   // every fiber still near the start of its branch (most bars of a structure that stays elastic).
-  s.linearLimit = s.R >= 1.0 ? std::exp(-38.0 / s.R) : 0.0;
+  s.linearLimit = steel02::linearLimit(s.R);
   s.invSpan = 1.0 / (s.eps0 - s.epsR);
 }
 
