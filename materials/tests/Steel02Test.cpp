@@ -269,3 +269,25 @@ TEST(Steel02Test, ArraysOfFibersGiveEachFibersOwnUpdate) {
 
 }  // namespace
 }  // namespace dabs::materials
+
+namespace dabs::materials {
+namespace {
+
+// The linear limit against e^(-38/R) from the C library: never above it beyond round-off (so
+// |eps*|^R stays below half an ulp of 1 under it, which needs e^(-36.7/R)), never below it by
+// more than 2^(1/4); zero for R < 1.
+TEST(Steel02Test, LinearLimitIsWithinAQuarterPowerOfTwoBelowExpOfMinus38OverR) {
+  EXPECT_EQ(steel02::linearLimit(0.999), 0.0);
+  EXPECT_EQ(steel02::linearLimit(0.0), 0.0);
+  EXPECT_EQ(steel02::linearLimit(std::nan("")), 0.0);
+  for (double R = 1.0; R < 200.0; R *= 1.0007) {
+    const double exact = std::exp(-38.0 / R);
+    const double limit = steel02::linearLimit(R);
+    ASSERT_LE(limit, exact * (1.0 + 1e-12)) << "R " << R;
+    ASSERT_GE(limit, exact / 1.1892071150027211 * (1.0 - 1e-12)) << "R " << R;
+    ASSERT_LT(std::pow(limit, R), 0.5 * DBL_EPSILON) << "R " << R;
+  }
+}
+
+}  // namespace
+}  // namespace dabs::materials
