@@ -94,6 +94,7 @@ __attribute__((target("avx"))) std::size_t Steel02::computeFourAtOnce(const Stat
   const __m256d signBit = _mm256_set1_pd(-0.0);
   const __m256d loading = _mm256_set1_pd(1.0), unloading = _mm256_set1_pd(2.0);
   const __m256d seriesLimit = _mm256_set1_pd(steel02::kSeriesLimit);
+  const __m256d farSeriesFrom = _mm256_set1_pd(steel02::kFarSeriesFrom);
   const __m256d half = _mm256_set1_pd(0.5), two = _mm256_set1_pd(2.0), six = _mm256_set1_pd(6.0);
   // A reversal's new branch (followBranch) where its asymptote has no isotropic shift (a3 = 0
   // towards tension, a1 = 0 towards compression): the shift is then 1, and x * 1 is x, so these
@@ -208,7 +209,21 @@ __attribute__((target("avx"))) std::size_t Steel02::computeFourAtOnce(const Stat
       const __m256d middle =
           _mm256_add_pd(one, _mm256_mul_pd(_mm256_mul_pd(_mm256_sub_pd(a, one), t), inner));
       __m256d dum2 = _mm256_add_pd(one, _mm256_mul_pd(_mm256_mul_pd(a, t), middle));
-      const int powerLanes = curveLanes & ~_mm256_movemask_pd(series);
+      const __m256d far = _mm256_and_pd(_mm256_cmp_pd(t, farSeriesFrom, _CMP_GT_OQ),
+                                        _mm256_cmp_pd(R, one, _CMP_GE_OQ));
+      if (any(_mm256_and_pd(far, curve))) {
+        // |eps*| (1 + a u (1 + (a - 1) u (0.5 + (a - 2) u / 6))), u = 1 / t.
+        const __m256d u = _mm256_div_pd(one, t);
+        const __m256d farInner =
+            _mm256_add_pd(half, _mm256_div_pd(_mm256_mul_pd(_mm256_sub_pd(a, two), u), six));
+        const __m256d farMiddle =
+            _mm256_add_pd(one, _mm256_mul_pd(_mm256_mul_pd(_mm256_sub_pd(a, one), u), farInner));
+        dum2 = pick(far,
+                    _mm256_mul_pd(
+                        absRat, _mm256_add_pd(one, _mm256_mul_pd(_mm256_mul_pd(a, u), farMiddle))),
+                    dum2);
+      }
+      const int powerLanes = curveLanes & ~_mm256_movemask_pd(_mm256_or_pd(series, far));
       if (powerLanes != 0) {
         alignas(32) double base[4], exponent[4], root[4];
         _mm256_store_pd(base, dum1);

@@ -14,6 +14,8 @@ namespace dabs::materials {
 namespace steel02 {
 /// Below this value of |eps*|^R the binomial series replaces pow(1 + t, 1/R).
 inline constexpr double kSeriesLimit = 1e-4;
+/// Above this value of |eps*|^R, |eps*| times the series in its reciprocal replaces it.
+inline constexpr double kFarSeriesFrom = 1e4;
 
 /// The linear limit of a branch of curvature R (Steel02State::linearLimit): 2^(q/4) with
 /// q = floor(-4 (38/R) log2 e), a lower bound of e^(-38/R) within a factor 2^(1/4) of it, from
@@ -229,11 +231,19 @@ inline Status Steel02::computeTrial(const State& committed, State& trial, double
   const double dum1 = 1.0 + t;
   // (1 + t)^(1/R): near the elastic branch t is small and the binomial series to t^3 equals the
   // power to round-off (the next term is below 1e-17 for t < 1e-4 and R >= 1), at a fraction of
-  // the cost of a second pow.
+  // the cost of a second pow. Far along the branch (t > 1e4, |eps*| past the asymptotes' meeting
+  // point by a few per cent at the usual R) it is |eps*| (1 + 1/t)^(1/R), the same series in 1/t;
+  // a yielding bar of a pushover is there three times in four.
   const double a = 1.0 / trial.R;
-  const double dum2 = t < steel02::kSeriesLimit && trial.R >= 1.0
-                          ? 1.0 + a * t * (1.0 + (a - 1.0) * t * (0.5 + (a - 2.0) * t / 6.0))
-                          : std::pow(dum1, a);
+  double dum2;
+  if (t < steel02::kSeriesLimit && trial.R >= 1.0) {
+    dum2 = 1.0 + a * t * (1.0 + (a - 1.0) * t * (0.5 + (a - 2.0) * t / 6.0));
+  } else if (t > steel02::kFarSeriesFrom && trial.R >= 1.0) {
+    const double u = 1.0 / t;
+    dum2 = absRat * (1.0 + a * u * (1.0 + (a - 1.0) * u * (0.5 + (a - 2.0) * u / 6.0)));
+  } else {
+    dum2 = std::pow(dum1, a);
+  }
   const double sigStar = p.b * epsRat + (1.0 - p.b) * epsRat / dum2;
   trial.stress = sigStar * (trial.sig0 - trial.sigR) + trial.sigR;
   const double eStar = p.b + (1.0 - p.b) / (dum1 * dum2);

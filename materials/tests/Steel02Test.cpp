@@ -52,6 +52,23 @@ TEST(Steel02Test, StressAndTangentAroundTheLinearLimitOfTheBranch) {
   }
 }
 
+TEST(Steel02Test, StressAndTangentInEachRangeOfThePower) {
+  // (1 + t)^(1/R), t = |eps*|^R, by the series in t (t < 1e-4), the power (up to 1e4) and |eps*|
+  // times the series in 1/t (beyond): in each range, and on both sides of each bound, the stress
+  // and tangent of the published curve evaluated in long double.
+  const long double R = 15.0L;
+  for (double ratio : {0.3, 0.5, 0.54, 0.55, 0.7, 1.0, 1.3, 1.84, 1.86, 2.0, 5.0, 40.0, -2.5}) {
+    Steel02 m(1, Steel02::Params{kFy, kE, kB});
+    ASSERT_TRUE(ok(m.setTrialStrain(ratio * kEpsY)));
+    const long double x = ratio, t = std::pow(std::fabs(x), R);
+    const long double root = std::pow(1.0L + t, 1.0L / R);
+    const long double sigStar = kB * x + (1.0L - kB) * x / root;
+    const long double eStar = kB + (1.0L - kB) / ((1.0L + t) * root);
+    EXPECT_NEAR(m.getStress(), static_cast<double>(kFy * sigStar), 1e-14 * kFy) << ratio;
+    EXPECT_NEAR(m.getTangent(), static_cast<double>(kE * eStar), 1e-14 * kE) << ratio;
+  }
+}
+
 TEST(Steel02Test, ElasticStartAndHardeningAsymptote) {
   Steel02 m(1, Steel02::Params{kFy, kE, kB});
   ASSERT_TRUE(ok(m.setTrialStrain(0.01 * kEpsY)));
