@@ -233,7 +233,7 @@ inline Status Steel02::computeTrial(const State& committed, State& trial, double
   // power to round-off (the next term is below 1e-17 for t < 1e-4 and R >= 1), at a fraction of
   // the cost of a second pow. Far along the branch (t > 1e4, |eps*| past the asymptotes' meeting
   // point by a few per cent at the usual R) it is |eps*| (1 + 1/t)^(1/R), the same series in 1/t;
-  // a yielding bar of a pushover is there three times in four.
+  // of the pushover benchmark's bar updates that took the power, three in four are there.
   const double a = 1.0 / trial.R;
   double dum2;
   if (t < steel02::kSeriesLimit && trial.R >= 1.0) {
