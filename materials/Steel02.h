@@ -231,9 +231,9 @@ inline Status Steel02::computeTrial(const State& committed, State& trial, double
   const double dum1 = 1.0 + t;
   // (1 + t)^(1/R): near the elastic branch t is small and the binomial series to t^3 equals the
   // power to round-off (the next term is below 1e-17 for t < 1e-4 and R >= 1), at a fraction of
-  // the cost of a second pow. Far along the branch (t > 1e4, |eps*| past the asymptotes' meeting
-  // point by a few per cent at the usual R) it is |eps*| (1 + 1/t)^(1/R), the same series in 1/t;
-  // of the pushover benchmark's bar updates that took the power, three in four are there.
+  // the cost of a second pow. Far along the branch (t > 1e4: |eps*| beyond 1e4^(1/R), 1.67 at
+  // R = 18) it is |eps*| (1 + 1/t)^(1/R), the same series in 1/t; of the pushover benchmark's bar
+  // updates that took the power, three in four are there.
   const double a = 1.0 / trial.R;
   double dum2;
   if (t < steel02::kSeriesLimit && trial.R >= 1.0) {
