@@ -40,7 +40,7 @@ Concrete01::State Concrete01::initialState() const {
   return s;
 }
 
-void Concrete01::computeTrials(const State* committed, const double* strains, StressTangent* out,
+void Concrete01::computeTrials(const State* committed, const double* strains, const Responses& out,
                                std::size_t n) const {
   lanes::computeInFours(*this, &Concrete01::computeFourAtOnce, committed, strains, out, n);
 }
@@ -70,7 +70,7 @@ static_assert(offsetof(Concrete01State, strain) == 0 && offsetof(Concrete01State
 // result of its own branch. Comparisons with a NaN are false here as there.
 __attribute__((target("avx"))) std::size_t Concrete01::computeFourAtOnce(const State* committed,
                                                                          const double* strains,
-                                                                         StressTangent* out,
+                                                                         const Responses& out,
                                                                          std::size_t n) const {
   const auto& p = params_;
   const __m256d Ec0 = _mm256_set1_pd(Ec0_), descentSlope = _mm256_set1_pd(descentSlope_);
@@ -96,8 +96,7 @@ __attribute__((target("avx"))) std::size_t Concrete01::computeFourAtOnce(const S
     const __m256d tensile = _mm256_cmp_pd(strain, zero, _CMP_GT_OQ);
     if (lanes::all(tensile)) {
       // Four open cracks (the tension side of a section in bending): no stress, no tangent.
-      lanes::storePairs(out + i, _mm256_and_pd(unchanged, cStress),
-                        _mm256_and_pd(unchanged, cTangent));
+      lanes::store(out, i, _mm256_and_pd(unchanged, cStress), _mm256_and_pd(unchanged, cTangent));
       continue;
     }
     // (endStrain, unloadSlope) of fibers 0 and 2, and of 1 and 3, then one vector each.
@@ -173,7 +172,7 @@ __attribute__((target("avx"))) std::size_t Concrete01::computeFourAtOnce(const S
     tangent = pick(tensile, zero, tangent);
     stress = pick(unchanged, cStress, stress);
     tangent = pick(unchanged, cTangent, tangent);
-    lanes::storePairs(out + i, stress, tangent);
+    lanes::store(out, i, stress, tangent);
   }
   return i;
 }
@@ -181,7 +180,7 @@ __attribute__((target("avx"))) std::size_t Concrete01::computeFourAtOnce(const S
 #else
 
 bool Concrete01::updatesFourAtOnce() { return false; }
-std::size_t Concrete01::computeFourAtOnce(const State*, const double*, StressTangent*,
+std::size_t Concrete01::computeFourAtOnce(const State*, const double*, const Responses&,
                                           std::size_t) const {
   return 0;
 }

@@ -51,10 +51,10 @@ class Concrete01 final : public StatefulUniaxial<Concrete01, Concrete01State> {
   /// only its fibers' trial stress and tangent (16 bytes instead of the 48 of a state), and
   /// commits with this.
   void commitTrial(State& state, double strain, double stress, double tangent) const;
-  /// computeTrial of n fibers: out[i] is the trial stress and tangent at strains[i] from
-  /// committed[i], bit for bit. Where the processor has AVX the fibers go four at a time through
-  /// every branch one of the four takes, each lane keeping its own result.
-  void computeTrials(const State* committed, const double* strains, StressTangent* out,
+  /// computeTrial of n fibers: out.stress[i] and out.tangent[i] are the trial stress and tangent at
+  /// strains[i] from committed[i], bit for bit. Where the processor has AVX the fibers go four at a
+  /// time through every branch one of the four takes, each lane keeping its own result.
+  void computeTrials(const State* committed, const double* strains, const Responses& out,
                      std::size_t n) const;
   /// Whether computeTrials takes four fibers at a time on this processor.
   static bool updatesFourAtOnce();
@@ -72,7 +72,7 @@ class Concrete01 final : public StatefulUniaxial<Concrete01, Concrete01State> {
   void unload(State& s) const;
   void reload(State& s) const;
   /// computeTrials of the first n - n % 4 fibers, four at a time (AVX); returns their count.
-  std::size_t computeFourAtOnce(const State* committed, const double* strains, StressTangent* out,
+  std::size_t computeFourAtOnce(const State* committed, const double* strains, const Responses& out,
                                 std::size_t n) const;
   Params params_;
   // Constants of the parameters, formed once with the expressions the update used to evaluate

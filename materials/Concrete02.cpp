@@ -48,7 +48,7 @@ Concrete02::State Concrete02::initialState() const {
   return s;
 }
 
-void Concrete02::computeTrials(const State* committed, const double* strains, StressTangent* out,
+void Concrete02::computeTrials(const State* committed, const double* strains, const Responses& out,
                                std::size_t n) const {
   lanes::computeInFours(*this, &Concrete02::computeFourAtOnce, committed, strains, out, n);
 }
@@ -90,7 +90,7 @@ struct TensionLanes {
 // takes the same branch too.
 __attribute__((target("avx"))) std::size_t Concrete02::computeFourAtOnce(const State* committed,
                                                                          const double* strains,
-                                                                         StressTangent* out,
+                                                                         const Responses& out,
                                                                          std::size_t n) const {
   const auto& p = params_;
   const __m256d Ec0 = _mm256_set1_pd(Ec0_);
@@ -178,7 +178,7 @@ __attribute__((target("avx"))) std::size_t Concrete02::computeFourAtOnce(const S
     stress = pick(unchanged, cStress, stress);
     tangent = pick(unchanged, cTangent, tangent);
 
-    lanes::storePairs(out + i, stress, tangent);
+    lanes::store(out, i, stress, tangent);
   }
   return i;
 }
@@ -186,7 +186,7 @@ __attribute__((target("avx"))) std::size_t Concrete02::computeFourAtOnce(const S
 #else
 
 bool Concrete02::updatesFourAtOnce() { return false; }
-std::size_t Concrete02::computeFourAtOnce(const State*, const double*, StressTangent*,
+std::size_t Concrete02::computeFourAtOnce(const State*, const double*, const Responses&,
                                           std::size_t) const {
   return 0;
 }

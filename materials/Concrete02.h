@@ -62,11 +62,11 @@ class Concrete02 final : public StatefulUniaxial<Concrete02, Concrete02State> {
   /// stress and tangent: the history updates alone, bit for bit the same. A fiber section keeps
   /// only its fibers' trial stress and tangent, and commits with this.
   void commitTrial(State& state, double strain, double stress, double tangent) const;
-  /// computeTrial of n fibers: out[i] is the trial stress and tangent at strains[i] from
-  /// committed[i], bit for bit. Where the processor has AVX the fibers go four at a time through
-  /// every branch one of the four takes, each lane keeping its own result: fewer mispredicted
-  /// branches, and the divisions of four fibers in one instruction.
-  void computeTrials(const State* committed, const double* strains, StressTangent* out,
+  /// computeTrial of n fibers: out.stress[i] and out.tangent[i] are the trial stress and tangent at
+  /// strains[i] from committed[i], bit for bit. Where the processor has AVX the fibers go four at a
+  /// time through every branch one of the four takes, each lane keeping its own result: fewer
+  /// mispredicted branches, and the divisions of four fibers in one instruction.
+  void computeTrials(const State* committed, const double* strains, const Responses& out,
                      std::size_t n) const;
   /// Whether computeTrials takes four fibers at a time on this processor.
   static bool updatesFourAtOnce();
@@ -87,7 +87,7 @@ class Concrete02 final : public StatefulUniaxial<Concrete02, Concrete02State> {
   /// Sets ecmin (envelope stress sigMin there) and the reloading data that follow from it.
   void setMinimumStrain(State& s, double ecmin, double sigMin) const;
   /// computeTrials of the first n - n % 4 fibers, four at a time (AVX); returns their count.
-  std::size_t computeFourAtOnce(const State* committed, const double* strains, StressTangent* out,
+  std::size_t computeFourAtOnce(const State* committed, const double* strains, const Responses& out,
                                 std::size_t n) const;
   Params params_;
   // Constants of the parameters (formed once; divisions are the cost of this law's update):

@@ -16,11 +16,11 @@ namespace dabs::materials::lanes {
 /// of them where the processor has no AVX.
 template <class Law>
 void computeOneByOne(const Law& law, const typename Law::State* committed, const double* strains,
-                     StressTangent* out, std::size_t from, std::size_t n) {
+                     const Responses& out, std::size_t from, std::size_t n) {
   for (std::size_t i = from; i < n; ++i) {
     typename Law::State trial;
     static_cast<void>(law.computeTrial(committed[i], trial, strains[i]));
-    out[i] = StressTangent{trial.stress, trial.tangent};
+    out.set(i, trial.stress, trial.tangent);
   }
 }
 
@@ -32,12 +32,12 @@ void computeOneByOne(const Law& law, const typename Law::State* committed, const
 template <class Law>
 void computeInFours(const Law& law,
                     std::size_t (Law::*fours)(const typename Law::State*, const double*,
-                                              StressTangent*, std::size_t) const,
-                    const typename Law::State* committed, const double* strains, StressTangent* out,
-                    std::size_t n) {
+                                              const Responses&, std::size_t) const,
+                    const typename Law::State* committed, const double* strains,
+                    const Responses& out, std::size_t n) {
   if (n >= 4 && Law::updatesFourAtOnce()) {
     if ((law.*fours)(committed, strains, out, n) < n)
-      (law.*fours)(committed + (n - 4), strains + (n - 4), out + (n - 4), std::size_t{4});
+      (law.*fours)(committed + (n - 4), strains + (n - 4), out.from(n - 4), std::size_t{4});
     return;
   }
   computeOneByOne(law, committed, strains, out, 0, n);
@@ -52,10 +52,6 @@ void computeInFours(const Law& law,
 #include <immintrin.h>
 
 namespace dabs::materials::lanes {
-
-// Arrays of responses are read and written as (stress, tangent) pairs of doubles.
-static_assert(sizeof(StressTangent) == 16 && offsetof(StressTangent, stress) == 0 &&
-              offsetof(StressTangent, tangent) == 8);
 
 /// A state's fields as an array of doubles (its laws assert the layout: all doubles, no padding).
 template <class State>
@@ -96,14 +92,11 @@ __attribute__((target("avx"))) inline void transpose(__m256d r0, __m256d r1, __m
   c3 = _mm256_permute2f128_pd(t1, t3, 0x31);
 }
 
-/// Four fibers' (stress, tangent) pairs stored side by side from a stress and a tangent vector.
-__attribute__((target("avx"))) inline void storePairs(StressTangent* out, __m256d stress,
-                                                      __m256d tangent) {
-  const __m256d low = _mm256_unpacklo_pd(stress, tangent);   // s0 t0 s2 t2
-  const __m256d high = _mm256_unpackhi_pd(stress, tangent);  // s1 t1 s3 t3
-  double* pairs = reinterpret_cast<double*>(out);
-  _mm256_storeu_pd(pairs, _mm256_permute2f128_pd(low, high, 0x20));
-  _mm256_storeu_pd(pairs + 4, _mm256_permute2f128_pd(low, high, 0x31));
+/// Four fibers' stresses and tangents stored as fibers i .. i + 3 of `out`.
+__attribute__((target("avx"))) inline void store(const Responses& out, std::size_t i,
+                                                 __m256d stress, __m256d tangent) {
+  _mm256_storeu_pd(out.stress + i, stress);
+  _mm256_storeu_pd(out.tangent + i, tangent);
 }
 
 }  // namespace dabs::materials::lanes

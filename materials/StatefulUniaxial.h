@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include <cstddef>
 #include <memory>
 
 #include "materials/UniaxialMaterial.h"
@@ -10,6 +11,20 @@ namespace dabs::materials {
 /// The response of a material point: all a fiber section keeps of a fiber's trial state.
 struct StressTangent {
   double stress = 0.0, tangent = 0.0;
+};
+
+/// The responses of an array of fibers: stresses and tangents in two arrays, so that four fibers'
+/// stresses (or tangents) are one vector in memory.
+struct Responses {
+  double* stress = nullptr;
+  double* tangent = nullptr;
+
+  void set(std::size_t i, double s, double t) const {
+    stress[i] = s;
+    tangent[i] = t;
+  }
+  /// The responses from fiber k on.
+  Responses from(std::size_t k) const { return {stress + k, tangent + k}; }
 };
 
 /// Keeps a material's whole history in one value struct, so commit, revert and revertToStart are

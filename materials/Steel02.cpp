@@ -50,7 +50,7 @@ Steel02::State Steel02::initialState() const {
   return s;
 }
 
-void Steel02::computeTrials(const State* committed, const double* strains, StressTangent* out,
+void Steel02::computeTrials(const State* committed, const double* strains, const Responses& out,
                             std::size_t n) const {
   lanes::computeInFours(*this, &Steel02::computeFourAtOnce, committed, strains, out, n);
 }
@@ -84,7 +84,7 @@ static_assert(offsetof(Steel02State, strain) == 0 && offsetof(Steel02State, epsR
 // itself.
 __attribute__((target("avx"))) std::size_t Steel02::computeFourAtOnce(const State* committed,
                                                                       const double* strains,
-                                                                      StressTangent* out,
+                                                                      const Responses& out,
                                                                       std::size_t n) const {
   const auto& p = params_;
   const __m256d b = _mm256_set1_pd(p.b), rest = _mm256_set1_pd(1.0 - p.b);
@@ -239,13 +239,13 @@ __attribute__((target("avx"))) std::size_t Steel02::computeFourAtOnce(const Stat
       stress = pick(curve, _mm256_add_pd(_mm256_mul_pd(sigStar, span), sigR), stress);
       tangent = pick(curve, _mm256_mul_pd(_mm256_mul_pd(eStar, span), invSpan), tangent);
     }
-    lanes::storePairs(out + i, stress, tangent);
+    lanes::store(out, i, stress, tangent);
     const int updatedLanes = _mm256_movemask_pd(updated);
     for (int l = 0; l < 4; ++l) {
       if (updatedLanes >> l & 1) continue;
       State trial;
       static_cast<void>(computeTrial(c[l], trial, strains[i + l]));
-      out[i + l] = StressTangent{trial.stress, trial.tangent};
+      out.set(i + l, trial.stress, trial.tangent);
     }
   }
   return i;
@@ -254,7 +254,7 @@ __attribute__((target("avx"))) std::size_t Steel02::computeFourAtOnce(const Stat
 #else
 
 bool Steel02::updatesFourAtOnce() { return false; }
-std::size_t Steel02::computeFourAtOnce(const State*, const double*, StressTangent*,
+std::size_t Steel02::computeFourAtOnce(const State*, const double*, const Responses&,
                                        std::size_t) const {
   return 0;
 }

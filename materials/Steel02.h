@@ -96,11 +96,11 @@ class Steel02 final : public StatefulUniaxial<Steel02, Steel02State> {
   /// stress and tangent: the branch bookkeeping alone, bit for bit the same. A fiber section
   /// keeps only its fibers' trial stress and tangent, and commits with this.
   void commitTrial(State& state, double strain, double stress, double tangent) const;
-  /// computeTrial of n fibers: out[i] is the trial stress and tangent at strains[i] from
-  /// committed[i], bit for bit. Where the processor has AVX the fibers on a branch go four at a
-  /// time (the powers lane by lane, with the same library calls); a fiber on its first excursion,
-  /// or reversing where a1 or a3 shifts the asymptote, is updated on its own.
-  void computeTrials(const State* committed, const double* strains, StressTangent* out,
+  /// computeTrial of n fibers: out.stress[i] and out.tangent[i] are the trial stress and tangent at
+  /// strains[i] from committed[i], bit for bit. Where the processor has AVX the fibers on a branch
+  /// go four at a time (the powers lane by lane, with the same library calls); a fiber on its first
+  /// excursion, or reversing where a1 or a3 shifts the asymptote, is updated on its own.
+  void computeTrials(const State* committed, const double* strains, const Responses& out,
                      std::size_t n) const;
   /// Whether computeTrials takes four fibers at a time on this processor.
   static bool updatesFourAtOnce();
@@ -121,7 +121,7 @@ class Steel02 final : public StatefulUniaxial<Steel02, Steel02State> {
   /// tangent).
   bool followBranch(State& s, double epsP, double sigP, double deps) const;
   /// computeTrials of the first n - n % 4 fibers, four at a time (AVX); returns their count.
-  std::size_t computeFourAtOnce(const State* committed, const double* strains, StressTangent* out,
+  std::size_t computeFourAtOnce(const State* committed, const double* strains, const Responses& out,
                                 std::size_t n) const;
   Params params_;
   double epsy_ = 0.0;    ///< Fy / E

@@ -97,13 +97,11 @@ struct SumLanes {
   __attribute__((target("avx"))) void clear() {
     p = mz = my = kPP = kPz = kPy = kzz = kzy = kyy = _mm256_setzero_pd();
   }
-  /// Four fibers: responses r01 = (s0 t0 s1 t1) and r23 = (s2 t2 s3 t3), areas, y and z.
-  __attribute__((target("avx"))) void add(__m256d r01, __m256d r23, __m256d a, __m256d y,
+  /// Four fibers: stresses, tangents, areas, y and z.
+  __attribute__((target("avx"))) void add(__m256d stress, __m256d tangent, __m256d a, __m256d y,
                                           __m256d z) {
-    const __m256d r02 = _mm256_permute2f128_pd(r01, r23, 0x20);  // s0 t0 s2 t2
-    const __m256d r13 = _mm256_permute2f128_pd(r01, r23, 0x31);  // s1 t1 s3 t3
-    const __m256d force = _mm256_mul_pd(_mm256_unpacklo_pd(r02, r13), a);
-    const __m256d stiffness = _mm256_mul_pd(_mm256_unpackhi_pd(r02, r13), a);
+    const __m256d force = _mm256_mul_pd(stress, a);
+    const __m256d stiffness = _mm256_mul_pd(tangent, a);
     const __m256d sy = _mm256_mul_pd(stiffness, y);
     p = _mm256_add_pd(p, force);
     mz = _mm256_sub_pd(mz, _mm256_mul_pd(force, y));
@@ -143,28 +141,23 @@ struct SumLanes {
 /// are loaded as zeros, the padding PartialSums adds.
 template <bool Planar>
 __attribute__((target("avx"))) void addFourAtOnce(const double* ys, const double* zs,
-                                                  const double* as, const StressTangent* responses,
-                                                  std::size_t n, FiberSums& sums) {
+                                                  const double* as, const double* stresses,
+                                                  const double* tangents, std::size_t n,
+                                                  FiberSums& sums) {
   SumLanes<Planar> lanes;
   lanes.clear();
   const __m256d noZ = _mm256_setzero_pd();
   std::size_t i = 0;
   for (; i + 4 <= n; i += 4)
-    lanes.add(_mm256_loadu_pd(reinterpret_cast<const double*>(responses + i)),
-              _mm256_loadu_pd(reinterpret_cast<const double*>(responses + i + 2)),
-              _mm256_loadu_pd(as + i), _mm256_loadu_pd(ys + i),
-              Planar ? noZ : _mm256_loadu_pd(zs + i));
+    lanes.add(_mm256_loadu_pd(stresses + i), _mm256_loadu_pd(tangents + i), _mm256_loadu_pd(as + i),
+              _mm256_loadu_pd(ys + i), Planar ? noZ : _mm256_loadu_pd(zs + i));
   if (i < n) {
     // The last one to three fibers by masked loads (no copies: a copy's stores would stall the
     // vector loads that read them).
     const long long left = static_cast<long long>(n - i);
     const auto lane = [left](long long k) { return k < left ? -1LL : 0LL; };
     const __m256i fibers = _mm256_set_epi64x(lane(3), lane(2), lane(1), lane(0));
-    const __m256i pairs01 = _mm256_set_epi64x(lane(1), lane(1), lane(0), lane(0));
-    const __m256i pairs23 = _mm256_set_epi64x(lane(3), lane(3), lane(2), lane(2));
-    const double* r = reinterpret_cast<const double*>(responses + i);
-    lanes.add(_mm256_maskload_pd(r, pairs01),
-              left > 2 ? _mm256_maskload_pd(r + 4, pairs23) : _mm256_setzero_pd(),
+    lanes.add(_mm256_maskload_pd(stresses + i, fibers), _mm256_maskload_pd(tangents + i, fibers),
               _mm256_maskload_pd(as + i, fibers), _mm256_maskload_pd(ys + i, fibers),
               Planar ? noZ : _mm256_maskload_pd(zs + i, fibers));
   }
@@ -172,19 +165,23 @@ __attribute__((target("avx"))) void addFourAtOnce(const double* ys, const double
 }
 #endif
 
-/// Adds the fibers' forces and tangents (`responses[i]` of fiber i) to `sums`, in the order
-/// PartialSums describes.
+/// Adds the fibers' forces and tangents (fiber i's stress and tangent in stresses[i] and
+/// tangents[i]) to `sums`, in the order PartialSums describes.
 template <bool Planar>
-void addResponses(const double* ys, const double* zs, const double* as,
-                  const StressTangent* responses, std::size_t n, FiberSums& sums) {
+void addResponses(const double* ys, const double* zs, const double* as, const double* stresses,
+                  const double* tangents, std::size_t n, FiberSums& sums) {
 #ifdef DABS_FOUR_LANES
   if (n >= kPartialSumsFrom && lanes::available()) {
-    addFourAtOnce<Planar>(ys, zs, as, responses, n, sums);
+    addFourAtOnce<Planar>(ys, zs, as, stresses, tangents, n, sums);
     return;
   }
 #endif
   addOneByOne<Planar>(
-      ys, zs, as, [responses](std::size_t i) { return responses[i]; }, n, sums);
+      ys, zs, as,
+      [stresses, tangents](std::size_t i) {
+        return StressTangent{stresses[i], tangents[i]};
+      },
+      n, sums);
 }
 
 /// A fiber's strain under plane-section kinematics: one expression for every use, so that a
@@ -359,7 +356,8 @@ class StateFiberGroup final : public FiberGroup {
   /// A law whose computeTrials updates a whole array of fibers in one call (several at once);
   /// the group then keeps only the responses, so the law must commit from them too.
   static constexpr bool kUpdatesArrays =
-      kKeepsResponse && requires(const M& m, const State* c, const double* e, StressTangent* out) {
+      kKeepsResponse &&
+      requires(const M& m, const State* c, const double* e, const Responses& out) {
     m.computeTrials(c, e, out, std::size_t{0});
   };
   /// `prototype` is the material object whose fibers this group holds (identity decides
@@ -373,7 +371,12 @@ class StateFiberGroup final : public FiberGroup {
   void add(double y, double z, double area, const UniaxialMaterial& /*prototype*/) override {
     addGeometry(y, z, area);
     committed_.push_back(law_.virginState());
-    trial_.push_back(Trial{});
+    if constexpr (kKeepsResponse) {
+      trialStress_.push_back(0.0);
+      trialTangent_.push_back(0.0);
+    } else {
+      trial_.push_back(State{});
+    }
     if constexpr (kKeepsResponse) strains_.push_back(0.0);
   }
   bool accepts(const UniaxialMaterial& material) const override { return &material == source_; }
@@ -427,10 +430,9 @@ class StateFiberGroup final : public FiberGroup {
 
  private:
   using Response = StressTangent;
-  using Trial = std::conditional_t<kKeepsResponse, Response, State>;
   enum class Phase {
-    Committed,      ///< committed_ is the current state; trial_ is stale
-    Trial,          ///< trial_ holds the trial at the strains of the last setTrial
+    Committed,      ///< committed_ is the current state; the trial arrays are stale
+    Trial,          ///< the trial arrays hold the trial at the strains of the last setTrial
     CommitPending,  ///< that trial was committed; committed_ does not have it yet
   };
 
@@ -460,7 +462,6 @@ class StateFiberGroup final : public FiberGroup {
     const double* zs = g.z.data();
     const double* as = g.area.data();
     State* committed = committed_.data();
-    Trial* trial = trial_.data();
     const double e0Pending = e0_, kzPending = kz_, kyPending = ky_;
     const std::size_t n = committed_.size();
     // The only failure of these laws is a non-finite stress or tangent, and it makes the sums
@@ -468,10 +469,11 @@ class StateFiberGroup final : public FiberGroup {
     if constexpr (kKeepsResponse) {
       // The strains (and the pending commits) first, then the updates over the arrays.
       double* strains = strains_.data();
+      const Responses trial{trialStress_.data(), trialTangent_.data()};
       if constexpr (Fold) {
         for (std::size_t i = 0; i < n; ++i) {
           const double pending = fiberStrain<Planar>(e0Pending, kzPending, kyPending, ys[i], zs[i]);
-          law_.commitTrial(committed[i], pending, trial[i].stress, trial[i].tangent);
+          law_.commitTrial(committed[i], pending, trial.stress[i], trial.tangent[i]);
         }
       }
       fiberStrains<Planar>(e0, kz, ky, ys, zs, strains, n);
@@ -479,14 +481,12 @@ class StateFiberGroup final : public FiberGroup {
         law_.computeTrials(committed, strains, trial, n);
       else
         lanes::computeOneByOne(law_, committed, strains, trial, 0, n);
+      addResponses<Planar>(ys, zs, as, trial.stress, trial.tangent, n, sums);
     } else {
+      State* trial = trial_.data();
       for (std::size_t i = 0; i < n; ++i)
         static_cast<void>(law_.computeTrial(committed[i], trial[i],
                                             fiberStrain<Planar>(e0, kz, ky, ys[i], zs[i])));
-    }
-    if constexpr (kKeepsResponse) {
-      addResponses<Planar>(ys, zs, as, trial, n, sums);
-    } else {
       addOneByOne<Planar>(
           ys, zs, as,
           [trial](std::size_t i) {
@@ -511,7 +511,10 @@ class StateFiberGroup final : public FiberGroup {
   /// committed), the committed states' after a revert.
   Response response(std::size_t i) const {
     if (phase_ == Phase::Committed) return {committed_[i].stress, committed_[i].tangent};
-    return {trial_[i].stress, trial_[i].tangent};
+    if constexpr (kKeepsResponse)
+      return {trialStress_[i], trialTangent_[i]};
+    else
+      return {trial_[i].stress, trial_[i].tangent};
   }
   /// Fiber i's whole current state (for responses; formed again when only the response is kept).
   State currentState(std::size_t i) const {
@@ -519,7 +522,7 @@ class StateFiberGroup final : public FiberGroup {
     if constexpr (kKeepsResponse) {
       State t = committed_[i];
       if (phase_ == Phase::CommitPending) {
-        law_.commitTrial(t, trialStrain(i), trial_[i].stress, trial_[i].tangent);
+        law_.commitTrial(t, trialStrain(i), trialStress_[i], trialTangent_[i]);
         return t;
       }
       static_cast<void>(law_.computeTrial(committed_[i], t, trialStrain(i)));
@@ -532,7 +535,10 @@ class StateFiberGroup final : public FiberGroup {
   M law_;                           ///< parameters (its own state is not used)
   const UniaxialMaterial* source_;  ///< only compared with, while the section is built
   std::vector<State> committed_;
-  std::vector<Trial> trial_;
+  std::vector<State> trial_;  ///< the fibers' trial states (laws that keep whole states)
+  /// The fibers' trial stresses and tangents (laws that keep responses; lanes::store writes four
+  /// of each as one vector)
+  std::vector<double> trialStress_, trialTangent_;
   std::vector<double> strains_;  ///< the fibers' strains in a pass (laws that keep responses)
   double e0_ = 0.0, kz_ = 0.0, ky_ = 0.0;  ///< section strains of the last setTrial
   bool planar_ = false;                    ///< the last setTrial was a plane one

@@ -29,13 +29,14 @@ void expectSameBits(const StressTangent& got, const State& trial, std::size_t fi
 template <class Law>
 void expectEachFibersOwnUpdate(const Law& law, const std::vector<typename Law::State>& committed,
                                const std::vector<double>& strains, std::size_t n) {
-  std::vector<StressTangent> out(n);
-  law.computeTrials(committed.data(), strains.data(), out.data(), n);
+  std::vector<double> stresses(n), tangents(n);
+  law.computeTrials(committed.data(), strains.data(), Responses{stresses.data(), tangents.data()},
+                    n);
   SCOPED_TRACE(::testing::Message() << "group of " << n);
   for (std::size_t i = 0; i < n; ++i) {
     typename Law::State trial;
     static_cast<void>(law.computeTrial(committed[i], trial, strains[i]));
-    expectSameBits(out[i], trial, i, strains[i]);
+    expectSameBits(StressTangent{stresses[i], tangents[i]}, trial, i, strains[i]);
   }
 }
 
