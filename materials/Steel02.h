@@ -21,7 +21,7 @@ inline constexpr double kFarSeriesFrom = 1e4;
 /// q = floor(-4 (38/R) log2 e), a lower bound of e^(-38/R) within a factor 2^(1/4) of it, from
 /// the bits of 2^floor(q/4) and a power 2^(j/4), j = 0..3 (an exp per reversal, 6 % of the
 /// pushover benchmark's time, costs a division and a few operations here). Only where the
-/// initial line is taken depends on it, never a number: between it and e^(-36.7/R), |eps*|^R is
+/// initial line is taken depends on it, never a number: between it and e^(-36.74/R), |eps*|^R is
 /// below half an ulp of 1 and the curve's own operations give the line's bits. 0 for R < 1.
 inline double linearLimit(double R) {
   if (!(R >= 1.0)) return 0.0;

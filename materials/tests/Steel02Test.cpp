@@ -291,7 +291,7 @@ namespace dabs::materials {
 namespace {
 
 // The linear limit against e^(-38/R) from the C library: never above it beyond round-off (so
-// |eps*|^R stays below half an ulp of 1 under it, which needs e^(-36.7/R)), never below it by
+// |eps*|^R stays below half an ulp of 1 under it, which needs e^(-36.74/R)), never below it by
 // more than 2^(1/4); zero for R < 1.
 TEST(Steel02Test, LinearLimitIsWithinAQuarterPowerOfTwoBelowExpOfMinus38OverR) {
   EXPECT_EQ(steel02::linearLimit(0.999), 0.0);

@@ -14,7 +14,6 @@ namespace dabs::analysis {
 namespace {
 
 constexpr int kMegabyte = 1 << 20;
-constexpr std::uintptr_t kPage = 4096;
 
 std::uintptr_t heapEnd() { return reinterpret_cast<std::uintptr_t>(sbrk(0)); }
 
@@ -35,7 +34,10 @@ void HugePageHeap::adviseGrowth() {
     advisedEnd_ = end;  // a heap that shrank and grows again is asked for again
     return;
   }
-  const std::uintptr_t begin = advisedEnd_ & ~(kPage - 1);
+  // madvise takes a page-aligned start (the heap's end is page-aligned as glibc keeps it; the
+  // last call's end is rounded down all the same).
+  const auto page = static_cast<std::uintptr_t>(sysconf(_SC_PAGESIZE));
+  const std::uintptr_t begin = advisedEnd_ & ~(page - 1);
   advisedEnd_ = end;
   static_cast<void>(madvise(reinterpret_cast<void*>(begin), end - begin, MADV_HUGEPAGE));
 }
