@@ -13,6 +13,7 @@ namespace dabs::tcl {
 
 Runtime::Runtime(Tcl_Interp* interpreter)
     : interp(interpreter), analysis(std::make_unique<analysis::AnalysisBuilder>(domain)) {
+  analysis->modelBuilt = [this] { heap.adviseGrowth(); };
   analysis->log = [this](const std::string& line) {
     Tcl_Channel err = Tcl_GetStdChannel(TCL_STDERR);
     if (err != nullptr) {

@@ -213,6 +213,7 @@ int AnalysisBuilder::analyze(int numSteps, double dt) {
     throw InputError("dt", "must be positive for a transient analysis");
   if (algorithm_->needsTest() && !test_) throw InputError("test", "is not defined");
   ensureModel();
+  if (modelBuilt) modelBuilt();
   const FactorCounts factorizationsBefore = factorizationsSoFar();
   const long elementUpdatesBefore = model_->elementUpdates();
   const long farTestsBefore = model_->farTests();

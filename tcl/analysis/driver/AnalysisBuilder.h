@@ -117,6 +117,9 @@ class AnalysisBuilder {
   const ThreadChoice& threadChoice() const noexcept { return threadChoice_; }
   /// Where convergence-test output goes.
   std::function<void(const std::string&)> log;
+  /// Called by `analyze` once its model is built, before the steps (the interpreter asks there
+  /// for huge pages on what the model's building added to the heap: HugePageHeap).
+  std::function<void()> modelBuilt;
 
  private:
   /// Factorisations of the solvers so far, and of them those that kept the previous pivots.

@@ -13,8 +13,8 @@ namespace dabs::analysis {
 /// its heap 32 MB ahead of what it hands out (and to serve blocks up to 32 MB from it, and to give
 /// back only a free top of 128 MB or more), and each call asks for huge pages on the heap grown
 /// since the last one, most of which nothing has touched yet. The interpreter calls it after
-/// every command. Only where the data sit changes, never a number. Where the system does not
-/// offer huge pages the requests fail and nothing changes.
+/// every command and once an analysis has built its model. Only where the data sit changes, never a
+/// number. Where the system does not offer huge pages the requests fail and nothing changes.
 class HugePageHeap {
  public:
   /// Sets malloc's growth as above (for the whole process; the same values again for a second
