@@ -74,6 +74,17 @@ static_assert(offsetof(Steel02State, strain) == 0 && offsetof(Steel02State, epsR
               offsetof(Steel02State, tangent) == 64 && offsetof(Steel02State, epsMin) == 72 &&
               offsetof(Steel02State, epsMax) == 80 && offsetof(Steel02State, epsPl) == 88);
 
+/// steel02::binomialSeries of four lanes, its operations in its order.
+__attribute__((target("avx"))) inline __m256d binomialSeries(__m256d a, __m256d x) {
+  const __m256d one = _mm256_set1_pd(1.0), two = _mm256_set1_pd(2.0);
+  const __m256d inner =
+      _mm256_add_pd(_mm256_set1_pd(0.5),
+                    _mm256_div_pd(_mm256_mul_pd(_mm256_sub_pd(a, two), x), _mm256_set1_pd(6.0)));
+  const __m256d middle =
+      _mm256_add_pd(one, _mm256_mul_pd(_mm256_mul_pd(_mm256_sub_pd(a, one), x), inner));
+  return _mm256_add_pd(one, _mm256_mul_pd(_mm256_mul_pd(a, x), middle));
+}
+
 }  // namespace
 
 // computeTrial, lane by lane, for fibers on a branch (kon 1 or 2): the new branch of a reversal
@@ -95,7 +106,6 @@ __attribute__((target("avx"))) std::size_t Steel02::computeFourAtOnce(const Stat
   const __m256d loading = _mm256_set1_pd(1.0), unloading = _mm256_set1_pd(2.0);
   const __m256d seriesLimit = _mm256_set1_pd(steel02::kSeriesLimit);
   const __m256d farSeriesFrom = _mm256_set1_pd(steel02::kFarSeriesFrom);
-  const __m256d half = _mm256_set1_pd(0.5), two = _mm256_set1_pd(2.0), six = _mm256_set1_pd(6.0);
   // A reversal's new branch (followBranch) where its asymptote has no isotropic shift (a3 = 0
   // towards tension, a1 = 0 towards compression): the shift is then 1, and x * 1 is x, so these
   // constants, written without it, are followBranch's partial results to the bit.
@@ -203,26 +213,11 @@ __attribute__((target("avx"))) std::size_t Steel02::computeFourAtOnce(const Stat
       const __m256d a = _mm256_div_pd(one, R);
       const __m256d series = _mm256_and_pd(_mm256_cmp_pd(t, seriesLimit, _CMP_LT_OQ),
                                            _mm256_cmp_pd(R, one, _CMP_GE_OQ));
-      // 1 + a t (1 + (a - 1) t (0.5 + (a - 2) t / 6)), as computeTrial groups it.
-      const __m256d inner =
-          _mm256_add_pd(half, _mm256_div_pd(_mm256_mul_pd(_mm256_sub_pd(a, two), t), six));
-      const __m256d middle =
-          _mm256_add_pd(one, _mm256_mul_pd(_mm256_mul_pd(_mm256_sub_pd(a, one), t), inner));
-      __m256d dum2 = _mm256_add_pd(one, _mm256_mul_pd(_mm256_mul_pd(a, t), middle));
+      __m256d dum2 = binomialSeries(a, t);
       const __m256d far = _mm256_and_pd(_mm256_cmp_pd(t, farSeriesFrom, _CMP_GT_OQ),
                                         _mm256_cmp_pd(R, one, _CMP_GE_OQ));
-      if (any(_mm256_and_pd(far, curve))) {
-        // |eps*| (1 + a u (1 + (a - 1) u (0.5 + (a - 2) u / 6))), u = 1 / t.
-        const __m256d u = _mm256_div_pd(one, t);
-        const __m256d farInner =
-            _mm256_add_pd(half, _mm256_div_pd(_mm256_mul_pd(_mm256_sub_pd(a, two), u), six));
-        const __m256d farMiddle =
-            _mm256_add_pd(one, _mm256_mul_pd(_mm256_mul_pd(_mm256_sub_pd(a, one), u), farInner));
-        dum2 = pick(far,
-                    _mm256_mul_pd(
-                        absRat, _mm256_add_pd(one, _mm256_mul_pd(_mm256_mul_pd(a, u), farMiddle))),
-                    dum2);
-      }
+      if (any(_mm256_and_pd(far, curve)))
+        dum2 = pick(far, _mm256_mul_pd(absRat, binomialSeries(a, _mm256_div_pd(one, t))), dum2);
       const int powerLanes = curveLanes & ~_mm256_movemask_pd(_mm256_or_pd(series, far));
       if (powerLanes != 0) {
         alignas(32) double base[4], exponent[4], root[4];

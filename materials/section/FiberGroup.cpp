@@ -374,10 +374,10 @@ class StateFiberGroup final : public FiberGroup {
     if constexpr (kKeepsResponse) {
       trialStress_.push_back(0.0);
       trialTangent_.push_back(0.0);
+      strains_.push_back(0.0);
     } else {
       trial_.push_back(State{});
     }
-    if constexpr (kKeepsResponse) strains_.push_back(0.0);
   }
   bool accepts(const UniaxialMaterial& material) const override { return &material == source_; }
 
