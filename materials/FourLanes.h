@@ -66,10 +66,11 @@ inline bool available() {
   return hasAvx;
 }
 
-/// `where` ? a : b, lane by lane (`where` all ones or all zeros in each lane). Bitwise rather than
-/// a blend: GCC folds a blend of a comparison into a select that it then splits into scalars.
+/// `where` ? a : b, lane by lane (`where` all ones or all zeros in each lane).
 __attribute__((target("avx"))) inline __m256d pick(__m256d where, __m256d a, __m256d b) {
-  return _mm256_or_pd(_mm256_and_pd(where, a), _mm256_andnot_pd(where, b));
+  __m256d picked;
+  asm("vblendvpd %3, %2, %1, %0" : "=x"(picked) : "x"(b), "x"(a), "x"(where));
+  return picked;
 }
 
 __attribute__((target("avx"))) inline bool any(__m256d mask) {
