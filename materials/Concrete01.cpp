@@ -45,6 +45,11 @@ void Concrete01::computeTrials(const State* committed, const double* strains, co
   lanes::computeInFours(*this, &Concrete01::computeFourAtOnce, committed, strains, out, n);
 }
 
+void Concrete01::commitTrials(State* states, const double* strains, const Responses& trial,
+                              std::size_t n) const {
+  lanes::commitInFours(*this, &Concrete01::commitFourAtOnce, states, strains, trial, n);
+}
+
 #ifdef DABS_FOUR_LANES
 
 bool Concrete01::updatesFourAtOnce() { return lanes::available(); }
@@ -177,9 +182,54 @@ __attribute__((target("avx"))) std::size_t Concrete01::computeFourAtOnce(const S
   return i;
 }
 
+// commitTrial, lane by lane: the trial's strain, stress and tangent in every lane whose strain
+// moved (a lane that did not is written back as it was read). Four fibers of which one reaches a
+// new most compressive strain (the envelope and a new unloading line) go one at a time instead.
+__attribute__((target("avx"))) std::size_t Concrete01::commitFourAtOnce(State* states,
+                                                                        const double* strains,
+                                                                        const Responses& trial,
+                                                                        std::size_t n) const {
+  const __m256d epsilon = _mm256_set1_pd(DBL_EPSILON), signBit = _mm256_set1_pd(-0.0);
+  const __m256d zero = _mm256_setzero_pd();
+  std::size_t i = 0;
+  for (; i + 4 <= n; i += 4) {
+    double* f[4] = {lanes::fields(states[i]), lanes::fields(states[i + 1]),
+                    lanes::fields(states[i + 2]), lanes::fields(states[i + 3])};
+    __m256d strain, stress, tangent, minStrain;
+    lanes::transpose(_mm256_loadu_pd(f[0]), _mm256_loadu_pd(f[1]), _mm256_loadu_pd(f[2]),
+                     _mm256_loadu_pd(f[3]), strain, stress, tangent, minStrain);
+    const __m256d newStrain = _mm256_loadu_pd(strains + i);
+    const __m256d moved = _mm256_cmp_pd(_mm256_andnot_pd(signBit, _mm256_sub_pd(newStrain, strain)),
+                                        epsilon, _CMP_NLT_UQ);
+    const __m256d newMinimum = _mm256_and_pd(
+        _mm256_and_pd(moved, _mm256_cmp_pd(newStrain, zero, _CMP_NGT_UQ)),
+        _mm256_and_pd(_mm256_cmp_pd(newStrain, strain, _CMP_LT_OQ),
+                      _mm256_cmp_pd(newStrain, minStrain, _CMP_LE_OQ)));
+    if (lanes::any(newMinimum)) {
+      for (std::size_t k = i; k < i + 4; ++k)
+        commitTrial(states[k], strains[k], trial.stress[k], trial.tangent[k]);
+      continue;
+    }
+    strain = lanes::pick(moved, newStrain, strain);
+    stress = lanes::pick(moved, _mm256_loadu_pd(trial.stress + i), stress);
+    tangent = lanes::pick(moved, _mm256_loadu_pd(trial.tangent + i), tangent);
+    __m256d row0, row1, row2, row3;
+    lanes::transpose(strain, stress, tangent, minStrain, row0, row1, row2, row3);
+    _mm256_storeu_pd(f[0], row0);
+    _mm256_storeu_pd(f[1], row1);
+    _mm256_storeu_pd(f[2], row2);
+    _mm256_storeu_pd(f[3], row3);
+  }
+  return i;
+}
+
 #else
 
 bool Concrete01::updatesFourAtOnce() { return false; }
+std::size_t Concrete01::commitFourAtOnce(State*, const double*, const Responses&,
+                                         std::size_t) const {
+  return 0;
+}
 std::size_t Concrete01::computeFourAtOnce(const State*, const double*, const Responses&,
                                           std::size_t) const {
   return 0;

@@ -56,6 +56,11 @@ class Concrete01 final : public StatefulUniaxial<Concrete01, Concrete01State> {
   /// time through every branch one of the four takes, each lane keeping its own result.
   void computeTrials(const State* committed, const double* strains, const Responses& out,
                      std::size_t n) const;
+  /// commitTrial of n fibers: states[i] committed at strains[i] with trial.stress[i] and
+  /// trial.tangent[i], bit for bit. Where the processor has AVX four fibers at a time (the pass
+  /// after a commit folds the commit in; one at a time it was a third of that pass's group work).
+  void commitTrials(State* states, const double* strains, const Responses& trial,
+                    std::size_t n) const;
   /// Whether computeTrials takes four fibers at a time on this processor.
   static bool updatesFourAtOnce();
   /// The virgin state.
@@ -71,6 +76,9 @@ class Concrete01 final : public StatefulUniaxial<Concrete01, Concrete01State> {
   void envelope(State& s) const;
   void unload(State& s) const;
   void reload(State& s) const;
+  /// commitTrials of the first n - n % 4 fibers, four at a time (AVX); returns their count.
+  std::size_t commitFourAtOnce(State* states, const double* strains, const Responses& trial,
+                               std::size_t n) const;
   /// computeTrials of the first n - n % 4 fibers, four at a time (AVX); returns their count.
   std::size_t computeFourAtOnce(const State* committed, const double* strains, const Responses& out,
                                 std::size_t n) const;

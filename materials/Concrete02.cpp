@@ -53,6 +53,11 @@ void Concrete02::computeTrials(const State* committed, const double* strains, co
   lanes::computeInFours(*this, &Concrete02::computeFourAtOnce, committed, strains, out, n);
 }
 
+void Concrete02::commitTrials(State* states, const double* strains, const Responses& trial,
+                              std::size_t n) const {
+  lanes::commitInFours(*this, &Concrete02::commitFourAtOnce, states, strains, trial, n);
+}
+
 #ifdef DABS_FOUR_LANES
 
 bool Concrete02::updatesFourAtOnce() { return lanes::available(); }
@@ -183,9 +188,71 @@ __attribute__((target("avx"))) std::size_t Concrete02::computeFourAtOnce(const S
   return i;
 }
 
+// commitTrial, lane by lane, with its operations in its order: a new most compressive strain
+// (setMinimumStrain's reloading slope and zero-stress strain), else a crack opened further, then
+// the trial's strain, stress and tangent, in every lane whose strain moved. A lane that did not
+// move is written back as it was read.
+__attribute__((target("avx"))) std::size_t Concrete02::commitFourAtOnce(State* states,
+                                                                        const double* strains,
+                                                                        const Responses& trial,
+                                                                        std::size_t n) const {
+  const __m256d epsilon = _mm256_set1_pd(DBL_EPSILON), signBit = _mm256_set1_pd(-0.0);
+  const __m256d sigR = _mm256_set1_pd(sigR_), epsR = _mm256_set1_pd(epsR_);
+  std::size_t i = 0;
+  for (; i + 4 <= n; i += 4) {
+    double* f[4] = {lanes::fields(states[i]), lanes::fields(states[i + 1]),
+                    lanes::fields(states[i + 2]), lanes::fields(states[i + 3])};
+    __m256d strain, stress, tangent, ecmin, dept, sigMin, Er, ept;
+    lanes::transpose(_mm256_loadu_pd(f[0]), _mm256_loadu_pd(f[1]), _mm256_loadu_pd(f[2]),
+                     _mm256_loadu_pd(f[3]), strain, stress, tangent, ecmin);
+    lanes::transpose(_mm256_loadu_pd(f[0] + 4), _mm256_loadu_pd(f[1] + 4),
+                     _mm256_loadu_pd(f[2] + 4), _mm256_loadu_pd(f[3] + 4), dept, sigMin, Er, ept);
+    const __m256d newStrain = _mm256_loadu_pd(strains + i);
+    const __m256d newStress = _mm256_loadu_pd(trial.stress + i);
+    const __m256d newTangent = _mm256_loadu_pd(trial.tangent + i);
+    const __m256d moved = _mm256_cmp_pd(_mm256_andnot_pd(signBit, _mm256_sub_pd(newStrain, strain)),
+                                        epsilon, _CMP_NLT_UQ);
+    const __m256d newMinimum = _mm256_and_pd(moved, _mm256_cmp_pd(newStrain, ecmin, _CMP_LT_OQ));
+    const __m256d crackOpens = _mm256_andnot_pd(
+        newMinimum,
+        _mm256_and_pd(moved, _mm256_and_pd(_mm256_cmp_pd(newStrain, ept, _CMP_NLE_UQ),
+                                           _mm256_cmp_pd(newStrain, _mm256_add_pd(ept, dept),
+                                                         _CMP_NLE_UQ))));
+    dept = lanes::pick(crackOpens, _mm256_sub_pd(newStrain, ept), dept);
+    if (lanes::any(newMinimum)) {
+      const __m256d newEr =
+          _mm256_div_pd(_mm256_sub_pd(newStress, sigR), _mm256_sub_pd(newStrain, epsR));
+      const __m256d newEpt = _mm256_sub_pd(newStrain, _mm256_div_pd(newStress, newEr));
+      ecmin = lanes::pick(newMinimum, newStrain, ecmin);
+      sigMin = lanes::pick(newMinimum, newStress, sigMin);
+      Er = lanes::pick(newMinimum, newEr, Er);
+      ept = lanes::pick(newMinimum, newEpt, ept);
+    }
+    strain = lanes::pick(moved, newStrain, strain);
+    stress = lanes::pick(moved, newStress, stress);
+    tangent = lanes::pick(moved, newTangent, tangent);
+    __m256d row0, row1, row2, row3;
+    lanes::transpose(strain, stress, tangent, ecmin, row0, row1, row2, row3);
+    _mm256_storeu_pd(f[0], row0);
+    _mm256_storeu_pd(f[1], row1);
+    _mm256_storeu_pd(f[2], row2);
+    _mm256_storeu_pd(f[3], row3);
+    lanes::transpose(dept, sigMin, Er, ept, row0, row1, row2, row3);
+    _mm256_storeu_pd(f[0] + 4, row0);
+    _mm256_storeu_pd(f[1] + 4, row1);
+    _mm256_storeu_pd(f[2] + 4, row2);
+    _mm256_storeu_pd(f[3] + 4, row3);
+  }
+  return i;
+}
+
 #else
 
 bool Concrete02::updatesFourAtOnce() { return false; }
+std::size_t Concrete02::commitFourAtOnce(State*, const double*, const Responses&,
+                                         std::size_t) const {
+  return 0;
+}
 std::size_t Concrete02::computeFourAtOnce(const State*, const double*, const Responses&,
                                           std::size_t) const {
   return 0;

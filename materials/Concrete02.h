@@ -68,6 +68,11 @@ class Concrete02 final : public StatefulUniaxial<Concrete02, Concrete02State> {
   /// mispredicted branches, and the divisions of four fibers in one instruction.
   void computeTrials(const State* committed, const double* strains, const Responses& out,
                      std::size_t n) const;
+  /// commitTrial of n fibers: states[i] committed at strains[i] with trial.stress[i] and
+  /// trial.tangent[i], bit for bit. Where the processor has AVX four fibers at a time (the pass
+  /// after a commit folds the commit in; one at a time it was a third of that pass's group work).
+  void commitTrials(State* states, const double* strains, const Responses& trial,
+                    std::size_t n) const;
   /// Whether computeTrials takes four fibers at a time on this processor.
   static bool updatesFourAtOnce();
   /// The virgin state.
@@ -86,6 +91,9 @@ class Concrete02 final : public StatefulUniaxial<Concrete02, Concrete02State> {
   State initialState() const override;
   /// Sets ecmin (envelope stress sigMin there) and the reloading data that follow from it.
   void setMinimumStrain(State& s, double ecmin, double sigMin) const;
+  /// commitTrials of the first n - n % 4 fibers, four at a time (AVX); returns their count.
+  std::size_t commitFourAtOnce(State* states, const double* strains, const Responses& trial,
+                               std::size_t n) const;
   /// computeTrials of the first n - n % 4 fibers, four at a time (AVX); returns their count.
   std::size_t computeFourAtOnce(const State* committed, const double* strains, const Responses& out,
                                 std::size_t n) const;

@@ -43,6 +43,19 @@ void computeInFours(const Law& law,
   computeOneByOne(law, committed, strains, out, 0, n);
 }
 
+/// A law's commitTrials: its `fours` member commits the first n - n % 4 fibers four at a time
+/// and returns their count; the rest (all of them where the processor cannot run the fours) go one
+/// at a time through law.commitTrial.
+template <class Law>
+void commitInFours(const Law& law,
+                   std::size_t (Law::*fours)(typename Law::State*, const double*, const Responses&,
+                                             std::size_t) const,
+                   typename Law::State* states, const double* strains, const Responses& trial,
+                   std::size_t n) {
+  std::size_t i = n >= 4 && Law::updatesFourAtOnce() ? (law.*fours)(states, strains, trial, n) : 0;
+  for (; i < n; ++i) law.commitTrial(states[i], strains[i], trial.stress[i], trial.tangent[i]);
+}
+
 }  // namespace dabs::materials::lanes
 
 // x86-64 only: 32-bit x86 may compute the scalar updates in x87 extended precision, which the
@@ -58,6 +71,11 @@ template <class State>
 const double* fields(const State& s) {
   static_assert(std::is_standard_layout_v<State>);
   return reinterpret_cast<const double*>(&s);
+}
+template <class State>
+double* fields(State& s) {
+  static_assert(std::is_standard_layout_v<State>);
+  return reinterpret_cast<double*>(&s);
 }
 
 /// Whether this processor runs AVX; a property of the machine, the same for the whole run.

@@ -360,6 +360,11 @@ class StateFiberGroup final : public FiberGroup {
       requires(const M& m, const State* c, const double* e, const Responses& out) {
     m.computeTrials(c, e, out, std::size_t{0});
   };
+  /// A law that also commits a whole array of fibers in one call (several at once).
+  static constexpr bool kCommitsArrays =
+      kUpdatesArrays && requires(const M& m, State* s, const double* e, const Responses& trial) {
+        m.commitTrials(s, e, trial, std::size_t{0});
+      };
   /// `prototype` is the material object whose fibers this group holds (identity decides
   /// membership) and whose parameters it uses.
   explicit StateFiberGroup(const M& prototype) : law_(prototype), source_(&prototype) {}
@@ -470,7 +475,10 @@ class StateFiberGroup final : public FiberGroup {
       // The strains (and the pending commits) first, then the updates over the arrays.
       double* strains = strains_.data();
       const Responses trial{trialStress_.data(), trialTangent_.data()};
-      if constexpr (Fold) {
+      if constexpr (Fold && kCommitsArrays) {
+        fiberStrains<Planar>(e0Pending, kzPending, kyPending, ys, zs, strains, n);
+        law_.commitTrials(committed, strains, trial, n);
+      } else if constexpr (Fold) {
         for (std::size_t i = 0; i < n; ++i) {
           const double pending = fiberStrain<Planar>(e0Pending, kzPending, kyPending, ys[i], zs[i]);
           law_.commitTrial(committed[i], pending, trial.stress[i], trial.tangent[i]);

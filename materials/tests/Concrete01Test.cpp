@@ -113,7 +113,8 @@ TEST(Concrete01Test, CommitFromTrialResponseEqualsTheTrialState) {
 // computeTrials (four fibers at a time where the processor has AVX) must give computeTrial's
 // stress and tangent to the bit, for every fiber whatever branch its neighbours in the same four
 // take: states from a walk of unloading and reloading cycles, each with strains in every range,
-// shuffled so that the four lanes mix branches, and a count not a multiple of four.
+// shuffled so that the four lanes mix branches, and a count not a multiple of four; and
+// commitTrials each state as commitTrial leaves it.
 TEST(Concrete01Test, ArraysOfFibersGiveEachFibersOwnUpdate) {
   const Concrete01 m(1, Concrete01::Params{kFpc, kEps0, kFpcu, kEpsU});
   std::vector<Concrete01::State> states{m.virginState()};
@@ -150,6 +151,17 @@ TEST(Concrete01Test, ArraysOfFibersGiveEachFibersOwnUpdate) {
   }
   const auto [committed, strains] = testing::shuffledArrays(fibers, random);
   const std::size_t n = testing::expectEveryGroupSize(m, committed, strains);
+  {
+    // commitTrials: the same fibers, and those that reach no new most compressive strain (a four
+    // with one that does goes one at a time, so these are the fours the lanes commit).
+    SCOPED_TRACE("commits");
+    testing::expectEveryGroupSizeCommits(m, committed, strains);
+    std::vector<std::pair<Concrete01::State, double>> noNewMinimum;
+    for (const auto& [s, e] : fibers)
+      if (!(!(e > 0.0) && e < s.strain && e <= s.minStrain)) noNewMinimum.emplace_back(s, e);
+    const auto [keptCommitted, keptStrains] = testing::shuffledArrays(noNewMinimum, random);
+    testing::expectEveryGroupSizeCommits(m, keptCommitted, keptStrains);
+  }
   {
     // Fours whose strains are all tensile (open cracks; the four's shortcut): from every state,
     // most of them with a compressive stress the update must drop, and the tensile states at

@@ -109,7 +109,8 @@ TEST(Concrete02Test, CommitFromTrialResponseEqualsTheTrialState) {
 // take. States from a walk through every branch, each paired with strains in every range
 // (unchanged, a new minimum on each part of the envelope, the reloading band and its two bounds,
 // tension reloading and the tension envelope, a NaN), shuffled so that the four lanes mix branches,
-// and a count not a multiple of four.
+// and a count not a multiple of four. commitTrials (the fold of a commit, four at a time too) must
+// leave each state as commitTrial does, on the same fibers.
 TEST(Concrete02Test, ArraysOfFibersGiveEachFibersOwnUpdate) {
   const Concrete02 m = make();
   std::vector<Concrete02::State> states{m.virginState()};
@@ -147,6 +148,10 @@ TEST(Concrete02Test, ArraysOfFibersGiveEachFibersOwnUpdate) {
   }
   const auto [shuffledStates, shuffledStrains] = testing::shuffledArrays(fibers, random);
   const std::size_t n = testing::expectEveryGroupSize(m, shuffledStates, shuffledStrains);
+  {
+    SCOPED_TRACE("commits");
+    testing::expectEveryGroupSizeCommits(m, shuffledStates, shuffledStrains);
+  }
   // What the fibers exercise: unchanged, new minimum (parabola, descending, residual), the
   // reloading band (initial slope, the reloading line, half its slope), tension reloading, the
   // tension envelope (uncracked, softening, no stress), a NaN strain.

@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
 #include <bit>
 #include <cstddef>
 #include <cstdint>
@@ -70,6 +71,44 @@ std::size_t expectEveryGroupSize(const Law& law, const std::vector<typename Law:
        {n, std::size_t{4}, std::size_t{5}, std::size_t{6}, std::size_t{7}, n - 1, n - 2})
     expectEachFibersOwnUpdate(law, committed, strains, size);
   return n;
+}
+
+/// Expects law.commitTrials over the first n fibers, each committed at its strain with its
+/// computeTrial's stress and tangent, to leave each state as commitTrial leaves it, every field
+/// to the bit (the law's state is all doubles).
+template <class Law>
+void expectEachFibersOwnCommit(const Law& law, const std::vector<typename Law::State>& committed,
+                               const std::vector<double>& strains, std::size_t n) {
+  using State = typename Law::State;
+  static_assert(sizeof(State) % sizeof(std::uint64_t) == 0);
+  std::vector<double> stresses(n), tangents(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    State trial;
+    static_cast<void>(law.computeTrial(committed[i], trial, strains[i]));
+    stresses[i] = trial.stress;
+    tangents[i] = trial.tangent;
+  }
+  std::vector<State> states(committed.begin(), committed.begin() + static_cast<long>(n));
+  law.commitTrials(states.data(), strains.data(), Responses{stresses.data(), tangents.data()}, n);
+  SCOPED_TRACE(::testing::Message() << "commit of a group of " << n);
+  for (std::size_t i = 0; i < n; ++i) {
+    State one = committed[i];
+    law.commitTrial(one, strains[i], stresses[i], tangents[i]);
+    const auto got = std::bit_cast<std::array<std::uint64_t, sizeof(State) / 8>>(states[i]);
+    const auto expected = std::bit_cast<std::array<std::uint64_t, sizeof(State) / 8>>(one);
+    for (std::size_t k = 0; k < got.size(); ++k)
+      EXPECT_EQ(got[k], expected[k]) << "fiber " << i << " field " << k << " strain " << strains[i];
+  }
+}
+
+/// expectEachFibersOwnCommit for the group sizes expectEveryGroupSize takes.
+template <class Law>
+void expectEveryGroupSizeCommits(const Law& law, const std::vector<typename Law::State>& committed,
+                                 const std::vector<double>& strains) {
+  const std::size_t n = strains.size() / 4 * 4 - 1;
+  for (const std::size_t size : {n, std::size_t{1}, std::size_t{4}, std::size_t{5}, std::size_t{6},
+                                 std::size_t{7}, n - 1, n - 2})
+    expectEachFibersOwnCommit(law, committed, strains, size);
 }
 
 }  // namespace dabs::materials::testing
