@@ -130,6 +130,7 @@ TEST(Concrete02Test, ArraysOfFibersGiveEachFibersOwnUpdate) {
   for (const auto& s : states) {
     const double near[] = {s.strain,
                            s.strain + 0.25 * DBL_EPSILON,
+                           DBL_EPSILON,  // moved by exactly DBL_EPSILON from the virgin state
                            s.strain - 1e-5,
                            s.strain + 1e-5,
                            s.ecmin - 1e-4,
