@@ -79,7 +79,7 @@ __attribute__((target("avx"))) inline __m256d binomialSeries(__m256d a, __m256d 
   const __m256d one = _mm256_set1_pd(1.0), two = _mm256_set1_pd(2.0);
   const __m256d inner =
       _mm256_add_pd(_mm256_set1_pd(0.5),
-                    _mm256_div_pd(_mm256_mul_pd(_mm256_sub_pd(a, two), x), _mm256_set1_pd(6.0)));
+                    _mm256_mul_pd(_mm256_mul_pd(_mm256_sub_pd(a, two), x), _mm256_set1_pd(1.0 / 6.0)));
   const __m256d middle =
       _mm256_add_pd(one, _mm256_mul_pd(_mm256_mul_pd(_mm256_sub_pd(a, one), x), inner));
   return _mm256_add_pd(one, _mm256_mul_pd(_mm256_mul_pd(a, x), middle));

