@@ -52,8 +52,6 @@ void Concrete01::commitTrials(State* states, const double* strains, const Respon
 
 #ifdef DABS_FOUR_LANES
 
-bool Concrete01::updatesFourAtOnce() { return lanes::available(); }
-
 namespace {
 
 using lanes::any;
@@ -225,7 +223,6 @@ __attribute__((target("avx"))) std::size_t Concrete01::commitFourAtOnce(State* s
 
 #else
 
-bool Concrete01::updatesFourAtOnce() { return false; }
 std::size_t Concrete01::commitFourAtOnce(State*, const double*, const Responses&,
                                          std::size_t) const {
   return 0;

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstddef>
 
+#include "materials/FourLanes.h"
 #include "materials/StatefulUniaxial.h"
 
 namespace dabs::materials {
@@ -62,7 +63,7 @@ class Concrete01 final : public StatefulUniaxial<Concrete01, Concrete01State> {
   void commitTrials(State* states, const double* strains, const Responses& trial,
                     std::size_t n) const;
   /// Whether computeTrials takes four fibers at a time on this processor.
-  static bool updatesFourAtOnce();
+  static bool updatesFourAtOnce() { return lanes::available(); }
   /// The virgin state.
   State virginState() const { return initialState(); }
   double getInitialTangent() const override { return Ec0_; }

@@ -60,8 +60,6 @@ void Concrete02::commitTrials(State* states, const double* strains, const Respon
 
 #ifdef DABS_FOUR_LANES
 
-bool Concrete02::updatesFourAtOnce() { return lanes::available(); }
-
 namespace {
 
 using lanes::any;
@@ -248,7 +246,6 @@ __attribute__((target("avx"))) std::size_t Concrete02::commitFourAtOnce(State* s
 
 #else
 
-bool Concrete02::updatesFourAtOnce() { return false; }
 std::size_t Concrete02::commitFourAtOnce(State*, const double*, const Responses&,
                                          std::size_t) const {
   return 0;

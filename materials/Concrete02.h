@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstddef>
 
+#include "materials/FourLanes.h"
 #include "materials/StatefulUniaxial.h"
 
 namespace dabs::materials {
@@ -74,7 +75,7 @@ class Concrete02 final : public StatefulUniaxial<Concrete02, Concrete02State> {
   void commitTrials(State* states, const double* strains, const Responses& trial,
                     std::size_t n) const;
   /// Whether computeTrials takes four fibers at a time on this processor.
-  static bool updatesFourAtOnce();
+  static bool updatesFourAtOnce() { return lanes::available(); }
   /// The virgin state.
   State virginState() const { return initialState(); }
   double getInitialTangent() const override { return Ec0_; }

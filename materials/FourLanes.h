@@ -120,4 +120,11 @@ __attribute__((target("avx"))) inline void store(const Responses& out, std::size
 
 }  // namespace dabs::materials::lanes
 
+#else
+
+namespace dabs::materials::lanes {
+/// No four-lane updates on this processor family.
+inline bool available() { return false; }
+}  // namespace dabs::materials::lanes
+
 #endif

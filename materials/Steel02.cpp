@@ -57,8 +57,6 @@ void Steel02::computeTrials(const State* committed, const double* strains, const
 
 #ifdef DABS_FOUR_LANES
 
-bool Steel02::updatesFourAtOnce() { return lanes::available(); }
-
 namespace {
 
 using lanes::any;
@@ -248,7 +246,6 @@ __attribute__((target("avx"))) std::size_t Steel02::computeFourAtOnce(const Stat
 
 #else
 
-bool Steel02::updatesFourAtOnce() { return false; }
 std::size_t Steel02::computeFourAtOnce(const State*, const double*, const Responses&,
                                        std::size_t) const {
   return 0;

@@ -7,6 +7,7 @@
 #include <cstddef>
 #include <cstdint>
 
+#include "materials/FourLanes.h"
 #include "materials/StatefulUniaxial.h"
 
 namespace dabs::materials {
@@ -111,7 +112,7 @@ class Steel02 final : public StatefulUniaxial<Steel02, Steel02State> {
   void computeTrials(const State* committed, const double* strains, const Responses& out,
                      std::size_t n) const;
   /// Whether computeTrials takes four fibers at a time on this processor.
-  static bool updatesFourAtOnce();
+  static bool updatesFourAtOnce() { return lanes::available(); }
   /// The virgin state.
   State virginState() const { return initialState(); }
   double getInitialTangent() const override { return params_.E; }

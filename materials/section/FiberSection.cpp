@@ -74,6 +74,7 @@ FiberSection<Ndm>::FiberSection(int tag, const std::vector<Fiber>& fibers, doubl
     places->push_back({f.y, f.z, f.area, g, index});
   }
   places_ = std::move(places);
+  for (const auto& g : groups_) evaluatedFibers_ += g->size();
   FiberSums initial;
   for (const auto& g : groups_) g->addTo(initial, true);
   store(initial, true);
@@ -91,6 +92,7 @@ FiberSection<Ndm>::FiberSection(const FiberSection& o)
       k_(o.k_),
       k0_(o.k0_),
       materialUpdates_(o.materialUpdates_),
+      evaluatedFibers_(o.evaluatedFibers_),
       yBar_(o.yBar_),
       zBar_(o.zBar_) {
   for (const auto& g : o.groups_) groups_.push_back(g->clone());
@@ -146,7 +148,7 @@ Status FiberSection<Ndm>::setTrialDeformation(const Eigen::Ref<const Eigen::Vect
         Ndm == 2 ? g->setTrialPlanar(e_(0), kz, sums) : g->setTrial(e_(0), kz, ky, sums);
     if (!ok(s)) status = s;
   }
-  for (const auto& g : groups_) materialUpdates_ += g->size();  // fibers after merging
+  materialUpdates_ += evaluatedFibers_;
   store(sums, false);
   if (ok(status) && !(s_.allFinite() && k_.allFinite())) status = Status::NonFinite;
   return status;

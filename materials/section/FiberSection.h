@@ -102,6 +102,7 @@ class FiberSection final : public SectionForceDeformation {
   Vector e_ = Vector::Zero(), eCommitted_ = Vector::Zero(), s_ = Vector::Zero();
   Matrix k_ = Matrix::Zero(), k0_ = Matrix::Zero();
   long materialUpdates_ = 0;
+  int evaluatedFibers_ = 0;  ///< fibers after merging (the groups' sizes), a pass's updates
   double yBar_ = 0.0;  ///< reference axis in the fibers' coordinates (area centroid or 0)
   double zBar_ = 0.0;
 };
