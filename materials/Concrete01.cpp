@@ -199,10 +199,10 @@ __attribute__((target("avx"))) std::size_t Concrete01::commitFourAtOnce(State* s
     const __m256d newStrain = _mm256_loadu_pd(strains + i);
     const __m256d moved = _mm256_cmp_pd(_mm256_andnot_pd(signBit, _mm256_sub_pd(newStrain, strain)),
                                         epsilon, _CMP_NLT_UQ);
-    const __m256d newMinimum = _mm256_and_pd(
-        _mm256_and_pd(moved, _mm256_cmp_pd(newStrain, zero, _CMP_NGT_UQ)),
-        _mm256_and_pd(_mm256_cmp_pd(newStrain, strain, _CMP_LT_OQ),
-                      _mm256_cmp_pd(newStrain, minStrain, _CMP_LE_OQ)));
+    const __m256d newMinimum =
+        _mm256_and_pd(_mm256_and_pd(moved, _mm256_cmp_pd(newStrain, zero, _CMP_NGT_UQ)),
+                      _mm256_and_pd(_mm256_cmp_pd(newStrain, strain, _CMP_LT_OQ),
+                                    _mm256_cmp_pd(newStrain, minStrain, _CMP_LE_OQ)));
     if (lanes::any(newMinimum)) {
       for (std::size_t k = i; k < i + 4; ++k)
         commitTrial(states[k], strains[k], trial.stress[k], trial.tangent[k]);

@@ -213,9 +213,9 @@ __attribute__((target("avx"))) std::size_t Concrete02::commitFourAtOnce(State* s
     const __m256d newMinimum = _mm256_and_pd(moved, _mm256_cmp_pd(newStrain, ecmin, _CMP_LT_OQ));
     const __m256d crackOpens = _mm256_andnot_pd(
         newMinimum,
-        _mm256_and_pd(moved, _mm256_and_pd(_mm256_cmp_pd(newStrain, ept, _CMP_NLE_UQ),
-                                           _mm256_cmp_pd(newStrain, _mm256_add_pd(ept, dept),
-                                                         _CMP_NLE_UQ))));
+        _mm256_and_pd(
+            moved, _mm256_and_pd(_mm256_cmp_pd(newStrain, ept, _CMP_NLE_UQ),
+                                 _mm256_cmp_pd(newStrain, _mm256_add_pd(ept, dept), _CMP_NLE_UQ))));
     dept = lanes::pick(crackOpens, _mm256_sub_pd(newStrain, ept), dept);
     if (lanes::any(newMinimum)) {
       const __m256d newEr =

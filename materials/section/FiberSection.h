@@ -103,7 +103,7 @@ class FiberSection final : public SectionForceDeformation {
   Matrix k_ = Matrix::Zero(), k0_ = Matrix::Zero();
   long materialUpdates_ = 0;
   int evaluatedFibers_ = 0;  ///< fibers after merging (the groups' sizes), a pass's updates
-  double yBar_ = 0.0;  ///< reference axis in the fibers' coordinates (area centroid or 0)
+  double yBar_ = 0.0;        ///< reference axis in the fibers' coordinates (area centroid or 0)
   double zBar_ = 0.0;
 };
 
