@@ -12,6 +12,42 @@
 
 namespace dabs::materials {
 
+#if defined(DABS_FOUR_LANES) && defined(DABS_HAVE_LIBMVEC)
+// glibc's vector math library (libmvec, the x86-64 vector ABI: four doubles in a ymm register;
+// its variant for AVX2 and FMA where the processor has them, else one built on SSE).
+extern "C" {
+__attribute__((target("avx"))) __m256d _ZGVdN4v_exp(__m256d x);
+__attribute__((target("avx"))) __m256d _ZGVdN4v_log(__m256d x);
+__attribute__((target("avx"))) __m256d _ZGVdN4vv_pow(__m256d x, __m256d y);
+}
+
+namespace {
+/// e^(R log x) in every lane where x > 0 and `where`, else 0.
+__attribute__((target("avx"))) __m256d powersOf(__m256d x, __m256d R, __m256d where) {
+  const __m256d positive = _mm256_and_pd(where, _mm256_cmp_pd(x, _mm256_setzero_pd(), _CMP_GT_OQ));
+  const __m256d logs = _ZGVdN4v_log(lanes::pick(positive, x, _mm256_set1_pd(1.0)));
+  return _mm256_and_pd(positive, _ZGVdN4v_exp(_mm256_mul_pd(R, logs)));
+}
+__attribute__((target("avx"))) double powerInLanes(double x, double R) {
+  return _mm256_cvtsd_f64(
+      _ZGVdN4v_exp(_mm256_mul_pd(_mm256_set1_pd(R), _ZGVdN4v_log(_mm256_set1_pd(x)))));
+}
+__attribute__((target("avx"))) double rootInLanes(double base, double a) {
+  return _mm256_cvtsd_f64(_ZGVdN4vv_pow(_mm256_set1_pd(base), _mm256_set1_pd(a)));
+}
+}  // namespace
+
+double steel02::LanePowers::power(double x, double R) {
+  return lanes::available() ? powerInLanes(x, R) : LibmPowers::power(x, R);
+}
+double steel02::LanePowers::root(double base, double a) {
+  return lanes::available() ? rootInLanes(base, a) : LibmPowers::root(base, a);
+}
+#else
+double steel02::LanePowers::power(double x, double R) { return LibmPowers::power(x, R); }
+double steel02::LanePowers::root(double base, double a) { return LibmPowers::root(base, a); }
+#endif
+
 void Steel02::Params::validate() const {
   auto positive = [](double v, const char* name) {
     if (!std::isfinite(v) || v <= 0.0) throw InputError(name, "must be positive");
@@ -75,9 +111,9 @@ static_assert(offsetof(Steel02State, strain) == 0 && offsetof(Steel02State, epsR
 /// steel02::binomialSeries of four lanes, its operations in its order.
 __attribute__((target("avx"))) inline __m256d binomialSeries(__m256d a, __m256d x) {
   const __m256d one = _mm256_set1_pd(1.0), two = _mm256_set1_pd(2.0);
-  const __m256d inner =
-      _mm256_add_pd(_mm256_set1_pd(0.5),
-                    _mm256_mul_pd(_mm256_mul_pd(_mm256_sub_pd(a, two), x), _mm256_set1_pd(1.0 / 6.0)));
+  const __m256d inner = _mm256_add_pd(
+      _mm256_set1_pd(0.5),
+      _mm256_mul_pd(_mm256_mul_pd(_mm256_sub_pd(a, two), x), _mm256_set1_pd(1.0 / 6.0)));
   const __m256d middle =
       _mm256_add_pd(one, _mm256_mul_pd(_mm256_mul_pd(_mm256_sub_pd(a, one), x), inner));
   return _mm256_add_pd(one, _mm256_mul_pd(_mm256_mul_pd(a, x), middle));
@@ -85,12 +121,13 @@ __attribute__((target("avx"))) inline __m256d binomialSeries(__m256d a, __m256d 
 
 }  // namespace
 
-// computeTrial, lane by lane, for fibers on a branch (kon 1 or 2): the new branch of a reversal
-// without isotropic shift, the initial line, the binomial series and the quotients with the
-// scalar code's operations in its order, so the same bits; |eps*|^R and the power 1/R by the same
-// library calls and a new branch's linear limit by steel02::linearLimit, one lane at a time, where
-// a lane needs them. A fiber on its first excursion, or reversing with a shift, takes computeTrial
-// itself.
+// computeTrialWith<steel02::LanePowers>, lane by lane, for fibers on a branch (kon 1 or 2): the
+// new branch of a reversal without isotropic shift, the initial line, the binomial series and the
+// quotients with the scalar code's operations in its order, so the same bits; |eps*|^R and the
+// power 1/R by libmvec's four-lane functions (LanePowers' own; without libmvec its calls one lane
+// at a time), and a new branch's linear limit by steel02::linearLimit one lane at a time, where a
+// lane needs them. A fiber on its first excursion, or reversing with a shift, takes
+// computeTrialWith<steel02::LanePowers> itself.
 __attribute__((target("avx"))) std::size_t Steel02::computeFourAtOnce(const State* committed,
                                                                       const double* strains,
                                                                       const Responses& out,
@@ -198,15 +235,19 @@ __attribute__((target("avx"))) std::size_t Steel02::computeFourAtOnce(const Stat
     const __m256d curve = _mm256_andnot_pd(_mm256_cmp_pd(absRat, linearLimit, _CMP_LT_OQ), updated);
     const int curveLanes = _mm256_movemask_pd(curve);
     if (curveLanes != 0) {
+#ifdef DABS_HAVE_LIBMVEC
+      const __m256d t = powersOf(absRat, R, curve);
+#else
       alignas(32) double ratio[4], curvature[4], power[4];
       _mm256_store_pd(ratio, absRat);
       _mm256_store_pd(curvature, R);
       for (int l = 0; l < 4; ++l) {
         power[l] = (curveLanes >> l & 1) && ratio[l] > 0.0
-                       ? std::exp(curvature[l] * std::log(ratio[l]))
+                       ? steel02::LanePowers::power(ratio[l], curvature[l])
                        : 0.0;
       }
       const __m256d t = _mm256_load_pd(power);
+#endif
       const __m256d dum1 = _mm256_add_pd(one, t);
       const __m256d a = _mm256_div_pd(one, R);
       const __m256d series = _mm256_and_pd(_mm256_cmp_pd(t, seriesLimit, _CMP_LT_OQ),
@@ -218,13 +259,20 @@ __attribute__((target("avx"))) std::size_t Steel02::computeFourAtOnce(const Stat
         dum2 = pick(far, _mm256_mul_pd(absRat, binomialSeries(a, _mm256_div_pd(one, t))), dum2);
       const int powerLanes = curveLanes & ~_mm256_movemask_pd(_mm256_or_pd(series, far));
       if (powerLanes != 0) {
+#ifdef DABS_HAVE_LIBMVEC
+        const __m256d rootLanes = _mm256_andnot_pd(_mm256_or_pd(series, far), curve);
+        dum2 = lanes::pick(
+            rootLanes,
+            _ZGVdN4vv_pow(lanes::pick(rootLanes, dum1, one), lanes::pick(rootLanes, a, one)), dum2);
+#else
         alignas(32) double base[4], exponent[4], root[4];
         _mm256_store_pd(base, dum1);
         _mm256_store_pd(exponent, a);
         _mm256_store_pd(root, dum2);
         for (int l = 0; l < 4; ++l)
-          if (powerLanes >> l & 1) root[l] = std::pow(base[l], exponent[l]);
+          if (powerLanes >> l & 1) root[l] = steel02::LanePowers::root(base[l], exponent[l]);
         dum2 = _mm256_load_pd(root);
+#endif
       }
       const __m256d sigStar =
           _mm256_add_pd(_mm256_mul_pd(b, epsRat), _mm256_div_pd(_mm256_mul_pd(rest, epsRat), dum2));
@@ -237,7 +285,7 @@ __attribute__((target("avx"))) std::size_t Steel02::computeFourAtOnce(const Stat
     for (int l = 0; l < 4; ++l) {
       if (updatedLanes >> l & 1) continue;
       State trial;
-      static_cast<void>(computeTrial(c[l], trial, strains[i + l]));
+      static_cast<void>(computeTrialWith<steel02::LanePowers>(c[l], trial, strains[i + l]));
       out.set(i + l, trial.stress, trial.tangent);
     }
   }

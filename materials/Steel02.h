@@ -26,6 +26,23 @@ inline double binomialSeries(double a, double x) {
   return 1.0 + a * x * (1.0 + (a - 1.0) * x * (0.5 + (a - 2.0) * x * (1.0 / 6.0)));
 }
 
+/// The two powers of the curve: |eps*|^R as e^(R log x) (x > 0), and the root (1 + t)^(1/R) as
+/// pow(base, a). By the C library's exp, log and pow one value at a time:
+struct LibmPowers {
+  static double power(double x, double R) { return std::exp(R * std::log(x)); }
+  static double root(double base, double a) { return std::pow(base, a); }
+};
+/// By the functions Steel02::computeTrials takes four fibers at a time: glibc's vector math
+/// library (libmvec: its four-lane exp, log and pow, the variant for AVX2 and FMA where the
+/// processor has them) where the build has it and the processor AVX, with the value in lane 0
+/// (a lane's result depends on its own inputs alone); LibmPowers elsewhere. The two differ in the
+/// last bits (within an ulp or two of the exact values each, which R |log x| may grow to a few
+/// tens of ulps of t).
+struct LanePowers {
+  static double power(double x, double R);
+  static double root(double base, double a);
+};
+
 /// The linear limit of a branch of curvature R (Steel02State::linearLimit): 2^(q/4) with
 /// q = floor(-4 (38/R) log2 e), a lower bound of e^(-38/R) within a factor 2^(1/4) of it, from
 /// the bits of 2^floor(q/4) and a power 2^(j/4), j = 0..3: a division and a few operations
@@ -100,15 +117,24 @@ class Steel02 final : public StatefulUniaxial<Steel02, Steel02State> {
   [[nodiscard]] Status setTrialStrain(double strain, double strainRate = 0.0) override;
   /// The update as a function of the committed state: trial = the state at `strain`. Fiber
   /// sections keep only the states of their fibers and call this with one parameter set.
-  [[nodiscard]] Status computeTrial(const State& committed, State& trial, double strain) const;
+  [[nodiscard]] Status computeTrial(const State& committed, State& trial, double strain) const {
+    return computeTrialWith<steel02::LibmPowers>(committed, trial, strain);
+  }
+  /// computeTrial with the curve's powers from `Powers` (steel02::LibmPowers or LanePowers).
+  template <class Powers>
+  [[nodiscard]] Status computeTrialWith(const State& committed, State& trial, double strain) const;
   /// Turns `state` into the state computeTrial(state, trial, strain) leaves, given that state's
   /// stress and tangent: the branch bookkeeping alone, bit for bit the same. A fiber section
   /// keeps only its fibers' trial stress and tangent, and commits with this.
   void commitTrial(State& state, double strain, double stress, double tangent) const;
-  /// computeTrial of n fibers: out.stress[i] and out.tangent[i] are the trial stress and tangent at
-  /// strains[i] from committed[i], bit for bit. Where the processor has AVX the fibers on a branch
-  /// go four at a time (the powers lane by lane, with the same library calls); a fiber on its first
-  /// excursion, or reversing where a1 or a3 shifts the asymptote, is updated on its own.
+  /// The updates of n fibers: out.stress[i] and out.tangent[i] are the trial stress and tangent at
+  /// strains[i] from committed[i], bit for bit those of computeTrialWith<steel02::LanePowers>
+  /// where the processor has AVX and n >= 4 (the fibers on a branch four at a time, their powers
+  /// by libmvec's four-lane functions: the pushover benchmark 6 % faster; a fiber on its first
+  /// excursion, or reversing where a1 or a3 shifts the asymptote, on its own), else those of
+  /// computeTrial. (Fewer than four, a plane section's bars at two heights, go one at a time with
+  /// the C library's powers: their results wait on each power, and glibc's one-value functions
+  /// answer sooner; through the four-lane ones the RC frame benchmark took 4 % longer.)
   void computeTrials(const State* committed, const double* strains, const Responses& out,
                      std::size_t n) const;
   /// Whether computeTrials takes four fibers at a time on this processor.
@@ -210,7 +236,8 @@ inline bool Steel02::followBranch(State& trial, double epsP, double sigP, double
   return true;
 }
 
-inline Status Steel02::computeTrial(const State& committed, State& trial, double strain) const {
+template <class Powers>
+inline Status Steel02::computeTrialWith(const State& committed, State& trial, double strain) const {
   const auto& p = params_;
   // The curve works in strains shifted by the initial strain sigInit/E (C.-P. Lamarche's
   // extension in OpenSees), so the virgin state sits at (sigInit/E, sigInit).
@@ -226,8 +253,8 @@ inline Status Steel02::computeTrial(const State& committed, State& trial, double
 
   // Menegotto-Pinto curve (Filippou et al. 1983, eqs. 3-5) and its exact derivative.
   const double epsRat = (eps - trial.epsR) * trial.invSpan;
-  // |eps*|^R as exp(R log|eps*|): half the cost of pow, with a relative error of about
-  // R |log eps*| times round-off (1e-14 here), far below anything a step resolves.
+  // |eps*|^R as exp(R log|eps*|) (Powers::power): half the cost of pow, with a relative error
+  // of about R |log eps*| times round-off (1e-14 here), far below anything a step resolves.
   const double absRat = std::fabs(epsRat);
   if (absRat < trial.linearLimit) {
     // 1 + t and (1 + t)^(1/R) below are exactly 1 here: the same numbers without exp and log.
@@ -236,7 +263,7 @@ inline Status Steel02::computeTrial(const State& committed, State& trial, double
     return std::isfinite(trial.stress) && std::isfinite(trial.tangent) ? Status::Ok
                                                                        : Status::NonFinite;
   }
-  const double t = absRat > 0.0 ? std::exp(trial.R * std::log(absRat)) : 0.0;
+  const double t = absRat > 0.0 ? Powers::power(absRat, trial.R) : 0.0;
   const double dum1 = 1.0 + t;
   // (1 + t)^(1/R): near the elastic branch t is small and the binomial series to t^3 equals the
   // power to round-off (the next term is below 1e-17 for t < 1e-4 and R >= 1), at a fraction of
@@ -250,7 +277,7 @@ inline Status Steel02::computeTrial(const State& committed, State& trial, double
   } else if (t > steel02::kFarSeriesFrom && trial.R >= 1.0) {
     dum2 = absRat * steel02::binomialSeries(a, 1.0 / t);
   } else {
-    dum2 = std::pow(dum1, a);
+    dum2 = Powers::root(dum1, a);
   }
   const double sigStar = p.b * epsRat + (1.0 - p.b) * epsRat / dum2;
   trial.stress = sigStar * (trial.sig0 - trial.sigR) + trial.sigR;

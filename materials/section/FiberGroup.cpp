@@ -363,13 +363,15 @@ class StateFiberGroup final : public FiberGroup {
   /// A law that also commits a whole array of fibers in one call (several at once).
   static constexpr bool kCommitsArrays =
       kUpdatesArrays && requires(const M& m, State* s, const double* e, const Responses& trial) {
-        m.commitTrials(s, e, trial, std::size_t{0});
-      };
+    m.commitTrials(s, e, trial, std::size_t{0});
+  };
   /// `prototype` is the material object whose fibers this group holds (identity decides
   /// membership) and whose parameters it uses.
   explicit StateFiberGroup(const M& prototype) : law_(prototype), source_(&prototype) {}
 
-  double stress(int i) const override { return currentState(static_cast<std::size_t>(i)).stress; }
+  /// The stress the section's sums took (a fiber of a four may have it by other powers than its
+  /// update one at a time: Steel02::computeTrials).
+  double stress(int i) const override { return response(static_cast<std::size_t>(i)).stress; }
   double strain(int i) const override { return currentState(static_cast<std::size_t>(i)).strain; }
   int materialTag() const override { return law_.tag(); }
 

@@ -25,20 +25,34 @@ void expectSameBits(const StressTangent& got, const State& trial, std::size_t fi
       << "fiber " << fiber << " strain " << strain;
 }
 
-/// Expects law.computeTrials over the first n fibers to give each fiber computeTrial's stress
-/// and tangent to the bit.
+/// A fiber's own update by the law's computeTrial.
 template <class Law>
+auto ownUpdate(const Law& law) {
+  return [&law](const typename Law::State& c, typename Law::State& trial, double strain) {
+    return law.computeTrial(c, trial, strain);
+  };
+}
+
+/// Expects law.computeTrials over the first n fibers to give each fiber the stress and tangent of
+/// `reference(committed, trial, strain)` (the law's computeTrial unless said) to the bit.
+template <class Law, class Reference>
 void expectEachFibersOwnUpdate(const Law& law, const std::vector<typename Law::State>& committed,
-                               const std::vector<double>& strains, std::size_t n) {
+                               const std::vector<double>& strains, std::size_t n,
+                               const Reference& reference) {
   std::vector<double> stresses(n), tangents(n);
   law.computeTrials(committed.data(), strains.data(), Responses{stresses.data(), tangents.data()},
                     n);
   SCOPED_TRACE(::testing::Message() << "group of " << n);
   for (std::size_t i = 0; i < n; ++i) {
     typename Law::State trial;
-    static_cast<void>(law.computeTrial(committed[i], trial, strains[i]));
+    static_cast<void>(reference(committed[i], trial, strains[i]));
     expectSameBits(StressTangent{stresses[i], tangents[i]}, trial, i, strains[i]);
   }
+}
+template <class Law>
+void expectEachFibersOwnUpdate(const Law& law, const std::vector<typename Law::State>& committed,
+                               const std::vector<double>& strains, std::size_t n) {
+  expectEachFibersOwnUpdate(law, committed, strains, n, ownUpdate(law));
 }
 
 /// Fibers (a committed state and a strain each) as the two arrays computeTrials reads, shuffled
@@ -58,9 +72,9 @@ std::pair<std::vector<State>, std::vector<double>> shuffledArrays(
 /// expectEachFibersOwnUpdate for groups of n fibers (three left after the fours: n is the
 /// largest count one less than a multiple of four), of four to seven, and with tails of one and
 /// two after the fours (the last fibers go again as the group's last four); returns n.
-template <class Law>
+template <class Law, class Reference>
 std::size_t expectEveryGroupSize(const Law& law, const std::vector<typename Law::State>& committed,
-                                 const std::vector<double>& strains) {
+                                 const std::vector<double>& strains, const Reference& reference) {
 #if defined(__x86_64__)
   // On x86-64 the four-lane path runs wherever the processor has AVX (else this compares the
   // one-by-one loop with itself).
@@ -69,8 +83,13 @@ std::size_t expectEveryGroupSize(const Law& law, const std::vector<typename Law:
   const std::size_t n = strains.size() / 4 * 4 - 1;
   for (const std::size_t size :
        {n, std::size_t{4}, std::size_t{5}, std::size_t{6}, std::size_t{7}, n - 1, n - 2})
-    expectEachFibersOwnUpdate(law, committed, strains, size);
+    expectEachFibersOwnUpdate(law, committed, strains, size, reference);
   return n;
+}
+template <class Law>
+std::size_t expectEveryGroupSize(const Law& law, const std::vector<typename Law::State>& committed,
+                                 const std::vector<double>& strains) {
+  return expectEveryGroupSize(law, committed, strains, ownUpdate(law));
 }
 
 /// Expects law.commitTrials over the first n fibers, each committed at its strain with its

@@ -188,8 +188,9 @@ TEST(Steel02Test, CommitFromTrialResponseEqualsTheTrialState) {
   EXPECT_GE(reversals, 8);  // the virgin point, first yield and every peak's reversal were passed
 }
 
-// computeTrials (four fibers at a time where the processor has AVX) must give computeTrial's
-// stress and tangent to the bit, for every fiber whatever its neighbours in the same four do:
+// computeTrials (four fibers at a time where the processor has AVX) must give each fiber's own
+// update to the bit (computeTrialWith<LanePowers> in groups of four or more, computeTrial in
+// smaller ones), whatever its neighbours in the same four do:
 // states from walks of growing cycles (materials below), each with strains that stay on the
 // branch (the initial line, either side of its limit, the binomial series, the power), that
 // reverse it, or that start the first branch, shuffled so that the four lanes mix them, and a
@@ -258,7 +259,15 @@ TEST(Steel02Test, ArraysOfFibersGiveEachFibersOwnUpdate) {
       for (const double e : near) fibers.emplace_back(s, e);
     }
     const auto [committed, strains] = testing::shuffledArrays(fibers, random);
-    const std::size_t n = testing::expectEveryGroupSize(m, committed, strains);
+    // Four or more fibers take the powers of steel02::LanePowers where the processor runs the
+    // fours, fewer the C library's (every size below is four or more).
+    const auto inFours = [&m](const Steel02::State& c, Steel02::State& trial, double e) {
+      return Steel02::updatesFourAtOnce() ? m.computeTrialWith<steel02::LanePowers>(c, trial, e)
+                                          : m.computeTrial(c, trial, e);
+    };
+    const std::size_t n = testing::expectEveryGroupSize(m, committed, strains, inFours);
+    for (const std::size_t few : {std::size_t{1}, std::size_t{2}, std::size_t{3}})
+      testing::expectEachFibersOwnUpdate(m, committed, strains, few);
     for (std::size_t i = 0; i < n; ++i) {
       const auto& c = committed[i];
       const double e = strains[i];
@@ -289,6 +298,28 @@ TEST(Steel02Test, ArraysOfFibersGiveEachFibersOwnUpdate) {
 
 namespace dabs::materials {
 namespace {
+
+// The four-lane powers (libmvec where the build has it) against the C library's, over the bases
+// and curvatures a branch takes: within a few ulps of t = x^R for each of log's and exp's own
+// errors, which R |log x| multiplies (the error of log x is relative to log x), and of the root.
+TEST(Steel02Test, LanePowersAgreeWithTheCLibrarysToRoundOff) {
+  const double ulp = DBL_EPSILON;
+  int compared = 0;
+  for (double R = 1.0; R <= 25.0; R += 0.37) {
+    for (double x = 1e-3; x < 40.0; x *= 1.07) {
+      const double lane = steel02::LanePowers::power(x, R);
+      const double libm = steel02::LibmPowers::power(x, R);
+      EXPECT_LE(std::fabs(lane - libm), (4.0 + 4.0 * R * std::fabs(std::log(x))) * ulp * libm)
+          << "x " << x << " R " << R;
+      const double base = 1.0 + libm;
+      const double rootLane = steel02::LanePowers::root(base, 1.0 / R);
+      const double rootLibm = steel02::LibmPowers::root(base, 1.0 / R);
+      EXPECT_LE(std::fabs(rootLane - rootLibm), 4.0 * ulp * rootLibm) << "base " << base;
+      ++compared;
+    }
+  }
+  EXPECT_GT(compared, 5000);
+}
 
 // The linear limit against e^(-38/R) from the C library: never above it beyond round-off (so
 // |eps*|^R stays below half an ulp of 1 under it, which needs e^(-36.74/R)), never below it by

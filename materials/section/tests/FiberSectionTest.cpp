@@ -397,6 +397,36 @@ TEST(FiberSectionTest, GroupsSumInFourPartialSums) {
   }
 }
 
+// A fiber's stress as a response is the stress the section summed: eight Steel02 bars at
+// distinct heights (one group, four at a time where the processor has AVX, whose powers may differ
+// in the last bits from an update one at a time), yielded, committed and then reversed onto the
+// curves of their new branches: the axial force is the four partial sums of the fibers' stresses
+// times their areas, to the bit.
+TEST(FiberSectionTest, FiberStressIsTheStressTheSectionSummed) {
+  const Steel02 steel = steel02();
+  std::vector<FiberSection<2>::Fiber> fibers;
+  for (int j = 0; j < 8; ++j) fibers.push_back({-0.35 + 0.1 * j, 0.0, 0.0005 + 1e-5 * j, &steel});
+  FiberSection<2> sec(1, fibers, 0.0);
+  const double epsY = 4e5 / 2e8;
+  Eigen::VectorXd e(2);
+  e << 0.5 * epsY, 30.0 * epsY;  // bars from -10 to +11 yield strains
+  ASSERT_TRUE(ok(sec.setTrialDeformation(e)));
+  sec.commitState();
+  int onCurve = 0;
+  for (const double back : {0.3, 0.6, 0.9}) {
+    e(1) = 30.0 * epsY * (1.0 - back);  // every bar reverses
+    ASSERT_TRUE(ok(sec.setTrialDeformation(e)));
+    double part[4] = {0.0, 0.0, 0.0, 0.0};
+    for (int i = 0; i < 8; ++i) {
+      part[i % 4] += sec.fiberStress(i) * sec.fiberArea(i);
+      // Off the initial line of the new branch: the stress is not the elastic unloading one.
+      onCurve += std::fabs(sec.fiberStress(i)) < 0.999 * 4e5 ? 1 : 0;
+    }
+    EXPECT_EQ(sec.getStressResultant()(0), (part[0] + part[1]) + (part[2] + part[3]));
+  }
+  EXPECT_GT(onCurve, 8);
+}
+
 TEST(FiberSectionTest, CopiesShareOnlyTheirGeometry) {
   // The copies of a section (one per integration point) share the fibers' coordinates and areas
   // but not their states: a copy and the original driven through different histories (trials,
