@@ -211,12 +211,7 @@ __attribute__((target("avx"))) std::size_t Concrete01::commitFourAtOnce(State* s
     strain = lanes::pick(moved, newStrain, strain);
     stress = lanes::pick(moved, _mm256_loadu_pd(trial.stress + i), stress);
     tangent = lanes::pick(moved, _mm256_loadu_pd(trial.tangent + i), tangent);
-    __m256d row0, row1, row2, row3;
-    lanes::transpose(strain, stress, tangent, minStrain, row0, row1, row2, row3);
-    _mm256_storeu_pd(f[0], row0);
-    _mm256_storeu_pd(f[1], row1);
-    _mm256_storeu_pd(f[2], row2);
-    _mm256_storeu_pd(f[3], row3);
+    lanes::storeAsRows(f, strain, stress, tangent, minStrain);
   }
   return i;
 }

@@ -229,17 +229,9 @@ __attribute__((target("avx"))) std::size_t Concrete02::commitFourAtOnce(State* s
     strain = lanes::pick(moved, newStrain, strain);
     stress = lanes::pick(moved, newStress, stress);
     tangent = lanes::pick(moved, newTangent, tangent);
-    __m256d row0, row1, row2, row3;
-    lanes::transpose(strain, stress, tangent, ecmin, row0, row1, row2, row3);
-    _mm256_storeu_pd(f[0], row0);
-    _mm256_storeu_pd(f[1], row1);
-    _mm256_storeu_pd(f[2], row2);
-    _mm256_storeu_pd(f[3], row3);
-    lanes::transpose(dept, sigMin, Er, ept, row0, row1, row2, row3);
-    _mm256_storeu_pd(f[0] + 4, row0);
-    _mm256_storeu_pd(f[1] + 4, row1);
-    _mm256_storeu_pd(f[2] + 4, row2);
-    _mm256_storeu_pd(f[3] + 4, row3);
+    lanes::storeAsRows(f, strain, stress, tangent, ecmin);
+    double* const second[4] = {f[0] + 4, f[1] + 4, f[2] + 4, f[3] + 4};
+    lanes::storeAsRows(second, dept, sigMin, Er, ept);
   }
   return i;
 }

@@ -111,6 +111,18 @@ __attribute__((target("avx"))) inline void transpose(__m256d r0, __m256d r1, __m
   c3 = _mm256_permute2f128_pd(t1, t3, 0x31);
 }
 
+/// Columns c0..c3 (one field of four fibers each) stored as the fibers' rows: four doubles at
+/// rows[k] for fiber k (the fields of a state, a row of four at a time).
+__attribute__((target("avx"))) inline void storeAsRows(double* const rows[4], __m256d c0,
+                                                       __m256d c1, __m256d c2, __m256d c3) {
+  __m256d r0, r1, r2, r3;
+  transpose(c0, c1, c2, c3, r0, r1, r2, r3);
+  _mm256_storeu_pd(rows[0], r0);
+  _mm256_storeu_pd(rows[1], r1);
+  _mm256_storeu_pd(rows[2], r2);
+  _mm256_storeu_pd(rows[3], r3);
+}
+
 /// Four fibers' stresses and tangents stored as fibers i .. i + 3 of `out`.
 __attribute__((target("avx"))) inline void store(const Responses& out, std::size_t i,
                                                  __m256d stress, __m256d tangent) {
