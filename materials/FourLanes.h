@@ -87,7 +87,8 @@ inline bool available() {
 /// `where` ? a : b, lane by lane (`where` all ones or all zeros in each lane).
 __attribute__((target("avx"))) inline __m256d pick(__m256d where, __m256d a, __m256d b) {
   __m256d picked;
-  asm("vblendvpd %3, %2, %1, %0" : "=x"(picked) : "x"(b), "x"(a), "x"(where));
+  // AT&T operand order, and Intel's for a build with -masm=intel.
+  asm("vblendvpd {%3, %2, %1, %0|%0, %1, %2, %3}" : "=x"(picked) : "x"(b), "x"(a), "x"(where));
   return picked;
 }
 

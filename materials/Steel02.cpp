@@ -43,9 +43,11 @@ double steel02::LanePowers::power(double x, double R) {
 double steel02::LanePowers::root(double base, double a) {
   return lanes::available() ? rootInLanes(base, a) : LibmPowers::root(base, a);
 }
+bool steel02::LanePowers::fromLibmvec() { return true; }
 #else
 double steel02::LanePowers::power(double x, double R) { return LibmPowers::power(x, R); }
 double steel02::LanePowers::root(double base, double a) { return LibmPowers::root(base, a); }
+bool steel02::LanePowers::fromLibmvec() { return false; }
 #endif
 
 void Steel02::Params::validate() const {

@@ -41,6 +41,8 @@ struct LibmPowers {
 struct LanePowers {
   static double power(double x, double R);
   static double root(double base, double a);
+  /// Whether the build takes them from libmvec (else they are LibmPowers').
+  static bool fromLibmvec();
 };
 
 /// The linear limit of a branch of curvature R (Steel02State::linearLimit): 2^(q/4) with

@@ -134,6 +134,8 @@ TEST(Concrete01Test, ArraysOfFibersGiveEachFibersOwnUpdate) {
   for (const auto& s : states) {
     const double near[] = {s.strain,
                            s.strain + 0.25 * DBL_EPSILON,
+                           DBL_EPSILON,  // moved by exactly DBL_EPSILON from the virgin state
+                           -DBL_EPSILON,
                            s.strain - 1e-5,
                            s.strain + 1e-5,
                            s.minStrain - 1e-6,
