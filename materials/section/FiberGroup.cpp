@@ -445,8 +445,6 @@ class StateFiberGroup final : public FiberGroup {
 
   template <bool Planar>
   Status sweep(double e0, double kz, double ky, FiberSums& sums) {
-    // A group belongs to one section, so its passes are all plane or all spatial: the pending
-    // strains are formed by the same expression as when they were the trial's.
     if (kKeepsResponse && phase_ == Phase::CommitPending)
       sweepFolding<Planar, true>(e0, kz, ky, sums);
     else
@@ -469,22 +467,19 @@ class StateFiberGroup final : public FiberGroup {
     const double* zs = g.z.data();
     const double* as = g.area.data();
     State* committed = committed_.data();
-    const double e0Pending = e0_, kzPending = kz_, kyPending = ky_;
     const std::size_t n = committed_.size();
     // The only failure of these laws is a non-finite stress or tangent, and it makes the sums
     // non-finite too: the caller checks those once instead of every fiber here.
     if constexpr (kKeepsResponse) {
-      // The strains (and the pending commits) first, then the updates over the arrays.
+      // The pending commits (at the strains of the committed pass, still in strains_: only a
+      // pass writes them), then the strains and the updates over the arrays.
       double* strains = strains_.data();
       const Responses trial{trialStress_.data(), trialTangent_.data()};
       if constexpr (Fold && kCommitsArrays) {
-        fiberStrains<Planar>(e0Pending, kzPending, kyPending, ys, zs, strains, n);
         law_.commitTrials(committed, strains, trial, n);
       } else if constexpr (Fold) {
-        for (std::size_t i = 0; i < n; ++i) {
-          const double pending = fiberStrain<Planar>(e0Pending, kzPending, kyPending, ys[i], zs[i]);
-          law_.commitTrial(committed[i], pending, trial.stress[i], trial.tangent[i]);
-        }
+        for (std::size_t i = 0; i < n; ++i)
+          law_.commitTrial(committed[i], strains[i], trial.stress[i], trial.tangent[i]);
       }
       fiberStrains<Planar>(e0, kz, ky, ys, zs, strains, n);
       if constexpr (kUpdatesArrays)
