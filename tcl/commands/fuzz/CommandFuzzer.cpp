@@ -12,8 +12,8 @@
 //
 // The interpreter is made safe (no exec, open, file, source, exit, Tcl's load) and the dabs
 // commands that name files write only into the fuzzer's own temporary folder; loops are bounded by
-// Tcl's command limit, and `analyze` by step limits, so an input cannot hang the fuzzer on work
-// it asked for rather than on a fault.
+// Tcl's command limit and a time limit, and `analyze` by step limits, so an input cannot hang the
+// fuzzer on work it asked for rather than on a fault.
 #include <tcl.h>
 #include <unistd.h>
 
@@ -36,6 +36,11 @@ namespace {
 
 // Commands a fuzz input may run (Tcl's command limit counts every command, procedures included).
 constexpr int kCommandLimit = 5000;
+// Seconds a fuzz input may run, below libFuzzer's -timeout (10 s in .ci/run): the command limit
+// does not count the instructions of a compiled loop (`for {...} {$i <= "n"} {incr i} {lappend l
+// $i}` never ends and was counted as no command at all; a mutated seed did that), the time limit
+// stops it.
+constexpr long kSecondsLimit = 5;
 
 // Wrappers evaluated before each input. Files: every -file, -filePath and -fileTime value and the
 // file name of print become names in the temporary folder (a record file is written there once).
@@ -151,6 +156,11 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     std::abort();
   Tcl_LimitSetCommands(interp, kCommandLimit);
   Tcl_LimitTypeSet(interp, TCL_LIMIT_COMMANDS);
+  Tcl_Time deadline;
+  Tcl_GetTime(&deadline);
+  deadline.sec += kSecondsLimit;
+  Tcl_LimitSetTime(interp, &deadline);
+  Tcl_LimitTypeSet(interp, TCL_LIMIT_TIME);
   const std::string script(reinterpret_cast<const char*>(data), size);
   // One complete command at a time, as the shell reads them.
   std::string command;
