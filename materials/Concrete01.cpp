@@ -194,8 +194,7 @@ __attribute__((target("avx"))) std::size_t Concrete01::commitFourAtOnce(State* s
     double* f[4] = {lanes::fields(states[i]), lanes::fields(states[i + 1]),
                     lanes::fields(states[i + 2]), lanes::fields(states[i + 3])};
     __m256d strain, stress, tangent, minStrain;
-    lanes::transpose(_mm256_loadu_pd(f[0]), _mm256_loadu_pd(f[1]), _mm256_loadu_pd(f[2]),
-                     _mm256_loadu_pd(f[3]), strain, stress, tangent, minStrain);
+    lanes::loadAsColumns(f, strain, stress, tangent, minStrain);
     const __m256d newStrain = _mm256_loadu_pd(strains + i);
     const __m256d moved = _mm256_cmp_pd(_mm256_andnot_pd(signBit, _mm256_sub_pd(newStrain, strain)),
                                         epsilon, _CMP_NLT_UQ);

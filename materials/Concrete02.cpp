@@ -200,11 +200,10 @@ __attribute__((target("avx"))) std::size_t Concrete02::commitFourAtOnce(State* s
   for (; i + 4 <= n; i += 4) {
     double* f[4] = {lanes::fields(states[i]), lanes::fields(states[i + 1]),
                     lanes::fields(states[i + 2]), lanes::fields(states[i + 3])};
+    double* const second[4] = {f[0] + 4, f[1] + 4, f[2] + 4, f[3] + 4};
     __m256d strain, stress, tangent, ecmin, dept, sigMin, Er, ept;
-    lanes::transpose(_mm256_loadu_pd(f[0]), _mm256_loadu_pd(f[1]), _mm256_loadu_pd(f[2]),
-                     _mm256_loadu_pd(f[3]), strain, stress, tangent, ecmin);
-    lanes::transpose(_mm256_loadu_pd(f[0] + 4), _mm256_loadu_pd(f[1] + 4),
-                     _mm256_loadu_pd(f[2] + 4), _mm256_loadu_pd(f[3] + 4), dept, sigMin, Er, ept);
+    lanes::loadAsColumns(f, strain, stress, tangent, ecmin);
+    lanes::loadAsColumns(second, dept, sigMin, Er, ept);
     const __m256d newStrain = _mm256_loadu_pd(strains + i);
     const __m256d newStress = _mm256_loadu_pd(trial.stress + i);
     const __m256d newTangent = _mm256_loadu_pd(trial.tangent + i);
@@ -230,7 +229,6 @@ __attribute__((target("avx"))) std::size_t Concrete02::commitFourAtOnce(State* s
     stress = lanes::pick(moved, newStress, stress);
     tangent = lanes::pick(moved, newTangent, tangent);
     lanes::storeAsRows(f, strain, stress, tangent, ecmin);
-    double* const second[4] = {f[0] + 4, f[1] + 4, f[2] + 4, f[3] + 4};
     lanes::storeAsRows(second, dept, sigMin, Er, ept);
   }
   return i;

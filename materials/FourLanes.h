@@ -112,6 +112,14 @@ __attribute__((target("avx"))) inline void transpose(__m256d r0, __m256d r1, __m
   c3 = _mm256_permute2f128_pd(t1, t3, 0x31);
 }
 
+/// The rows of four fibers (four doubles at rows[k] for fiber k) as columns c0..c3, one field of
+/// the four each: storeAsRows' inverse.
+__attribute__((target("avx"))) inline void loadAsColumns(const double* const rows[4], __m256d& c0,
+                                                         __m256d& c1, __m256d& c2, __m256d& c3) {
+  transpose(_mm256_loadu_pd(rows[0]), _mm256_loadu_pd(rows[1]), _mm256_loadu_pd(rows[2]),
+            _mm256_loadu_pd(rows[3]), c0, c1, c2, c3);
+}
+
 /// Columns c0..c3 (one field of four fibers each) stored as the fibers' rows: four doubles at
 /// rows[k] for fiber k (the fields of a state, a row of four at a time).
 __attribute__((target("avx"))) inline void storeAsRows(double* const rows[4], __m256d c0,

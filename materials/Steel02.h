@@ -132,7 +132,7 @@ class Steel02 final : public StatefulUniaxial<Steel02, Steel02State> {
   /// The updates of n fibers: out.stress[i] and out.tangent[i] are the trial stress and tangent at
   /// strains[i] from committed[i], bit for bit those of computeTrialWith<steel02::LanePowers>
   /// where the processor has AVX and n >= 4 (the fibers on a branch four at a time, their powers
-  /// by libmvec's four-lane functions: the pushover benchmark 6 % faster; a fiber on its first
+  /// by libmvec's four-lane functions: the pushover benchmark 7 % faster; a fiber on its first
   /// excursion, or reversing where a1 or a3 shifts the asymptote, on its own), else those of
   /// computeTrial. (Fewer than four, a plane section's bars at two heights, go one at a time with
   /// the C library's powers: their results wait on each power, and glibc's one-value functions
