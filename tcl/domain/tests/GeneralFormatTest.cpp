@@ -1,0 +1,194 @@
+// SPDX-License-Identifier: MIT
+// formatGeneral against the C++ library's std::to_chars (general, with a precision: printf's %.*g)
+// over random doubles of every magnitude, values of typical analyses, decimal ties and the edges
+// of each notation; fastGeneral must answer for nearly all of the typical ones.
+#include "tcl/domain/GeneralFormat.h"
+
+#include <gtest/gtest.h>
+
+#include <bit>
+#include <charconv>
+#include <cmath>
+#include <cstdint>
+#include <cstdio>
+#include <limits>
+#include <random>
+#include <string>
+#include <vector>
+
+namespace dabs::domain {
+namespace {
+
+std::string library(double v, int precision) {
+  char text[64];
+  const auto r = std::to_chars(text, text + sizeof text, v, std::chars_format::general, precision);
+  return {text, r.ptr};
+}
+
+std::string ours(double v, int precision) {
+  char text[kGeneralFormatMax];
+  return {text, formatGeneral(text, v, precision)};
+}
+
+/// Whether fastGeneral answered, and, when it did, that it wrote the library's characters.
+bool expectFastAgrees(double v, int precision) {
+  char text[kGeneralFormatMax];
+  char* end = fastGeneral(text, v, precision);
+  if (end == nullptr) return false;
+  const std::string expected = library(v, precision);
+  EXPECT_EQ(std::string(text, end), expected)
+      << "v = " << std::hexfloat << v << std::defaultfloat << ", precision " << precision;
+  return std::string(text, end) == expected;
+}
+
+std::mt19937_64 seeded() {
+  return std::mt19937_64(static_cast<std::uint64_t>(::testing::GTEST_FLAG(random_seed)) +
+                         20261129U);
+}
+
+TEST(GeneralFormatTest, RandomBitPatternsOfEveryMagnitudeAgreeWithTheLibrary) {
+  auto rng = seeded();
+  int answered = 0;
+  for (int i = 0; i < 200000; ++i) {
+    const double v = std::bit_cast<double>(rng());
+    const int precision = 1 + static_cast<int>(rng() % 17);
+    ASSERT_EQ(ours(v, precision), library(v, precision))
+        << std::hexfloat << v << " p " << precision;
+    answered += expectFastAgrees(v, precision) ? 1 : 0;
+  }
+  EXPECT_GT(answered, 0);
+}
+
+TEST(GeneralFormatTest, BothEndsOfEveryBinaryExponentAgree) {
+  // The decimal exponent is estimated from the binary one: 2^b and the double below 2^(b+1) for
+  // every b, where the estimate is furthest from log10 |v|.
+  for (int b = -1074; b <= 1023; ++b) {
+    const double low = std::ldexp(1.0, b);
+    const double high = b == 1023 ? std::numeric_limits<double>::max()
+                                  : std::nextafter(std::ldexp(1.0, b + 1), 0.0);
+    for (int precision = 1; precision <= 17; ++precision)
+      for (const double v : {low, high, -low, -high})
+        ASSERT_EQ(ours(v, precision), library(v, precision))
+            << std::hexfloat << v << " p " << precision;
+  }
+}
+
+TEST(GeneralFormatTest, ValuesOfAnAnalysisTakeTheFastPathAndAgree) {
+  // Displacements, forces, times: magnitudes 1e-12 to 1e9 with both signs, at the recorders'
+  // common precisions.
+  auto rng = seeded();
+  std::uniform_real_distribution<double> decade(-12.0, 9.0);
+  for (const int precision : {6, 8, 10, 12, 15, 16, 17}) {
+    int answered = 0;
+    constexpr int kValues = 100000;
+    for (int i = 0; i < kValues; ++i) {
+      double v = std::pow(10.0, decade(rng));
+      if (rng() & 1U) v = -v;
+      ASSERT_EQ(ours(v, precision), library(v, precision)) << std::hexfloat << v;
+      answered += expectFastAgrees(v, precision) ? 1 : 0;
+    }
+    // The scaled value's error is 2^-63 of it: at 12 digits, 1e-7 of a unit around a half.
+    if (precision <= 15)
+      EXPECT_GT(answered, kValues * 999 / 1000) << "precision " << precision;
+    else
+      EXPECT_GT(answered, kValues * 9 / 10) << "precision " << precision;
+  }
+}
+
+TEST(GeneralFormatTest, TimesOfAConstantStepAgree) {
+  // A recorder's -time column: n dt accumulated, as an analysis forms it.
+  for (const double dt : {0.01, 0.005, 0.02, 0.001, 1.0 / 3.0}) {
+    double t = 0.0;
+    for (int i = 0; i < 5000; ++i) {
+      t += dt;
+      for (const int precision : {6, 12})
+        ASSERT_EQ(ours(t, precision), library(t, precision)) << std::hexfloat << t;
+    }
+  }
+}
+
+TEST(GeneralFormatTest, DecimalTiesRoundAsTheLibraryDoes) {
+  // Exact halves of the last kept digit (round half to even on the exact binary value) and the
+  // doubles next to them; integers and binary fractions with one digit more than kept.
+  std::vector<double> values;
+  for (double base : {0.5, 1.5, 2.5, 12.5, 0.125, 0.375, 1234567890125.0, 1234567890135.0,
+                      9999999999995.0, 0.000244140625, 1e15 + 5.0, 4503599627370497.0}) {
+    values.push_back(base);
+    values.push_back(std::nextafter(base, 0.0));
+    values.push_back(std::nextafter(base, 1e300));
+    values.push_back(-base);
+  }
+  for (const double v : values)
+    for (int precision = 1; precision <= 17; ++precision)
+      ASSERT_EQ(ours(v, precision), library(v, precision))
+          << std::hexfloat << v << " p " << precision;
+  // A tie must never be decided by the fast path's arithmetic: 2.5 to one digit is "2".
+  char text[kGeneralFormatMax];
+  EXPECT_EQ(fastGeneral(text, 2.5, 1), nullptr);
+  EXPECT_EQ(ours(2.5, 1), "2");
+  EXPECT_EQ(ours(3.5, 1), "4");
+  EXPECT_EQ(ours(1234567890125.0, 12), "1.23456789012e+12");
+}
+
+TEST(GeneralFormatTest, EdgesOfEachNotationAgree) {
+  // Where %g changes notation (exponent -5 and -4, p - 1 and p), where rounding carries into the
+  // next decade, zeros, signs, infinities, NaN, subnormals and the largest and smallest doubles.
+  std::vector<double> values = {0.0,
+                                -0.0,
+                                std::numeric_limits<double>::infinity(),
+                                -std::numeric_limits<double>::infinity(),
+                                std::numeric_limits<double>::quiet_NaN(),
+                                std::numeric_limits<double>::denorm_min(),
+                                std::numeric_limits<double>::min(),
+                                std::numeric_limits<double>::max(),
+                                1.0,
+                                -1.0,
+                                100.0,
+                                123456.0,
+                                1e-5,
+                                1e-4,
+                                0.99999999999999989,
+                                9.9999999999995e-5,
+                                9.99999999999949e-5,
+                                999999999999.5,
+                                99999.95,
+                                0.1,
+                                0.2,
+                                0.3};
+  for (int e = -30; e <= 30; ++e) {
+    const double power = std::pow(10.0, e);
+    values.push_back(power);
+    values.push_back(std::nextafter(power, 0.0));
+    values.push_back(std::nextafter(power, 1e300));
+    values.push_back(power * 9.99999999999999);
+  }
+  for (const double v : values)
+    for (int precision = 1; precision <= 17; ++precision) {
+      ASSERT_EQ(ours(v, precision), library(v, precision))
+          << std::hexfloat << v << " p " << precision;
+      ASSERT_EQ(ours(-v, precision), library(-v, precision)) << std::hexfloat << -v;
+    }
+  EXPECT_EQ(ours(1e-5, 6), "1e-05");
+  EXPECT_EQ(ours(0.0001, 6), "0.0001");
+  EXPECT_EQ(ours(123456.0, 6), "123456");
+  EXPECT_EQ(ours(1234567.0, 6), "1.23457e+06");
+  EXPECT_EQ(ours(999999.5, 6), "1e+06");
+  EXPECT_EQ(ours(-0.1, 12), "-0.1");
+}
+
+TEST(GeneralFormatTest, AgreesWithPrintf) {
+  // The recorders' promise is printf's %.*g (OpenSees writes through a C++ stream, the same
+  // digits): checked here against the C library too, on values whose digits the fast path forms.
+  auto rng = seeded();
+  std::uniform_real_distribution<double> decade(-10.0, 8.0);
+  for (int i = 0; i < 20000; ++i) {
+    const double v = std::pow(10.0, decade(rng)) * ((rng() & 1U) ? -1.0 : 1.0);
+    const int precision = 1 + static_cast<int>(rng() % 17);
+    char expected[64];
+    std::snprintf(expected, sizeof expected, "%.*g", precision, v);
+    ASSERT_EQ(ours(v, precision), std::string(expected)) << std::hexfloat << v;
+  }
+}
+
+}  // namespace
+}  // namespace dabs::domain
