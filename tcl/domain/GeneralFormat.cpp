@@ -79,14 +79,15 @@ char* fastGeneral(char* out, double v, int precision) {
     s = scaled(magnitude, --k);
   }
   if (s < kPowersOfTen[p - 1]) return nullptr;  // (the estimate is never above E)
-  // s is within 2^-64 of itself from |v| 10^k (10^(p-1) <= |v| 10^k < 10^p): its nearest integer
-  // is the digits unless the exact value could lie on the other side of a half (a tie included),
-  // which only the exact digits decide. Adding 2^63 rounds s to an integer (to nearest: s < 2^63)
-  // that the sum's significand holds below its top bit.
+  // s is |v| 10^k rounded once to the nearest long double, and n + 1/2 is one (s < 2^62): rounding
+  // is monotonic, so s and the exact value lie on the same side of every half, and the nearest
+  // integer of s is the exact value's, unless s is a half itself (the exact value a tie or next to
+  // one), which only the exact digits decide. Adding 2^63 rounds s to an integer (to nearest) that
+  // the sum's significand holds below its top bit.
   constexpr long double kRoundingShift = 0x1p63L;
   const long double shifted = s + kRoundingShift;
   const long double nearest = shifted - kRoundingShift;
-  if (std::fabs(std::fabs(s - nearest) - 0.5L) <= s * 0x1p-62L) return nullptr;
+  if (std::fabs(s - nearest) == 0.5L) return nullptr;
   std::uint64_t significand = 0;
   std::memcpy(&significand, &shifted, sizeof significand);
   std::uint64_t n = significand & ~(std::uint64_t{1} << 63);

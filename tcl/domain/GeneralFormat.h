@@ -16,12 +16,13 @@ inline constexpr std::size_t kGeneralFormatMax = 32;
 /// declines).
 char* formatGeneral(char* out, double v, int precision);
 
-/// The common case of formatGeneral without the C++ library: a finite nonzero `v` between about
-/// 1e-15 and 1e27 and a precision of 1 to 17. The decimal scaling is one rounded product (or
-/// quotient) in the x87 extended format's 64-bit significand, so the scaled value's error is below
-/// 2^-63 of it; the digits are then those of the exact value unless the scaled value lies within
-/// that error of a rounding boundary (half an integer), and there it declines. Returns nullptr
-/// where it declines (also on targets whose long double is not the 64-bit-significand format).
+/// The common case of formatGeneral without the C++ library: a precision p of 1 to 17 and
+/// 10^(p-27) <= |v| < 10^(p+26) (the powers of ten exact in the format below). The decimal scaling
+/// is one product (or quotient) rounded to the x87 extended format's 64-bit significand, in which
+/// every half integer below 2^62 is exact: rounding is monotonic, so the scaled value rounds to the
+/// same integer as the exact one unless it fell on a half itself, and there it declines. Returns
+/// nullptr where it declines (also on targets without that format, or where the x87 precision is
+/// set lower).
 char* fastGeneral(char* out, double v, int precision);
 
 }  // namespace dabs::domain
