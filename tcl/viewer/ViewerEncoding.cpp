@@ -5,13 +5,14 @@
 #include <cmath>
 #include <cstdio>
 
+#include "tcl/domain/GeneralFormat.h"
+
 namespace dabs::domain {
 
 void appendNumber(std::string& out, double v, int digits) {
   if (!std::isfinite(v)) v = 0.0;  // JSON has no NaN or infinity
-  char text[40];
-  std::snprintf(text, sizeof text, "%.*g", digits, v);
-  out += text;
+  char text[kGeneralFormatMax];    // printf's %.*g
+  out.append(text, formatGeneral(text, v, digits));
 }
 
 void appendString(std::string& out, std::string_view s) {

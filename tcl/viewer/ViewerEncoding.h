@@ -12,7 +12,8 @@ namespace dabs::domain {
 // time histories as one base64 block of compressed integer series (tcl/viewer/src/data.js reads
 // them back).
 
-/// Appends v with `digits` significant digits (0 for a non-finite value: JSON has no NaN).
+/// Appends v with `digits` (1 to 17) significant digits as %g writes them (0 for a non-finite
+/// value: JSON has no NaN).
 void appendNumber(std::string& out, double v, int digits);
 /// Appends a JSON string literal; '<' is escaped so no "</script>" can end the data block early.
 void appendString(std::string& out, std::string_view s);
