@@ -20,10 +20,12 @@
 #include <cstdint>
 #include <cstdlib>
 #include <cstring>
+#include <filesystem>
 #include <fstream>
 #include <memory>
 #include <sstream>
 #include <string>
+#include <system_error>
 #include <vector>
 
 #include "tcl/commands/CommandTable.h"
@@ -90,6 +92,12 @@ extern "C" int LLVMFuzzerInitialize(int* argc, char*** argv) {
   char dir[] = "/tmp/dabs-fuzz-XXXXXX";
   if (mkdtemp(dir) == nullptr) std::abort();
   gFolder = dir;
+  // Gone with the fuzzer when it ends by exit (its time or run limit); a crash leaves it with the
+  // files the input wrote.
+  std::atexit([] {
+    std::error_code ignored;
+    std::filesystem::remove_all(gFolder, ignored);
+  });
   char* cwd = getcwd(nullptr, 0);
   if (cwd == nullptr) std::abort();
   gStart = cwd;

@@ -25,6 +25,8 @@ export async function openPage(file, modules, viewport = { width: 1400, height: 
     args: ['--headless', '--no-sandbox', '--disable-gpu', '--disable-quic', '--no-first-run',
       '--disable-background-networking', '--disable-component-update', '--disable-sync'],
   });
+  // The profile is the browser's own files: gone with the browser.
+  context.on('close', () => fs.rmSync(profile, { recursive: true, force: true }));
   const page = await context.newPage();
   await page.goto('file://' + path.resolve(file));
   await page.waitForFunction(() => window.dabsViewer !== undefined, null, { timeout: 30000 });

@@ -50,6 +50,7 @@ const peakOf = (values) => values.reduce((m, v) => Math.max(m, Math.abs(v)), 0);
 
 let context;
 let page;
+let profile;
 let disp;   // rows: time, then x y z per node of `nodes`
 let gap;    // rows: time, gap
 let force;  // rows: time, N, t1, t2 of the contact
@@ -77,7 +78,7 @@ before(async () => {
   force = readRows(path.join(out, 'force.out'));
   strain = readRows(path.join(out, 'strain.out'));
   damage = readRows(path.join(out, 'damage.out'));
-  const profile = fs.mkdtempSync(path.join(os.tmpdir(), 'dabs-viewer-chromium-'));
+  profile = fs.mkdtempSync(path.join(os.tmpdir(), 'dabs-viewer-chromium-'));
   context = await chromium.launchPersistentContext(profile, {
     executablePath: '/usr/bin/chromium',
     headless: true,
@@ -98,7 +99,10 @@ before(async () => {
   assert.deepEqual(requests, [], 'the page fetched nothing');
 });
 
-after(async () => { if (context) await context.close(); });
+after(async () => {
+  if (context) await context.close();
+  if (profile) fs.rmSync(profile, { recursive: true, force: true });  // the browser's own files
+});
 
 /** Pixels of a canvas (CSS selector) that differ from white; and the RGB at CSS points. */
 async function canvasStats(selector, points = []) {
