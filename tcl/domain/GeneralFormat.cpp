@@ -7,6 +7,8 @@
 #include <cstdint>
 #include <cstring>
 #include <limits>
+#include <stdexcept>
+#include <string>
 
 namespace dabs::domain {
 
@@ -19,19 +21,25 @@ constexpr long double kPowersOfTen[kLargestExactPower + 1] = {
     1e10L, 1e11L, 1e12L, 1e13L, 1e14L, 1e15L, 1e16L, 1e17L, 1e18L, 1e19L,
     1e20L, 1e21L, 1e22L, 1e23L, 1e24L, 1e25L, 1e26L, 1e27L};
 
-/// The x87 extended format (a 64-bit significand, its first eight bytes), computed in it: where
-/// the precision control were set to double, the products below would be rounded to 53 bits.
-bool extendedArithmetic() {
+}  // namespace
+
+bool fastGeneralAvailable() {
+#if (defined(__x86_64__) || defined(__i386__)) && !defined(__FAST_MATH__)
+  // The x87 extended format (a 64-bit significand in the first eight bytes), computed in it now:
+  // the precision control is a thread's own and may be set to double (53 bits), where the
+  // products below would round to 53 bits. Checked at every call: a volatile addition.
   if constexpr (std::numeric_limits<long double>::digits != 64) {
     return false;
   } else {
-    static const bool works = [] {
-      volatile long double one = 1.0L;
-      return one + 0x1p-63L != one;
-    }();
-    return works;
+    volatile long double one = 1.0L;
+    return one + 0x1p-63L != one;
   }
+#else
+  return false;  // another long double, or a build that lets the compiler reassociate
+#endif
 }
+
+namespace {
 
 /// |v| 10^k in long double (one rounding), k within the exact powers.
 long double scaled(long double magnitude, int k) {
@@ -61,7 +69,7 @@ void writeDigits(std::uint64_t n, int p, char* digits) {
 
 char* fastGeneral(char* out, double v, int precision) {
   const int p = precision;
-  if (p < 1 || p > 17 || !extendedArithmetic()) return nullptr;
+  if (p < 1 || p > 17 || !fastGeneralAvailable()) return nullptr;
   const auto bits = std::bit_cast<std::uint64_t>(v);
   const int biased = static_cast<int>((bits >> 52) & 0x7ff);
   if (biased == 0 || biased == 0x7ff) return nullptr;  // zero, subnormal, infinite, NaN
@@ -79,15 +87,16 @@ char* fastGeneral(char* out, double v, int precision) {
     s = scaled(magnitude, --k);
   }
   if (s < kPowersOfTen[p - 1]) return nullptr;  // (the estimate is never above E)
-  // s is |v| 10^k rounded once to the nearest long double, and n + 1/2 is one (s < 2^62): rounding
-  // is monotonic, so s and the exact value lie on the same side of every half, and the nearest
-  // integer of s is the exact value's, unless s is a half itself (the exact value a tie or next to
-  // one), which only the exact digits decide. Adding 2^63 rounds s to an integer (to nearest) that
-  // the sum's significand holds below its top bit.
+  // s is |v| 10^k rounded once to a 64-bit significand, in which n + 1/2 is exact for every n
+  // (s < 10^17 < 2^63): rounding is monotonic, so s and the exact value lie on the same side of
+  // every half, and the nearest integer of s is the exact value's, unless s is a half itself (the
+  // exact value a tie, or within half an ulp of s from one), which only the exact digits decide.
+  // Adding 2^63 rounds s to an integer that the sum's significand holds below its top bit: to the
+  // nearest in the default rounding mode, and anything else (a directed mode) is declined too.
   constexpr long double kRoundingShift = 0x1p63L;
   const long double shifted = s + kRoundingShift;
   const long double nearest = shifted - kRoundingShift;
-  if (std::fabs(s - nearest) == 0.5L) return nullptr;
+  if (!(std::fabs(s - nearest) < 0.5L)) return nullptr;
   std::uint64_t significand = 0;
   std::memcpy(&significand, &shifted, sizeof significand);
   std::uint64_t n = significand & ~(std::uint64_t{1} << 63);
@@ -135,7 +144,11 @@ char* fastGeneral(char* out, double v, int precision) {
 }
 
 char* formatGeneral(char* out, double v, int precision) {
+  if (precision < 1 || precision > 17)
+    throw std::invalid_argument("formatGeneral: precision must be 1 to 17, not " +
+                                std::to_string(precision));
   if (char* end = fastGeneral(out, v, precision)) return end;
+  // (At most 24 characters for these precisions: -2.2250738585072014e-308.)
   return std::to_chars(out, out + kGeneralFormatMax, v, std::chars_format::general, precision).ptr;
 }
 
