@@ -6,6 +6,10 @@
 
 #include <gtest/gtest.h>
 
+#if (defined(__x86_64__) || defined(__i386__)) && defined(__GLIBC__)
+#include <fpu_control.h>
+#endif
+
 #include <bit>
 #include <charconv>
 #include <cmath>
@@ -156,6 +160,29 @@ TEST(GeneralFormatTest, ExactDecimalTiesAreLeftToTheLibrary) {
   EXPECT_EQ(ours(6500000.0, 1), "6e+06");
   EXPECT_EQ(ours(7500000.0, 1), "8e+06");
 }
+
+#if (defined(__x86_64__) || defined(__i386__)) && defined(__GLIBC__)
+TEST(GeneralFormatTest, AThreadWithDoublePrecisionX87GetsTheLibrarysDigits) {
+  // The x87 precision control is a thread's own: set to double (53 bits), the extended products
+  // would be rounded to 53 bits and the digits wrong; the fast path must see it at the call.
+  fpu_control_t saved = 0;
+  _FPU_GETCW(saved);
+  const fpu_control_t doublePrecision = (saved & ~_FPU_EXTENDED) | _FPU_DOUBLE;
+  _FPU_SETCW(doublePrecision);
+  const bool available = fastGeneralAvailable();
+  auto rng = seeded();
+  std::uniform_real_distribution<double> decade(-8.0, 6.0);
+  std::vector<std::pair<std::string, std::string>> written;
+  for (int i = 0; i < 20000; ++i) {
+    const double v = std::pow(10.0, decade(rng));
+    const int precision = 1 + static_cast<int>(rng() % 17);
+    written.emplace_back(ours(v, precision), library(v, precision));
+  }
+  _FPU_SETCW(saved);
+  EXPECT_FALSE(available);
+  for (const auto& [got, expected] : written) ASSERT_EQ(got, expected);
+}
+#endif
 
 TEST(GeneralFormatTest, PrecisionOutsideOneToSeventeenIsRefused) {
   char text[kGeneralFormatMax];
