@@ -21,26 +21,6 @@ constexpr long double kPowersOfTen[kLargestExactPower + 1] = {
     1e10L, 1e11L, 1e12L, 1e13L, 1e14L, 1e15L, 1e16L, 1e17L, 1e18L, 1e19L,
     1e20L, 1e21L, 1e22L, 1e23L, 1e24L, 1e25L, 1e26L, 1e27L};
 
-}  // namespace
-
-bool fastGeneralAvailable() {
-#if (defined(__x86_64__) || defined(__i386__)) && !defined(__FAST_MATH__)
-  // The x87 extended format (a 64-bit significand in the first eight bytes), computed in it now:
-  // the precision control is a thread's own and may be set to double (53 bits), where the
-  // products below would round to 53 bits. Checked at every call: a volatile addition.
-  if constexpr (std::numeric_limits<long double>::digits != 64) {
-    return false;
-  } else {
-    volatile long double one = 1.0L;
-    return one + 0x1p-63L != one;
-  }
-#else
-  return false;  // another long double, or a build that lets the compiler reassociate
-#endif
-}
-
-namespace {
-
 /// |v| 10^k in long double (one rounding), k within the exact powers.
 long double scaled(long double magnitude, int k) {
   return k >= 0 ? magnitude * kPowersOfTen[k] : magnitude / kPowersOfTen[-k];
@@ -66,6 +46,22 @@ void writeDigits(std::uint64_t n, int p, char* digits) {
 }
 
 }  // namespace
+
+bool fastGeneralAvailable() {
+#if (defined(__x86_64__) || defined(__i386__)) && !defined(__FAST_MATH__)
+  // The x87 extended format (a 64-bit significand in the first eight bytes), computed in it now:
+  // the precision control is a thread's own and may be set to double (53 bits), where the
+  // products below would round to 53 bits. Checked at every call: a volatile addition.
+  if constexpr (std::numeric_limits<long double>::digits != 64) {
+    return false;
+  } else {
+    volatile long double one = 1.0L;
+    return one + 0x1p-63L != one;
+  }
+#else
+  return false;  // another long double, or a build that lets the compiler reassociate
+#endif
+}
 
 char* fastGeneral(char* out, double v, int precision) {
   const int p = precision;
@@ -100,7 +96,7 @@ char* fastGeneral(char* out, double v, int precision) {
   std::uint64_t significand = 0;
   std::memcpy(&significand, &shifted, sizeof significand);
   std::uint64_t n = significand & ~(std::uint64_t{1} << 63);
-  if (n == static_cast<std::uint64_t>(kPowersOfTen[p])) {  // rounded up to the next decade
+  if (nearest == kPowersOfTen[p]) {  // rounded up to the next decade
     n /= 10;
     ++exponent;
   }
@@ -128,7 +124,7 @@ char* fastGeneral(char* out, double v, int precision) {
     }
     return o;
   }
-  // Scientific notation: d.ddd, then the exponent's sign and at least two digits.
+  // Scientific notation: d.ddd, then the exponent's sign and two digits (|E| < 45 in this range).
   *o++ = digits[0];
   if (last > 1) {
     *o++ = '.';
@@ -137,8 +133,7 @@ char* fastGeneral(char* out, double v, int precision) {
   *o++ = 'e';
   *o++ = exponent < 0 ? '-' : '+';
   const int e = exponent < 0 ? -exponent : exponent;
-  if (e >= 100) *o++ = static_cast<char>('0' + e / 100);
-  *o++ = static_cast<char>('0' + e / 10 % 10);
+  *o++ = static_cast<char>('0' + e / 10);
   *o++ = static_cast<char>('0' + e % 10);
   return o;
 }

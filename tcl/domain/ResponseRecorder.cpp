@@ -20,7 +20,7 @@ ResponseRecorder::ResponseRecorder(RecorderOutput output)
 
 void ResponseRecorder::appendNumber(double v) {
   // printf's %.*g (OpenSees' streams write the same digits), by formatGeneral: std::to_chars's
-  // characters at about a fifth of its instructions where the digits are not near a tie.
+  // characters in about half its time.
   char text[kGeneralFormatMax];
   file_.buffer().append(text, formatGeneral(text, v, output_.precision));
 }
