@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "materials/section/FiberGroup.h"
 
+#include <cstddef>
 #include <type_traits>
 #include <typeindex>
 #include <typeinfo>
@@ -381,7 +382,6 @@ class StateFiberGroup final : public FiberGroup {
     if constexpr (kKeepsResponse) {
       trialStress_.push_back(0.0);
       trialTangent_.push_back(0.0);
-      strains_.push_back(0.0);
     } else {
       trial_.push_back(State{});
     }
@@ -437,6 +437,10 @@ class StateFiberGroup final : public FiberGroup {
 
  private:
   using Response = StressTangent;
+  /// Fibers whose strains a pass forms at a time (a whole number of fours; 1 kB of stack), up to
+  /// three more in a group's last block: most groups of a section are one block.
+  static constexpr std::size_t kStrainBlock = 128;
+  static_assert(kStrainBlock % 4 == 0);
   enum class Phase {
     Committed,      ///< committed_ is the current state; the trial arrays are stale
     Trial,          ///< the trial arrays hold the trial at the strains of the last setTrial
@@ -458,8 +462,8 @@ class StateFiberGroup final : public FiberGroup {
   /// that did both (on the RC frame, whose groups are small, within 1 %); the sums in the order
   /// PartialSums describes. A plane section skips the z terms (a third of the sums). `Fold`: first
   /// commit each fiber's pending trial into its state. A law that keeps responses gets the pass's
-  /// strains in one array; one that updates arrays (the concretes, four fibers at a time) then
-  /// writes the responses in its own loop.
+  /// strains a block at a time; one that updates arrays (the concretes and Steel02, four fibers at
+  /// a time) then writes the responses in its own loop.
   template <bool Planar, bool Fold>
   void sweepFolding(double e0, double kz, double ky, FiberSums& sums) {
     const Geometry& g = geometry();
@@ -471,21 +475,40 @@ class StateFiberGroup final : public FiberGroup {
     // The only failure of these laws is a non-finite stress or tangent, and it makes the sums
     // non-finite too: the caller checks those once instead of every fiber here.
     if constexpr (kKeepsResponse) {
-      // The pending commits (at the strains of the committed pass, still in strains_: only a
-      // pass writes them), then the strains and the updates over the arrays.
-      double* strains = strains_.data();
+      // Block by block, the pending commits (at the strains of the committed pass, formed again
+      // from its section strains) and then the updates at this pass's strains: the strains live
+      // in a small buffer in L1 instead of an array a section long that each pass would write
+      // and the next fold read back (on a model whose states do not fit in the cache, 16 of the
+      // about 130 bytes a pass moves a fiber). Every block but the last is a whole number of
+      // fours and the last has at least four fibers, so the fibers go four at a time, and the
+      // ones after the fours as the last four again, as they would in one call (Steel02's powers
+      // four at a time may differ in the last bits from its powers one at a time).
       const Responses trial{trialStress_.data(), trialTangent_.data()};
-      if constexpr (Fold && kCommitsArrays) {
-        law_.commitTrials(committed, strains, trial, n);
-      } else if constexpr (Fold) {
-        for (std::size_t i = 0; i < n; ++i)
-          law_.commitTrial(committed[i], strains[i], trial.stress[i], trial.tangent[i]);
+      alignas(32) double strains[kStrainBlock + 3];
+      for (std::size_t start = 0, count = 0; start < n; start += count) {
+        count = n - start <= kStrainBlock + 3 ? n - start : kStrainBlock;
+        const double* y = ys + start;
+        const double* z = zs + start;
+        State* states = committed + start;
+        const Responses block = trial.from(start);
+        if constexpr (Fold) {
+          if (planar_)
+            fiberStrains<true>(e0_, kz_, ky_, y, z, strains, count);
+          else
+            fiberStrains<false>(e0_, kz_, ky_, y, z, strains, count);
+          if constexpr (kCommitsArrays) {
+            law_.commitTrials(states, strains, block, count);
+          } else {
+            for (std::size_t i = 0; i < count; ++i)
+              law_.commitTrial(states[i], strains[i], block.stress[i], block.tangent[i]);
+          }
+        }
+        fiberStrains<Planar>(e0, kz, ky, y, z, strains, count);
+        if constexpr (kUpdatesArrays)
+          law_.computeTrials(states, strains, block, count);
+        else
+          lanes::computeOneByOne(law_, states, strains, block, 0, count);
       }
-      fiberStrains<Planar>(e0, kz, ky, ys, zs, strains, n);
-      if constexpr (kUpdatesArrays)
-        law_.computeTrials(committed, strains, trial, n);
-      else
-        lanes::computeOneByOne(law_, committed, strains, trial, 0, n);
       addResponses<Planar>(ys, zs, as, trial.stress, trial.tangent, n, sums);
     } else {
       State* trial = trial_.data();
@@ -544,7 +567,6 @@ class StateFiberGroup final : public FiberGroup {
   /// The fibers' trial stresses and tangents (laws that keep responses; lanes::store writes four
   /// of each as one vector)
   std::vector<double> trialStress_, trialTangent_;
-  std::vector<double> strains_;  ///< the fibers' strains in a pass (laws that keep responses)
   double e0_ = 0.0, kz_ = 0.0, ky_ = 0.0;  ///< section strains of the last setTrial
   bool planar_ = false;                    ///< the last setTrial was a plane one
   Phase phase_ = Phase::Committed;

@@ -427,6 +427,43 @@ TEST(FiberSectionTest, FiberStressIsTheStressTheSectionSummed) {
   EXPECT_GT(onCurve, 8);
 }
 
+// A group forms its fibers' strains a block at a time; its fibers must still go through the
+// law's update as in one call over the whole group: Steel02 bars (whose powers four at a time may
+// differ in the last bits from those one at a time) in groups of 131 to 263, around every block
+// boundary, yielded, committed, reversed and reloaded. Each bar's stress is the one
+// Steel02::computeTrials gives over the whole array of states, each state committed by
+// Steel02::commitTrial with its trial stress and tangent.
+TEST(FiberSectionTest, GroupsLongerThanAStrainBlockUpdateAsInOneCall) {
+  const Steel02 steel = steel02();
+  const double epsY = 4e5 / 2e8;
+  for (const std::size_t n : {131u, 132u, 133u, 135u, 258u, 263u}) {
+    SCOPED_TRACE(testing::Message() << n << " bars");
+    std::vector<FiberSection<2>::Fiber> fibers;
+    for (std::size_t j = 0; j < n; ++j)
+      fibers.push_back({-0.35 + 0.7 * double(j) / double(n), 0.0, 0.0005, &steel});
+    FiberSection<2> sec(1, fibers, 0.0);
+    std::vector<Steel02::State> states(n, steel.virginState());
+    std::vector<double> strains(n), stresses(n), tangents(n);
+    Eigen::VectorXd e(2);
+    int onCurve = 0;
+    for (const double curvature : {30.0, 21.0, 12.0, 19.0, 3.0, 17.5}) {
+      e << 0.5 * epsY, curvature * epsY;
+      ASSERT_TRUE(ok(sec.setTrialDeformation(e)));
+      for (std::size_t j = 0; j < n; ++j) strains[j] = e(0) - fibers[j].y * e(1);
+      steel.computeTrials(states.data(), strains.data(), Responses{stresses.data(), tangents.data()},
+                          n);
+      for (std::size_t j = 0; j < n; ++j) {
+        ASSERT_EQ(sec.fiberStress(static_cast<int>(j)), stresses[j]) << "bar " << j;
+        onCurve += std::fabs(stresses[j]) < 0.999 * 4e5 && std::fabs(tangents[j]) < 0.99 * 2e8;
+      }
+      sec.commitState();
+      for (std::size_t j = 0; j < n; ++j)
+        steel.commitTrial(states[j], strains[j], stresses[j], tangents[j]);
+    }
+    EXPECT_GT(onCurve, static_cast<int>(n));  // many bars off the straight parts of their branches
+  }
+}
+
 TEST(FiberSectionTest, CopiesShareOnlyTheirGeometry) {
   // The copies of a section (one per integration point) share the fibers' coordinates and areas
   // but not their states: a copy and the original driven through different histories (trials,
