@@ -40,13 +40,13 @@ Concrete01::State Concrete01::initialState() const {
   return s;
 }
 
-void Concrete01::computeTrials(const State* committed, const double* strains, const Responses& out,
-                               std::size_t n) const {
+void Concrete01::computeTrials(const StateFours<State>* committed, const double* strains,
+                               const Responses& out, std::size_t n) const {
   lanes::computeInFours(*this, &Concrete01::computeFourAtOnce, committed, strains, out, n);
 }
 
-void Concrete01::commitTrials(State* states, const double* strains, const Responses& trial,
-                              std::size_t n) const {
+void Concrete01::commitTrials(StateFours<State>* states, const double* strains,
+                              const Responses& trial, std::size_t n) const {
   lanes::commitInFours(*this, &Concrete01::commitFourAtOnce, states, strains, trial, n);
 }
 
@@ -57,24 +57,23 @@ namespace {
 using lanes::any;
 using lanes::pick;
 
-// The state is read as a row of four doubles and a row of two, transposed into one vector per
-// field.
+// Rows of a StateFours<Concrete01State>.
+constexpr std::size_t kStrain = offsetof(Concrete01State, strain) / sizeof(double);
+constexpr std::size_t kStress = offsetof(Concrete01State, stress) / sizeof(double);
+constexpr std::size_t kTangent = offsetof(Concrete01State, tangent) / sizeof(double);
+constexpr std::size_t kMinStrain = offsetof(Concrete01State, minStrain) / sizeof(double);
+constexpr std::size_t kEndStrain = offsetof(Concrete01State, endStrain) / sizeof(double);
+constexpr std::size_t kUnloadSlope = offsetof(Concrete01State, unloadSlope) / sizeof(double);
 static_assert(std::is_standard_layout_v<Concrete01State> && sizeof(Concrete01State) == 48);
-static_assert(offsetof(Concrete01State, strain) == 0 && offsetof(Concrete01State, stress) == 8 &&
-              offsetof(Concrete01State, tangent) == 16 &&
-              offsetof(Concrete01State, minStrain) == 24 &&
-              offsetof(Concrete01State, endStrain) == 32 &&
-              offsetof(Concrete01State, unloadSlope) == 40);
 
 }  // namespace
 
 // computeTrial, lane by lane: each branch is evaluated with the scalar code's operations in its
 // order (so the same bits) wherever one of the four lanes takes it, and each lane keeps the
 // result of its own branch. Comparisons with a NaN are false here as there.
-__attribute__((target("avx"))) std::size_t Concrete01::computeFourAtOnce(const State* committed,
-                                                                         const double* strains,
-                                                                         const Responses& out,
-                                                                         std::size_t n) const {
+__attribute__((target("avx"))) void Concrete01::computeFourAtOnce(
+    const StateFours<State>* committed, const double* strains, const Responses& out,
+    std::size_t n) const {
   const auto& p = params_;
   const __m256d Ec0 = _mm256_set1_pd(Ec0_), descentSlope = _mm256_set1_pd(descentSlope_);
   const __m256d fpc = _mm256_set1_pd(p.fpc), epsc0 = _mm256_set1_pd(p.epsc0);
@@ -86,31 +85,23 @@ __attribute__((target("avx"))) std::size_t Concrete01::computeFourAtOnce(const S
   const __m256d a2 = _mm256_set1_pd(0.145), a1 = _mm256_set1_pd(0.13);
   const __m256d b1 = _mm256_set1_pd(0.707), b0 = _mm256_set1_pd(0.834);
 
-  std::size_t i = 0;
-  for (; i + 4 <= n; i += 4) {
-    const State* c = committed + i;
-    __m256d cStrain, cStress, cTangent, minStrain;
-    lanes::transpose(_mm256_loadu_pd(lanes::fields(c[0])), _mm256_loadu_pd(lanes::fields(c[1])),
-                     _mm256_loadu_pd(lanes::fields(c[2])), _mm256_loadu_pd(lanes::fields(c[3])),
-                     cStrain, cStress, cTangent, minStrain);
-    const __m256d strain = _mm256_loadu_pd(strains + i);
+  for (std::size_t i = 0; i < n; i += 4) {
+    const StateFours<State>& c = committed[i / 4];
+    const __m256d cStrain = lanes::load(c, kStrain), cStress = lanes::load(c, kStress);
+    const __m256d cTangent = lanes::load(c, kTangent);
+    const __m256d strain = lanes::strainsAt(strains, i, n, c.row[kStrain]);
     const __m256d unchanged = _mm256_cmp_pd(
         _mm256_andnot_pd(signBit, _mm256_sub_pd(strain, cStrain)), epsilon, _CMP_LT_OQ);
     const __m256d tensile = _mm256_cmp_pd(strain, zero, _CMP_GT_OQ);
     if (lanes::all(tensile)) {
       // Four open cracks (the tension side of a section in bending): no stress, no tangent.
-      lanes::store(out, i, _mm256_and_pd(unchanged, cStress), _mm256_and_pd(unchanged, cTangent));
+      lanes::store(out, i, n, _mm256_and_pd(unchanged, cStress),
+                   _mm256_and_pd(unchanged, cTangent));
       continue;
     }
-    // (endStrain, unloadSlope) of fibers 0 and 2, and of 1 and 3, then one vector each.
-    const __m256d ends02 =
-        _mm256_insertf128_pd(_mm256_castpd128_pd256(_mm_loadu_pd(lanes::fields(c[0]) + 4)),
-                             _mm_loadu_pd(lanes::fields(c[2]) + 4), 1);
-    const __m256d ends13 =
-        _mm256_insertf128_pd(_mm256_castpd128_pd256(_mm_loadu_pd(lanes::fields(c[1]) + 4)),
-                             _mm_loadu_pd(lanes::fields(c[3]) + 4), 1);
-    const __m256d endStrain = _mm256_unpacklo_pd(ends02, ends13);
-    const __m256d slope = _mm256_unpackhi_pd(ends02, ends13);
+    const __m256d minStrain = lanes::load(c, kMinStrain);
+    const __m256d endStrain = lanes::load(c, kEndStrain);
+    const __m256d slope = lanes::load(c, kUnloadSlope);
 
     const __m256d linear = _mm256_sub_pd(_mm256_add_pd(cStress, _mm256_mul_pd(slope, strain)),
                                          _mm256_mul_pd(slope, cStrain));
@@ -175,15 +166,14 @@ __attribute__((target("avx"))) std::size_t Concrete01::computeFourAtOnce(const S
     tangent = pick(tensile, zero, tangent);
     stress = pick(unchanged, cStress, stress);
     tangent = pick(unchanged, cTangent, tangent);
-    lanes::store(out, i, stress, tangent);
+    lanes::store(out, i, n, stress, tangent);
   }
-  return i;
 }
 
 // commitTrial, lane by lane: the trial's strain, stress and tangent in every lane whose strain
-// moved (a lane that did not is written back as it was read). Four fibers of which one reaches a
-// new most compressive strain (the envelope and a new unloading line) go one at a time instead.
-__attribute__((target("avx"))) std::size_t Concrete01::commitFourAtOnce(State* states,
+// moved (a lane that did not keeps them). Four fibers of which one reaches a new most compressive
+// strain (the envelope and a new unloading line) go one at a time instead.
+__attribute__((target("avx"))) std::size_t Concrete01::commitFourAtOnce(StateFours<State>* states,
                                                                         const double* strains,
                                                                         const Responses& trial,
                                                                         std::size_t n) const {
@@ -191,40 +181,36 @@ __attribute__((target("avx"))) std::size_t Concrete01::commitFourAtOnce(State* s
   const __m256d zero = _mm256_setzero_pd();
   std::size_t i = 0;
   for (; i + 4 <= n; i += 4) {
-    double* f[4] = {lanes::fields(states[i]), lanes::fields(states[i + 1]),
-                    lanes::fields(states[i + 2]), lanes::fields(states[i + 3])};
-    __m256d strain, stress, tangent, minStrain;
-    lanes::loadAsColumns(f, strain, stress, tangent, minStrain);
+    StateFours<State>& s = states[i / 4];
+    const __m256d strain = lanes::load(s, kStrain);
     const __m256d newStrain = _mm256_loadu_pd(strains + i);
     const __m256d moved = _mm256_cmp_pd(_mm256_andnot_pd(signBit, _mm256_sub_pd(newStrain, strain)),
                                         epsilon, _CMP_NLT_UQ);
-    const __m256d newMinimum =
-        _mm256_and_pd(_mm256_and_pd(moved, _mm256_cmp_pd(newStrain, zero, _CMP_NGT_UQ)),
-                      _mm256_and_pd(_mm256_cmp_pd(newStrain, strain, _CMP_LT_OQ),
-                                    _mm256_cmp_pd(newStrain, minStrain, _CMP_LE_OQ)));
+    const __m256d newMinimum = _mm256_and_pd(
+        _mm256_and_pd(moved, _mm256_cmp_pd(newStrain, zero, _CMP_NGT_UQ)),
+        _mm256_and_pd(_mm256_cmp_pd(newStrain, strain, _CMP_LT_OQ),
+                      _mm256_cmp_pd(newStrain, lanes::load(s, kMinStrain), _CMP_LE_OQ)));
     if (lanes::any(newMinimum)) {
-      for (std::size_t k = i; k < i + 4; ++k)
-        commitTrial(states[k], strains[k], trial.stress[k], trial.tangent[k]);
+      lanes::commitOneByOne(*this, states, strains, trial, i, i + 4);
       continue;
     }
-    strain = lanes::pick(moved, newStrain, strain);
-    stress = lanes::pick(moved, _mm256_loadu_pd(trial.stress + i), stress);
-    tangent = lanes::pick(moved, _mm256_loadu_pd(trial.tangent + i), tangent);
-    lanes::storeAsRows(f, strain, stress, tangent, minStrain);
+    lanes::store(s, kStrain, lanes::pick(moved, newStrain, strain));
+    lanes::store(s, kStress,
+                 lanes::pick(moved, _mm256_loadu_pd(trial.stress + i), lanes::load(s, kStress)));
+    lanes::store(s, kTangent,
+                 lanes::pick(moved, _mm256_loadu_pd(trial.tangent + i), lanes::load(s, kTangent)));
   }
   return i;
 }
 
 #else
 
-std::size_t Concrete01::commitFourAtOnce(State*, const double*, const Responses&,
+std::size_t Concrete01::commitFourAtOnce(StateFours<State>*, const double*, const Responses&,
                                          std::size_t) const {
   return 0;
 }
-std::size_t Concrete01::computeFourAtOnce(const State*, const double*, const Responses&,
-                                          std::size_t) const {
-  return 0;
-}
+void Concrete01::computeFourAtOnce(const StateFours<State>*, const double*, const Responses&,
+                                   std::size_t) const {}
 
 #endif
 

@@ -48,13 +48,13 @@ Concrete02::State Concrete02::initialState() const {
   return s;
 }
 
-void Concrete02::computeTrials(const State* committed, const double* strains, const Responses& out,
-                               std::size_t n) const {
+void Concrete02::computeTrials(const StateFours<State>* committed, const double* strains,
+                               const Responses& out, std::size_t n) const {
   lanes::computeInFours(*this, &Concrete02::computeFourAtOnce, committed, strains, out, n);
 }
 
-void Concrete02::commitTrials(State* states, const double* strains, const Responses& trial,
-                              std::size_t n) const {
+void Concrete02::commitTrials(StateFours<State>* states, const double* strains,
+                              const Responses& trial, std::size_t n) const {
   lanes::commitInFours(*this, &Concrete02::commitFourAtOnce, states, strains, trial, n);
 }
 
@@ -65,12 +65,19 @@ namespace {
 using lanes::any;
 using lanes::pick;
 
-// The state is read as two rows of four doubles, transposed into one vector per field.
+// Rows of a StateFours<Concrete02State>.
+constexpr std::size_t kStrain = offsetof(Concrete02State, strain) / sizeof(double);
+constexpr std::size_t kStress = offsetof(Concrete02State, stress) / sizeof(double);
+constexpr std::size_t kTangent = offsetof(Concrete02State, tangent) / sizeof(double);
+constexpr std::size_t kDept = offsetof(Concrete02State, dept) / sizeof(double);
+constexpr std::size_t kEcmin = offsetof(Concrete02State, ecmin) / sizeof(double);
+constexpr std::size_t kSigMin = offsetof(Concrete02State, sigMin) / sizeof(double);
+constexpr std::size_t kEr = offsetof(Concrete02State, Er) / sizeof(double);
+constexpr std::size_t kEpt = offsetof(Concrete02State, ept) / sizeof(double);
 static_assert(std::is_standard_layout_v<Concrete02State> && sizeof(Concrete02State) == 64);
-static_assert(offsetof(Concrete02State, strain) == 0 && offsetof(Concrete02State, stress) == 8 &&
-              offsetof(Concrete02State, tangent) == 16 && offsetof(Concrete02State, ecmin) == 24);
-static_assert(offsetof(Concrete02State, dept) == 32 && offsetof(Concrete02State, sigMin) == 40 &&
-              offsetof(Concrete02State, Er) == 48 && offsetof(Concrete02State, ept) == 56);
+// A commit writes the lines of rows 0 to 3 (strain, stress, tangent, dept) and, at a new most
+// compressive strain, those of rows 4 to 7.
+static_assert(kStrain < 4 && kStress < 4 && kTangent < 4 && kDept < 4);
 
 /// Concrete02::tensionEnvelope in four lanes.
 struct TensionLanes {
@@ -91,10 +98,9 @@ struct TensionLanes {
 // order (so the same bits) wherever one of the four lanes takes it, and each lane keeps the
 // result of its own branch. A comparison with a NaN is false here as there, so a NaN strain
 // takes the same branch too.
-__attribute__((target("avx"))) std::size_t Concrete02::computeFourAtOnce(const State* committed,
-                                                                         const double* strains,
-                                                                         const Responses& out,
-                                                                         std::size_t n) const {
+__attribute__((target("avx"))) void Concrete02::computeFourAtOnce(
+    const StateFours<State>* committed, const double* strains, const Responses& out,
+    std::size_t n) const {
   const auto& p = params_;
   const __m256d Ec0 = _mm256_set1_pd(Ec0_);
   const __m256d half = _mm256_set1_pd(0.5), one = _mm256_set1_pd(1.0), two = _mm256_set1_pd(2.0);
@@ -112,18 +118,13 @@ __attribute__((target("avx"))) std::size_t Concrete02::computeFourAtOnce(const S
 
   const TensionLanes tensionLanes{Ec0, epsCrack, epsZero, ft, Ets, minusEts, residualTangent, zero};
 
-  std::size_t i = 0;
-  for (; i + 4 <= n; i += 4) {
-    const State* c = committed + i;
-    __m256d cStrain, cStress, cTangent, ecmin, dept, sigMin, Er, ept;
-    lanes::transpose(_mm256_loadu_pd(lanes::fields(c[0])), _mm256_loadu_pd(lanes::fields(c[1])),
-                     _mm256_loadu_pd(lanes::fields(c[2])), _mm256_loadu_pd(lanes::fields(c[3])),
-                     cStrain, cStress, cTangent, ecmin);
-    lanes::transpose(_mm256_loadu_pd(lanes::fields(c[0]) + 4),
-                     _mm256_loadu_pd(lanes::fields(c[1]) + 4),
-                     _mm256_loadu_pd(lanes::fields(c[2]) + 4),
-                     _mm256_loadu_pd(lanes::fields(c[3]) + 4), dept, sigMin, Er, ept);
-    const __m256d strain = _mm256_loadu_pd(strains + i);
+  for (std::size_t i = 0; i < n; i += 4) {
+    const StateFours<State>& c = committed[i / 4];
+    const __m256d cStrain = lanes::load(c, kStrain), cStress = lanes::load(c, kStress);
+    const __m256d ecmin = lanes::load(c, kEcmin), dept = lanes::load(c, kDept);
+    const __m256d sigMin = lanes::load(c, kSigMin), Er = lanes::load(c, kEr);
+    const __m256d ept = lanes::load(c, kEpt);
+    const __m256d strain = lanes::strainsAt(strains, i, n, c.row[kStrain]);
     const __m256d deps = _mm256_sub_pd(strain, cStrain);
     const __m256d unchanged = _mm256_cmp_pd(_mm256_andnot_pd(signBit, deps), epsilon, _CMP_LT_OQ);
     const __m256d newMinimum =
@@ -178,19 +179,19 @@ __attribute__((target("avx"))) std::size_t Concrete02::computeFourAtOnce(const S
       stress = pick(newMinimum, envelopeStress, stress);
       tangent = pick(newMinimum, envelopeTangent, tangent);
     }
-    stress = pick(unchanged, cStress, stress);
-    tangent = pick(unchanged, cTangent, tangent);
-
-    lanes::store(out, i, stress, tangent);
+    if (any(unchanged)) {
+      stress = pick(unchanged, cStress, stress);
+      tangent = pick(unchanged, lanes::load(c, kTangent), tangent);
+    }
+    lanes::store(out, i, n, stress, tangent);
   }
-  return i;
 }
 
 // commitTrial, lane by lane, with its operations in its order: a new most compressive strain
 // (setMinimumStrain's reloading slope and zero-stress strain), else a crack opened further, then
-// the trial's strain, stress and tangent, in every lane whose strain moved. A lane that did not
-// move is written back as it was read.
-__attribute__((target("avx"))) std::size_t Concrete02::commitFourAtOnce(State* states,
+// the trial's strain, stress and tangent, in every lane whose strain moved; a lane that did not
+// move keeps its fields. A row is stored only where one of its lanes changes.
+__attribute__((target("avx"))) std::size_t Concrete02::commitFourAtOnce(StateFours<State>* states,
                                                                         const double* strains,
                                                                         const Responses& trial,
                                                                         std::size_t n) const {
@@ -198,52 +199,48 @@ __attribute__((target("avx"))) std::size_t Concrete02::commitFourAtOnce(State* s
   const __m256d sigR = _mm256_set1_pd(sigR_), epsR = _mm256_set1_pd(epsR_);
   std::size_t i = 0;
   for (; i + 4 <= n; i += 4) {
-    double* f[4] = {lanes::fields(states[i]), lanes::fields(states[i + 1]),
-                    lanes::fields(states[i + 2]), lanes::fields(states[i + 3])};
-    double* const second[4] = {f[0] + 4, f[1] + 4, f[2] + 4, f[3] + 4};
-    __m256d strain, stress, tangent, ecmin, dept, sigMin, Er, ept;
-    lanes::loadAsColumns(f, strain, stress, tangent, ecmin);
-    lanes::loadAsColumns(second, dept, sigMin, Er, ept);
+    StateFours<State>& s = states[i / 4];
+    const __m256d strain = lanes::load(s, kStrain);
     const __m256d newStrain = _mm256_loadu_pd(strains + i);
-    const __m256d newStress = _mm256_loadu_pd(trial.stress + i);
-    const __m256d newTangent = _mm256_loadu_pd(trial.tangent + i);
     const __m256d moved = _mm256_cmp_pd(_mm256_andnot_pd(signBit, _mm256_sub_pd(newStrain, strain)),
                                         epsilon, _CMP_NLT_UQ);
+    if (!lanes::any(moved)) continue;
+    const __m256d newStress = _mm256_loadu_pd(trial.stress + i);
+    const __m256d ecmin = lanes::load(s, kEcmin), ept = lanes::load(s, kEpt);
+    const __m256d dept = lanes::load(s, kDept);
     const __m256d newMinimum = _mm256_and_pd(moved, _mm256_cmp_pd(newStrain, ecmin, _CMP_LT_OQ));
     const __m256d crackOpens = _mm256_andnot_pd(
         newMinimum,
         _mm256_and_pd(
             moved, _mm256_and_pd(_mm256_cmp_pd(newStrain, ept, _CMP_NLE_UQ),
                                  _mm256_cmp_pd(newStrain, _mm256_add_pd(ept, dept), _CMP_NLE_UQ))));
-    dept = lanes::pick(crackOpens, _mm256_sub_pd(newStrain, ept), dept);
+    if (lanes::any(crackOpens))
+      lanes::store(s, kDept, lanes::pick(crackOpens, _mm256_sub_pd(newStrain, ept), dept));
     if (lanes::any(newMinimum)) {
       const __m256d newEr =
           _mm256_div_pd(_mm256_sub_pd(newStress, sigR), _mm256_sub_pd(newStrain, epsR));
       const __m256d newEpt = _mm256_sub_pd(newStrain, _mm256_div_pd(newStress, newEr));
-      ecmin = lanes::pick(newMinimum, newStrain, ecmin);
-      sigMin = lanes::pick(newMinimum, newStress, sigMin);
-      Er = lanes::pick(newMinimum, newEr, Er);
-      ept = lanes::pick(newMinimum, newEpt, ept);
+      lanes::store(s, kEcmin, lanes::pick(newMinimum, newStrain, ecmin));
+      lanes::store(s, kSigMin, lanes::pick(newMinimum, newStress, lanes::load(s, kSigMin)));
+      lanes::store(s, kEr, lanes::pick(newMinimum, newEr, lanes::load(s, kEr)));
+      lanes::store(s, kEpt, lanes::pick(newMinimum, newEpt, ept));
     }
-    strain = lanes::pick(moved, newStrain, strain);
-    stress = lanes::pick(moved, newStress, stress);
-    tangent = lanes::pick(moved, newTangent, tangent);
-    lanes::storeAsRows(f, strain, stress, tangent, ecmin);
-    lanes::storeAsRows(second, dept, sigMin, Er, ept);
+    lanes::store(s, kStrain, lanes::pick(moved, newStrain, strain));
+    lanes::store(s, kStress, lanes::pick(moved, newStress, lanes::load(s, kStress)));
+    lanes::store(s, kTangent,
+                 lanes::pick(moved, _mm256_loadu_pd(trial.tangent + i), lanes::load(s, kTangent)));
   }
   return i;
 }
 
 #else
 
-std::size_t Concrete02::commitFourAtOnce(State*, const double*, const Responses&,
+std::size_t Concrete02::commitFourAtOnce(StateFours<State>*, const double*, const Responses&,
                                          std::size_t) const {
   return 0;
 }
-std::size_t Concrete02::computeFourAtOnce(const State*, const double*, const Responses&,
-                                          std::size_t) const {
-  return 0;
-}
+void Concrete02::computeFourAtOnce(const StateFours<State>*, const double*, const Responses&,
+                                   std::size_t) const {}
 
 #endif
 

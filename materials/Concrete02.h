@@ -10,13 +10,15 @@
 
 namespace dabs::materials {
 
-/// History of Concrete02.
+/// History of Concrete02. In a fiber section's StateFours two fields share a cache line: the
+/// strain, stress and tangent (and dept, which moves as a crack opens) on the lines every commit
+/// writes, the functions of ecmin on two lines only a new most compressive strain writes.
 struct Concrete02State {
   double strain = 0.0;   ///< strain (compression negative)
   double stress = 0.0;   ///< stress (compression negative)
   double tangent = 0.0;  ///< d(stress)/d(strain)
-  double ecmin = 0.0;    ///< most compressive strain reached
   double dept = 0.0;     ///< largest tensile strain beyond the zero-stress strain ept
+  double ecmin = 0.0;    ///< most compressive strain reached
   // Functions of ecmin alone, formed when ecmin changes rather than at every update:
   double sigMin = 0.0;  ///< envelope stress at ecmin
   double Er = 0.0;      ///< reloading slope (EERC report eq. 2.35)
@@ -64,15 +66,16 @@ class Concrete02 final : public StatefulUniaxial<Concrete02, Concrete02State> {
   /// only its fibers' trial stress and tangent, and commits with this.
   void commitTrial(State& state, double strain, double stress, double tangent) const;
   /// computeTrial of n fibers: out.stress[i] and out.tangent[i] are the trial stress and tangent at
-  /// strains[i] from committed[i], bit for bit. Where the processor has AVX the fibers go four at a
-  /// time through every branch one of the four takes, each lane keeping its own result: fewer
-  /// mispredicted branches, and the divisions of four fibers in one instruction.
-  void computeTrials(const State* committed, const double* strains, const Responses& out,
-                     std::size_t n) const;
-  /// commitTrial of n fibers: states[i] committed at strains[i] with trial.stress[i] and
-  /// trial.tangent[i], bit for bit. Where the processor has AVX four fibers at a time (the pass
-  /// after a commit folds the commit in; one at a time it was a third of that pass's group work).
-  void commitTrials(State* states, const double* strains, const Responses& trial,
+  /// strains[i] from fiber i of `committed`, bit for bit. Where the processor has AVX the fibers
+  /// go four at a time through every branch one of the four takes, each lane keeping its own
+  /// result: fewer mispredicted branches, and the divisions of four fibers in one instruction.
+  void computeTrials(const StateFours<State>* committed, const double* strains,
+                     const Responses& out, std::size_t n) const;
+  /// commitTrial of n fibers: fiber i of `states` committed at strains[i] with trial.stress[i]
+  /// and trial.tangent[i], bit for bit. Where the processor has AVX four fibers at a time (the
+  /// pass after a commit folds the commit in; one at a time it was a third of that pass's group
+  /// work), storing only the rows that change.
+  void commitTrials(StateFours<State>* states, const double* strains, const Responses& trial,
                     std::size_t n) const;
   /// Whether computeTrials takes four fibers at a time on this processor.
   static bool updatesFourAtOnce() { return lanes::available(); }
@@ -93,11 +96,11 @@ class Concrete02 final : public StatefulUniaxial<Concrete02, Concrete02State> {
   /// Sets ecmin (envelope stress sigMin there) and the reloading data that follow from it.
   void setMinimumStrain(State& s, double ecmin, double sigMin) const;
   /// commitTrials of the first n - n % 4 fibers, four at a time (AVX); returns their count.
-  std::size_t commitFourAtOnce(State* states, const double* strains, const Responses& trial,
-                               std::size_t n) const;
-  /// computeTrials of the first n - n % 4 fibers, four at a time (AVX); returns their count.
-  std::size_t computeFourAtOnce(const State* committed, const double* strains, const Responses& out,
-                                std::size_t n) const;
+  std::size_t commitFourAtOnce(StateFours<State>* states, const double* strains,
+                               const Responses& trial, std::size_t n) const;
+  /// computeTrials of n >= 4 fibers, four at a time (AVX), the last one to three in their own four.
+  void computeFourAtOnce(const StateFours<State>* committed, const double* strains,
+                         const Responses& out, std::size_t n) const;
   Params params_;
   // Constants of the parameters (formed once; divisions are the cost of this law's update):
   double Ec0_ = 0.0;       ///< initial tangent 2 fpc / epsc0

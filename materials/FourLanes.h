@@ -5,42 +5,94 @@
 // check the processor first). Each function carries the AVX target itself, so that the rest of
 // the program keeps the baseline instruction set.
 
+#include <array>
+#include <bit>
 #include <cstddef>
 #include <type_traits>
 
 #include "materials/StatefulUniaxial.h"
 
+namespace dabs::materials {
+
+/// The states of four fibers, field by field: row k holds field k (the state's k-th double) of
+/// the four. A four-lane update loads a field of four fibers with one instruction (no transposes
+/// of rows of fields), and a commit stores only the rows that changed; a four starts on a cache
+/// line and each line holds two rows, so an update that reads only some fields, or a commit that
+/// changes only some, moves only their lines. On a model whose fiber states do not fit in the
+/// cache, what a pass moves bounds its time. Fibers of an array of fours: fiber i is lane i % 4
+/// of four i / 4; lanes past the last fiber hold a state of their own (the law's virgin state)
+/// that nobody reads.
+template <class State>
+struct alignas(64) StateFours {
+  static_assert(std::is_trivially_copyable_v<State> && sizeof(State) % sizeof(double) == 0,
+                "a state of doubles alone");
+  static constexpr std::size_t kFields = sizeof(State) / sizeof(double);
+  double row[kFields][4];
+
+  /// Four copies of `s`.
+  static StateFours filledWith(const State& s) {
+    StateFours four;
+    for (std::size_t lane = 0; lane < 4; ++lane) four.set(lane, s);
+    return four;
+  }
+  State get(std::size_t lane) const {
+    std::array<double, kFields> fields;
+    for (std::size_t k = 0; k < kFields; ++k) fields[k] = row[k][lane];
+    return std::bit_cast<State>(fields);
+  }
+  void set(std::size_t lane, const State& s) {
+    const auto fields = std::bit_cast<std::array<double, kFields>>(s);
+    for (std::size_t k = 0; k < kFields; ++k) row[k][lane] = fields[k];
+  }
+};
+
+/// Fiber i of an array of fours.
+template <class State>
+State stateOf(const StateFours<State>* fours, std::size_t i) {
+  return fours[i / 4].get(i % 4);
+}
+
+}  // namespace dabs::materials
+
 namespace dabs::materials::lanes {
 
-/// law.computeTrial of fibers from..n-1, one at a time: the fibers left after the fours, or all
-/// of them where the processor has no AVX.
+/// law.computeTrial of fibers from..n-1, one at a time: the fibers of a group of fewer than four,
+/// or all of them where the processor has no AVX.
 template <class Law>
-void computeOneByOne(const Law& law, const typename Law::State* committed, const double* strains,
-                     const Responses& out, std::size_t from, std::size_t n) {
+void computeOneByOne(const Law& law, const StateFours<typename Law::State>* committed,
+                     const double* strains, const Responses& out, std::size_t from, std::size_t n) {
   for (std::size_t i = from; i < n; ++i) {
     typename Law::State trial;
-    static_cast<void>(law.computeTrial(committed[i], trial, strains[i]));
+    static_cast<void>(law.computeTrial(stateOf(committed, i), trial, strains[i]));
     out.set(i, trial.stress, trial.tangent);
   }
 }
 
-/// A law's computeTrials: its `fours` member updates the first n - n % 4 fibers four at a time
-/// and returns their count. A group of fewer than four (a plane section's bars at two heights)
+/// law.commitTrial of fibers from..n-1, one at a time.
+template <class Law>
+void commitOneByOne(const Law& law, StateFours<typename Law::State>* states, const double* strains,
+                    const Responses& trial, std::size_t from, std::size_t n) {
+  for (std::size_t i = from; i < n; ++i) {
+    typename Law::State s = stateOf(states, i);
+    law.commitTrial(s, strains[i], trial.stress[i], trial.tangent[i]);
+    states[i / 4].set(i % 4, s);
+  }
+}
+
+/// A law's computeTrials: its `fours` member updates all n fibers four at a time, the last one
+/// to three in their own four. A group of fewer than four (a plane section's bars at two heights)
 /// goes one by one, and so does every group where the processor cannot run the fours
-/// (Law::updatesFourAtOnce); in a larger one the fibers after the fours go as the group's last
-/// four again (each fiber's update is its own, so those written twice get the same bits twice).
+/// (Law::updatesFourAtOnce).
 template <class Law>
 void computeInFours(const Law& law,
-                    std::size_t (Law::*fours)(const typename Law::State*, const double*,
-                                              const Responses&, std::size_t) const,
-                    const typename Law::State* committed, const double* strains,
+                    void (Law::*fours)(const StateFours<typename Law::State>*, const double*,
+                                       const Responses&, std::size_t) const,
+                    const StateFours<typename Law::State>* committed, const double* strains,
                     const Responses& out, std::size_t n) {
-  if (n >= 4 && Law::updatesFourAtOnce()) {
-    if ((law.*fours)(committed, strains, out, n) < n)
-      (law.*fours)(committed + (n - 4), strains + (n - 4), out.from(n - 4), std::size_t{4});
-    return;
-  }
-  computeOneByOne(law, committed, strains, out, 0, n);
+  if (n >= 4 && Law::updatesFourAtOnce())
+    (law.*fours)(committed, strains, out, n);
+  else
+    computeOneByOne(law, committed, strains, out, 0, n);
 }
 
 /// A law's commitTrials: its `fours` member commits the first n - n % 4 fibers four at a time
@@ -48,12 +100,13 @@ void computeInFours(const Law& law,
 /// at a time through law.commitTrial.
 template <class Law>
 void commitInFours(const Law& law,
-                   std::size_t (Law::*fours)(typename Law::State*, const double*, const Responses&,
-                                             std::size_t) const,
-                   typename Law::State* states, const double* strains, const Responses& trial,
-                   std::size_t n) {
-  std::size_t i = n >= 4 && Law::updatesFourAtOnce() ? (law.*fours)(states, strains, trial, n) : 0;
-  for (; i < n; ++i) law.commitTrial(states[i], strains[i], trial.stress[i], trial.tangent[i]);
+                   std::size_t (Law::*fours)(StateFours<typename Law::State>*, const double*,
+                                             const Responses&, std::size_t) const,
+                   StateFours<typename Law::State>* states, const double* strains,
+                   const Responses& trial, std::size_t n) {
+  const std::size_t done =
+      n >= 4 && Law::updatesFourAtOnce() ? (law.*fours)(states, strains, trial, n) : 0;
+  commitOneByOne(law, states, strains, trial, done, n);
 }
 
 }  // namespace dabs::materials::lanes
@@ -65,18 +118,6 @@ void commitInFours(const Law& law,
 #include <immintrin.h>
 
 namespace dabs::materials::lanes {
-
-/// A state's fields as an array of doubles (its laws assert the layout: all doubles, no padding).
-template <class State>
-const double* fields(const State& s) {
-  static_assert(std::is_standard_layout_v<State>);
-  return reinterpret_cast<const double*>(&s);
-}
-template <class State>
-double* fields(State& s) {
-  static_assert(std::is_standard_layout_v<State>);
-  return reinterpret_cast<double*>(&s);
-}
 
 /// Whether this processor runs AVX; a property of the machine, the same for the whole run.
 inline bool available() {
@@ -100,43 +141,39 @@ __attribute__((target("avx"))) inline bool all(__m256d mask) {
   return _mm256_movemask_pd(mask) == 0xF;
 }
 
-/// Rows r0..r3 (four doubles of one fiber each) to columns c0..c3 (one field of the four each).
-__attribute__((target("avx"))) inline void transpose(__m256d r0, __m256d r1, __m256d r2, __m256d r3,
-                                                     __m256d& c0, __m256d& c1, __m256d& c2,
-                                                     __m256d& c3) {
-  const __m256d t0 = _mm256_unpacklo_pd(r0, r1), t1 = _mm256_unpackhi_pd(r0, r1);
-  const __m256d t2 = _mm256_unpacklo_pd(r2, r3), t3 = _mm256_unpackhi_pd(r2, r3);
-  c0 = _mm256_permute2f128_pd(t0, t2, 0x20);
-  c1 = _mm256_permute2f128_pd(t1, t3, 0x20);
-  c2 = _mm256_permute2f128_pd(t0, t2, 0x31);
-  c3 = _mm256_permute2f128_pd(t1, t3, 0x31);
+/// Row k of a four (field k of its four fibers) as one vector.
+template <class State>
+__attribute__((target("avx"))) inline __m256d load(const StateFours<State>& four, std::size_t k) {
+  return _mm256_load_pd(four.row[k]);
+}
+template <class State>
+__attribute__((target("avx"))) inline void store(StateFours<State>& four, std::size_t k,
+                                                 __m256d v) {
+  _mm256_store_pd(four.row[k], v);
 }
 
-/// The rows of four fibers (four doubles at rows[k] for fiber k) as columns c0..c3, one field of
-/// the four each: storeAsRows' inverse.
-__attribute__((target("avx"))) inline void loadAsColumns(const double* const rows[4], __m256d& c0,
-                                                         __m256d& c1, __m256d& c2, __m256d& c3) {
-  transpose(_mm256_loadu_pd(rows[0]), _mm256_loadu_pd(rows[1]), _mm256_loadu_pd(rows[2]),
-            _mm256_loadu_pd(rows[3]), c0, c1, c2, c3);
+/// The strains of fibers i .. i + 3 of n; a lane past the last fiber gets `padding`'s (the
+/// four's own committed strain, so that its update is a cheap one nobody reads).
+__attribute__((target("avx"))) inline __m256d strainsAt(const double* strains, std::size_t i,
+                                                        std::size_t n, const double* padding) {
+  if (i + 4 <= n) return _mm256_loadu_pd(strains + i);
+  alignas(32) double four[4];
+  for (std::size_t l = 0; l < 4; ++l) four[l] = i + l < n ? strains[i + l] : padding[l];
+  return _mm256_load_pd(four);
 }
 
-/// Columns c0..c3 (one field of four fibers each) stored as the fibers' rows: four doubles at
-/// rows[k] for fiber k (the fields of a state, a row of four at a time).
-__attribute__((target("avx"))) inline void storeAsRows(double* const rows[4], __m256d c0,
-                                                       __m256d c1, __m256d c2, __m256d c3) {
-  __m256d r0, r1, r2, r3;
-  transpose(c0, c1, c2, c3, r0, r1, r2, r3);
-  _mm256_storeu_pd(rows[0], r0);
-  _mm256_storeu_pd(rows[1], r1);
-  _mm256_storeu_pd(rows[2], r2);
-  _mm256_storeu_pd(rows[3], r3);
-}
-
-/// Four fibers' stresses and tangents stored as fibers i .. i + 3 of `out`.
-__attribute__((target("avx"))) inline void store(const Responses& out, std::size_t i,
+/// Four fibers' stresses and tangents stored as fibers i .. i + 3 of `out`, those of them below n.
+__attribute__((target("avx"))) inline void store(const Responses& out, std::size_t i, std::size_t n,
                                                  __m256d stress, __m256d tangent) {
-  _mm256_storeu_pd(out.stress + i, stress);
-  _mm256_storeu_pd(out.tangent + i, tangent);
+  if (i + 4 <= n) {
+    _mm256_storeu_pd(out.stress + i, stress);
+    _mm256_storeu_pd(out.tangent + i, tangent);
+    return;
+  }
+  alignas(32) double stresses[4], tangents[4];
+  _mm256_store_pd(stresses, stress);
+  _mm256_store_pd(tangents, tangent);
+  for (std::size_t l = 0; i + l < n; ++l) out.set(i + l, stresses[l], tangents[l]);
 }
 
 }  // namespace dabs::materials::lanes

@@ -88,9 +88,14 @@ Steel02::State Steel02::initialState() const {
   return s;
 }
 
-void Steel02::computeTrials(const State* committed, const double* strains, const Responses& out,
-                            std::size_t n) const {
+void Steel02::computeTrials(const StateFours<State>* committed, const double* strains,
+                            const Responses& out, std::size_t n) const {
   lanes::computeInFours(*this, &Steel02::computeFourAtOnce, committed, strains, out, n);
+}
+
+void Steel02::commitTrials(StateFours<State>* states, const double* strains, const Responses& trial,
+                           std::size_t n) const {
+  lanes::commitInFours(*this, &Steel02::commitFourAtOnce, states, strains, trial, n);
 }
 
 #ifdef DABS_FOUR_LANES
@@ -100,15 +105,25 @@ namespace {
 using lanes::any;
 using lanes::pick;
 
-// The branch's fields are read as rows of four doubles (a third for a reversal), each transposed
-// into one vector per field.
+// Rows of a StateFours<Steel02State>.
+constexpr std::size_t kStrain = offsetof(Steel02State, strain) / sizeof(double);
+constexpr std::size_t kEpsR = offsetof(Steel02State, epsR) / sizeof(double);
+constexpr std::size_t kInvSpan = offsetof(Steel02State, invSpan) / sizeof(double);
+constexpr std::size_t kLinearLimit = offsetof(Steel02State, linearLimit) / sizeof(double);
+constexpr std::size_t kSig0 = offsetof(Steel02State, sig0) / sizeof(double);
+constexpr std::size_t kSigR = offsetof(Steel02State, sigR) / sizeof(double);
+constexpr std::size_t kR = offsetof(Steel02State, R) / sizeof(double);
+constexpr std::size_t kKon = offsetof(Steel02State, kon) / sizeof(double);
+constexpr std::size_t kStress = offsetof(Steel02State, stress) / sizeof(double);
+constexpr std::size_t kTangent = offsetof(Steel02State, tangent) / sizeof(double);
+constexpr std::size_t kEpsMin = offsetof(Steel02State, epsMin) / sizeof(double);
+constexpr std::size_t kEpsMax = offsetof(Steel02State, epsMax) / sizeof(double);
 static_assert(std::is_standard_layout_v<Steel02State> && sizeof(Steel02State) == 112);
-static_assert(offsetof(Steel02State, strain) == 0 && offsetof(Steel02State, epsR) == 8 &&
-              offsetof(Steel02State, invSpan) == 16 && offsetof(Steel02State, linearLimit) == 24 &&
-              offsetof(Steel02State, sig0) == 32 && offsetof(Steel02State, sigR) == 40 &&
-              offsetof(Steel02State, R) == 48 && offsetof(Steel02State, stress) == 56 &&
-              offsetof(Steel02State, tangent) == 64 && offsetof(Steel02State, epsMin) == 72 &&
-              offsetof(Steel02State, epsMax) == 80 && offsetof(Steel02State, epsPl) == 88);
+// An update on the branch reads rows 0 to 7 (the first four cache lines of a four) alone.
+static_assert(kStrain < 8 && kEpsR < 8 && kInvSpan < 8 && kLinearLimit < 8 && kSig0 < 8 &&
+              kSigR < 8 && kR < 8 && kKon < 8);
+// A commit on the branch writes the strain and the stress and tangent, which share a line.
+static_assert(kStress / 2 == kTangent / 2);
 
 /// steel02::binomialSeries of four lanes, its operations in its order.
 __attribute__((target("avx"))) inline __m256d binomialSeries(__m256d a, __m256d x) {
@@ -130,10 +145,10 @@ __attribute__((target("avx"))) inline __m256d binomialSeries(__m256d a, __m256d 
 // at a time), and a new branch's linear limit by steel02::linearLimit one lane at a time, where a
 // lane needs them. A fiber on its first excursion, or reversing with a shift, takes
 // computeTrialWith<steel02::LanePowers> itself.
-__attribute__((target("avx"))) std::size_t Steel02::computeFourAtOnce(const State* committed,
-                                                                      const double* strains,
-                                                                      const Responses& out,
-                                                                      std::size_t n) const {
+__attribute__((target("avx"))) void Steel02::computeFourAtOnce(const StateFours<State>* committed,
+                                                               const double* strains,
+                                                               const Responses& out,
+                                                               std::size_t n) const {
   const auto& p = params_;
   const __m256d b = _mm256_set1_pd(p.b), rest = _mm256_set1_pd(1.0 - p.b);
   const __m256d lineSlope = _mm256_set1_pd(p.b + (1.0 - p.b));
@@ -158,22 +173,17 @@ __attribute__((target("avx"))) std::size_t Steel02::computeFourAtOnce(const Stat
   const __m256d epsy = _mm256_set1_pd(epsy_);
   const __m256d R0 = _mm256_set1_pd(p.R0), cR1 = _mm256_set1_pd(p.cR1), cR2 = _mm256_set1_pd(p.cR2);
 
-  std::size_t i = 0;
-  for (; i + 4 <= n; i += 4) {
-    const State* c = committed + i;
-    const double* f0 = lanes::fields(c[0]);
-    const double* f1 = lanes::fields(c[1]);
-    const double* f2 = lanes::fields(c[2]);
-    const double* f3 = lanes::fields(c[3]);
-    __m256d cStrain, epsR, invSpan, linearLimit, sig0, sigR, R, cStress;
-    lanes::transpose(_mm256_loadu_pd(f0), _mm256_loadu_pd(f1), _mm256_loadu_pd(f2),
-                     _mm256_loadu_pd(f3), cStrain, epsR, invSpan, linearLimit);
-    lanes::transpose(_mm256_loadu_pd(f0 + 4), _mm256_loadu_pd(f1 + 4), _mm256_loadu_pd(f2 + 4),
-                     _mm256_loadu_pd(f3 + 4), sig0, sigR, R, cStress);
-    const __m256d kon = _mm256_set_pd(c[3].kon, c[2].kon, c[1].kon, c[0].kon);
+  for (std::size_t i = 0; i < n; i += 4) {
+    const StateFours<State>& c = committed[i / 4];
+    const __m256d cStrain = lanes::load(c, kStrain);
+    __m256d epsR = lanes::load(c, kEpsR), invSpan = lanes::load(c, kInvSpan);
+    __m256d linearLimit = lanes::load(c, kLinearLimit), sig0 = lanes::load(c, kSig0);
+    __m256d sigR = lanes::load(c, kSigR), R = lanes::load(c, kR);
+    const __m256d kon = lanes::load(c, kKon);
+    const __m256d strain = lanes::strainsAt(strains, i, n, c.row[kStrain]);
 
     // computeTrial's shifted strains and the increment that decides a reversal.
-    const __m256d eps = _mm256_add_pd(_mm256_loadu_pd(strains + i), epsIni);
+    const __m256d eps = _mm256_add_pd(strain, epsIni);
     const __m256d epsP = _mm256_add_pd(cStrain, epsIni);
     const __m256d deps = _mm256_sub_pd(eps, epsP);
     const __m256d isLoading = _mm256_cmp_pd(kon, loading, _CMP_EQ_OQ);
@@ -192,9 +202,8 @@ __attribute__((target("avx"))) std::size_t Steel02::computeFourAtOnce(const Stat
           compressionShiftless, _mm256_and_pd(isLoading, _mm256_cmp_pd(deps, zero, _CMP_LT_OQ)));
       const __m256d reversing = _mm256_or_pd(toTension, toCompression);
       if (any(reversing)) {
-        __m256d cTangent, epsMin, epsMax, epsPl;
-        lanes::transpose(_mm256_loadu_pd(f0 + 8), _mm256_loadu_pd(f1 + 8), _mm256_loadu_pd(f2 + 8),
-                         _mm256_loadu_pd(f3 + 8), cTangent, epsMin, epsMax, epsPl);
+        const __m256d cStress = lanes::load(c, kStress);
+        const __m256d epsMin = lanes::load(c, kEpsMin), epsMax = lanes::load(c, kEpsMax);
         // epsMin and epsMax move only into the shift, which is 1 here; epsPl is the extreme
         // reached in the other direction, before this reversal.
         const __m256d newEps0 = _mm256_div_pd(
@@ -282,22 +291,58 @@ __attribute__((target("avx"))) std::size_t Steel02::computeFourAtOnce(const Stat
       stress = pick(curve, _mm256_add_pd(_mm256_mul_pd(sigStar, span), sigR), stress);
       tangent = pick(curve, _mm256_mul_pd(_mm256_mul_pd(eStar, span), invSpan), tangent);
     }
-    lanes::store(out, i, stress, tangent);
+    lanes::store(out, i, n, stress, tangent);
     const int updatedLanes = _mm256_movemask_pd(updated);
-    for (int l = 0; l < 4; ++l) {
+    for (std::size_t l = 0; l < 4 && i + l < n; ++l) {
       if (updatedLanes >> l & 1) continue;
       State trial;
-      static_cast<void>(computeTrialWith<steel02::LanePowers>(c[l], trial, strains[i + l]));
+      static_cast<void>(computeTrialWith<steel02::LanePowers>(c.get(l), trial, strains[i + l]));
       out.set(i + l, trial.stress, trial.tangent);
     }
+  }
+}
+
+// commitTrial, lane by lane: a fiber that stays on its branch (kon 1 and a strain increment not
+// below zero, kon 2 and one not above: followBranch changes nothing) takes the trial's strain,
+// stress and tangent; the others of its four (a reversal, a first excursion) go one at a time.
+__attribute__((target("avx"))) std::size_t Steel02::commitFourAtOnce(StateFours<State>* states,
+                                                                     const double* strains,
+                                                                     const Responses& trial,
+                                                                     std::size_t n) const {
+  const __m256d epsIni = _mm256_set1_pd(epsIni_), zero = _mm256_setzero_pd();
+  const __m256d loading = _mm256_set1_pd(1.0), unloading = _mm256_set1_pd(2.0);
+  std::size_t i = 0;
+  for (; i + 4 <= n; i += 4) {
+    StateFours<State>& s = states[i / 4];
+    const __m256d cStrain = lanes::load(s, kStrain), kon = lanes::load(s, kKon);
+    const __m256d newStrain = _mm256_loadu_pd(strains + i);
+    // commitTrial's increment: (strain + epsIni) - (committed strain + epsIni).
+    const __m256d deps =
+        _mm256_sub_pd(_mm256_add_pd(newStrain, epsIni), _mm256_add_pd(cStrain, epsIni));
+    const __m256d steady = _mm256_or_pd(_mm256_and_pd(_mm256_cmp_pd(kon, loading, _CMP_EQ_OQ),
+                                                      _mm256_cmp_pd(deps, zero, _CMP_NLT_UQ)),
+                                        _mm256_and_pd(_mm256_cmp_pd(kon, unloading, _CMP_EQ_OQ),
+                                                      _mm256_cmp_pd(deps, zero, _CMP_NGT_UQ)));
+    lanes::store(s, kStrain, lanes::pick(steady, newStrain, cStrain));
+    lanes::store(s, kStress,
+                 lanes::pick(steady, _mm256_loadu_pd(trial.stress + i), lanes::load(s, kStress)));
+    lanes::store(s, kTangent,
+                 lanes::pick(steady, _mm256_loadu_pd(trial.tangent + i), lanes::load(s, kTangent)));
+    const int steadyLanes = _mm256_movemask_pd(steady);
+    if (steadyLanes == 0xF) continue;
+    for (std::size_t l = 0; l < 4; ++l)
+      if (!(steadyLanes >> l & 1))
+        lanes::commitOneByOne(*this, states, strains, trial, i + l, i + l + 1);
   }
   return i;
 }
 
 #else
 
-std::size_t Steel02::computeFourAtOnce(const State*, const double*, const Responses&,
-                                       std::size_t) const {
+void Steel02::computeFourAtOnce(const StateFours<State>*, const double*, const Responses&,
+                                std::size_t) const {}
+std::size_t Steel02::commitFourAtOnce(StateFours<State>*, const double*, const Responses&,
+                                      std::size_t) const {
   return 0;
 }
 

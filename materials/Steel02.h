@@ -65,8 +65,9 @@ inline double linearLimit(double R) {
 }  // namespace steel02
 
 /// History of Steel02 (strains are the material's own, including the initial strain sigInit/E).
-/// The fields an update on the current branch reads come first, as two rows of four doubles: the
-/// four-lane update (computeTrials) loads them so.
+/// The fields an update on the current branch reads come first, on the four cache lines of a
+/// StateFours that a pass reads; the rest (the stress and tangent, which a commit writes, and
+/// the extremes, which only a reversal reads) on the three lines after them.
 struct Steel02State {
   double strain = 0.0;   ///< strain as given to setTrialStrain
   double epsR = 0.0;     ///< strain at the last reversal
@@ -74,17 +75,18 @@ struct Steel02State {
   /// Below this |eps*| the branch is its initial line to round-off: |eps*|^R < e^-38 (below half
   /// an ulp of 1), so 1 + |eps*|^R and its power 1/R are exactly 1 (steel02::linearLimit).
   double linearLimit = 0.0;
-  double sig0 = 0.0;     ///< stress where the asymptotes meet (at eps0)
-  double sigR = 0.0;     ///< stress at the last reversal
-  double R = 0.0;        ///< curvature of the current branch (a function of epsPl and eps0)
+  double sig0 = 0.0;  ///< stress where the asymptotes meet (at eps0)
+  double sigR = 0.0;  ///< stress at the last reversal
+  double R = 0.0;     ///< curvature of the current branch (a function of epsPl and eps0)
+  /// 0 virgin, 1 loading (towards tension), 2 towards compression, 3 virgin at sigInit (a double,
+  /// so that the state is all doubles)
+  double kon = 0.0;
   double stress = 0.0;   ///< stress
   double tangent = 0.0;  ///< d(stress)/d(strain)
   double epsMin = 0.0;   ///< most negative reversal strain (starts at -epsy)
   double epsMax = 0.0;   ///< most positive reversal strain (starts at +epsy)
   double epsPl = 0.0;    ///< previous extreme strain in the opposite direction (sets xi)
   double eps0 = 0.0;     ///< strain where the elastic and hardening asymptotes meet
-  int kon =
-      0;  ///< 0 virgin, 1 loading (towards tension), 2 towards compression, 3 virgin at sigInit
 };
 
 /// Menegotto-Pinto steel with Filippou isotropic hardening (Menegotto & Pinto 1973; Filippou,
@@ -130,15 +132,22 @@ class Steel02 final : public StatefulUniaxial<Steel02, Steel02State> {
   /// keeps only its fibers' trial stress and tangent, and commits with this.
   void commitTrial(State& state, double strain, double stress, double tangent) const;
   /// The updates of n fibers: out.stress[i] and out.tangent[i] are the trial stress and tangent at
-  /// strains[i] from committed[i], bit for bit those of computeTrialWith<steel02::LanePowers>
-  /// where the processor has AVX and n >= 4 (the fibers on a branch four at a time, their powers
-  /// by libmvec's four-lane functions: the pushover benchmark 7 % faster; a fiber on its first
-  /// excursion, or reversing where a1 or a3 shifts the asymptote, on its own), else those of
-  /// computeTrial. (Fewer than four, a plane section's bars at two heights, go one at a time with
-  /// the C library's powers: their results wait on each power, and glibc's one-value functions
-  /// answer sooner; through the four-lane ones the RC frame benchmark took 4 % longer.)
-  void computeTrials(const State* committed, const double* strains, const Responses& out,
-                     std::size_t n) const;
+  /// strains[i] from fiber i of `committed`, bit for bit those of
+  /// computeTrialWith<steel02::LanePowers> where the processor has AVX and n >= 4 (the fibers on
+  /// a branch four at a time, their powers by libmvec's four-lane functions: the pushover
+  /// benchmark 7 % faster; a fiber on its first excursion, or reversing where a1 or a3 shifts the
+  /// asymptote, on its own), else those of computeTrial. (Fewer than four, a plane section's bars
+  /// at two heights, go one at a time with the C library's powers: their results wait on each
+  /// power, and glibc's one-value functions answer sooner; through the four-lane ones the RC
+  /// frame benchmark took 4 % longer.)
+  void computeTrials(const StateFours<State>* committed, const double* strains,
+                     const Responses& out, std::size_t n) const;
+  /// commitTrial of n fibers: fiber i of `states` committed at strains[i] with trial.stress[i]
+  /// and trial.tangent[i], bit for bit. Where the processor has AVX, four fibers at a time that
+  /// stay on their branches store only their strain, stress and tangent rows (two cache lines of
+  /// the four's seven); a fiber that reverses or leaves its virgin point goes one at a time.
+  void commitTrials(StateFours<State>* states, const double* strains, const Responses& trial,
+                    std::size_t n) const;
   /// Whether computeTrials takes four fibers at a time on this processor.
   static bool updatesFourAtOnce() { return lanes::available(); }
   /// The virgin state.
@@ -157,9 +166,12 @@ class Steel02 final : public StatefulUniaxial<Steel02, Steel02State> {
   /// reversal. False when the material stays at its virgin point (s then has its stress and
   /// tangent).
   bool followBranch(State& s, double epsP, double sigP, double deps) const;
-  /// computeTrials of the first n - n % 4 fibers, four at a time (AVX); returns their count.
-  std::size_t computeFourAtOnce(const State* committed, const double* strains, const Responses& out,
-                                std::size_t n) const;
+  /// computeTrials of n >= 4 fibers, four at a time (AVX), the last one to three in their own four.
+  void computeFourAtOnce(const StateFours<State>* committed, const double* strains,
+                         const Responses& out, std::size_t n) const;
+  /// commitTrials of the first n - n % 4 fibers, four at a time (AVX); returns their count.
+  std::size_t commitFourAtOnce(StateFours<State>* states, const double* strains,
+                               const Responses& trial, std::size_t n) const;
   Params params_;
   double epsy_ = 0.0;    ///< Fy / E
   double Esh_ = 0.0;     ///< b E

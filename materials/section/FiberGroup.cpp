@@ -335,37 +335,30 @@ class TypedFiberGroup final : public FiberGroup {
   std::type_index type_ = std::type_index(typeid(void));
 };
 
-/// Fibers of one material (one parameter set, the prototype's) kept as arrays of states; the
-/// update is M::computeTrial. Fibers of another material of the same class (other parameters) go
-/// to another group.
+/// Fibers of one material (one parameter set, the prototype's) kept as an array of states,
+/// four fibers' fields side by side (StateFours); the update is the law's computeTrials, four
+/// fibers at a time.
 ///
-/// A law with `commitTrial` (the state its computeTrial leaves, formed from the trial stress and
-/// tangent: only the history updates) keeps, besides its committed states, just the trial stress
-/// and tangent of each fiber, so a pass writes 16 bytes a fiber instead of a whole state. A commit
-/// is then only noted; the next pass folds it in (commitTrial at the strains of the committed
-/// trial) as it reads each state anyway. On a model whose fiber states do not fit in the cache
-/// the passes are bound by memory traffic, and this saves the state writes of every pass and a
-/// whole commit pass a step. Other laws keep a trial state array and swap it with the committed
-/// one at commit.
+/// The law's `commitTrial` forms the state its computeTrial leaves from the trial stress and
+/// tangent (only the history updates), so the group keeps, besides its committed states, just the
+/// trial stress and tangent of each fiber: a pass writes 16 bytes a fiber instead of a whole
+/// state. A commit is then only noted; the next pass folds it in (commitTrials at the strains of
+/// the committed pass) as it reads each state anyway. On a model whose fiber states do not fit in
+/// the cache the passes are bound by memory traffic, and this saves the state writes of every
+/// pass and a whole commit pass a step.
 template <class M>
 class StateFiberGroup final : public FiberGroup {
  public:
   using State = typename M::State;
-  static constexpr bool kKeepsResponse = requires(const M& m, State& s) {
-    m.commitTrial(s, 0.0, 0.0, 0.0);
-  };
-  /// A law whose computeTrials updates a whole array of fibers in one call (several at once);
-  /// the group then keeps only the responses, so the law must commit from them too.
-  static constexpr bool kUpdatesArrays =
-      kKeepsResponse &&
-      requires(const M& m, const State* c, const double* e, const Responses& out) {
-    m.computeTrials(c, e, out, std::size_t{0});
-  };
-  /// A law that also commits a whole array of fibers in one call (several at once).
-  static constexpr bool kCommitsArrays =
-      kUpdatesArrays && requires(const M& m, State* s, const double* e, const Responses& trial) {
-    m.commitTrials(s, e, trial, std::size_t{0});
-  };
+  using Fours = StateFours<State>;
+  static_assert(
+      requires(const M& m, State& s, const Fours* c, Fours* f, const double* e,
+               const Responses& r) {
+        m.commitTrial(s, 0.0, 0.0, 0.0);
+        m.computeTrials(c, e, r, std::size_t{0});
+        m.commitTrials(f, e, r, std::size_t{0});
+      },
+      "a law of this group updates and commits arrays of fours");
   /// `prototype` is the material object whose fibers this group holds (identity decides
   /// membership) and whose parameters it uses.
   explicit StateFiberGroup(const M& prototype) : law_(prototype), source_(&prototype) {}
@@ -378,13 +371,11 @@ class StateFiberGroup final : public FiberGroup {
 
   void add(double y, double z, double area, const UniaxialMaterial& /*prototype*/) override {
     addGeometry(y, z, area);
-    committed_.push_back(law_.virginState());
-    if constexpr (kKeepsResponse) {
-      trialStress_.push_back(0.0);
-      trialTangent_.push_back(0.0);
-    } else {
-      trial_.push_back(State{});
-    }
+    // A new four with every lane virgin (the lanes past the last fiber stay so).
+    if (count_ % 4 == 0) committed_.push_back(Fours::filledWith(law_.virginState()));
+    ++count_;
+    trialStress_.push_back(0.0);
+    trialTangent_.push_back(0.0);
   }
   bool accepts(const UniaxialMaterial& material) const override { return &material == source_; }
 
@@ -405,29 +396,23 @@ class StateFiberGroup final : public FiberGroup {
           [e0](std::size_t) {
             return StressTangent{0.0, e0};
           },
-          committed_.size(), sums);
+          count_, sums);
     } else {
       addOneByOne<false>(
           g.y.data(), g.z.data(), g.area.data(), [this](std::size_t i) { return response(i); },
-          committed_.size(), sums);
+          count_, sums);
     }
   }
   // Every setTrial writes the trial of all fibers from the committed states, so a revert only
   // has to forget the trial.
   void commitState() override {
-    if (phase_ != Phase::Trial) return;
-    if constexpr (kKeepsResponse) {
-      phase_ = Phase::CommitPending;
-    } else {
-      std::swap(committed_, trial_);
-      phase_ = Phase::Committed;
-    }
+    if (phase_ == Phase::Trial) phase_ = Phase::CommitPending;
   }
   void revertToLastCommit() override {
     if (phase_ == Phase::Trial) phase_ = Phase::Committed;
   }
   void revertToStart() override {
-    std::fill(committed_.begin(), committed_.end(), law_.virginState());
+    std::fill(committed_.begin(), committed_.end(), Fours::filledWith(law_.virginState()));
     phase_ = Phase::Committed;
   }
   std::unique_ptr<FiberGroup> clone() const override {
@@ -449,79 +434,56 @@ class StateFiberGroup final : public FiberGroup {
 
   template <bool Planar>
   Status sweep(double e0, double kz, double ky, FiberSums& sums) {
-    if (kKeepsResponse && phase_ == Phase::CommitPending)
+    if (phase_ == Phase::CommitPending)
       sweepFolding<Planar, true>(e0, kz, ky, sums);
     else
       sweepFolding<Planar, false>(e0, kz, ky, sums);
     return Status::Ok;
   }
 
-  /// One pass: the updates, inlined, then the sums of the responses they just wrote (in L1: a
-  /// group is one material of one section). Apart, the update loop has the registers to itself
-  /// and the sums run over two small arrays: 7 % less time on the fiber bridges than one loop
-  /// that did both (on the RC frame, whose groups are small, within 1 %); the sums in the order
-  /// PartialSums describes. A plane section skips the z terms (a third of the sums). `Fold`: first
-  /// commit each fiber's pending trial into its state. A law that keeps responses gets the pass's
-  /// strains a block at a time; one that updates arrays (the concretes and Steel02, four fibers at
-  /// a time) then writes the responses in its own loop.
+  /// One pass: the updates, then the sums of the responses they just wrote (in L1: a group is one
+  /// material of one section). Apart, the update loop has the registers to itself and the sums
+  /// run over two small arrays: 7 % less time on the fiber bridges than one loop that did both
+  /// (on the RC frame, whose groups are small, within 1 %); the sums in the order PartialSums
+  /// describes. A plane section skips the z terms (a third of the sums). `Fold`: first commit
+  /// each fiber's pending trial into its state. The strains are formed a block at a time.
   template <bool Planar, bool Fold>
   void sweepFolding(double e0, double kz, double ky, FiberSums& sums) {
     const Geometry& g = geometry();
     const double* ys = g.y.data();
     const double* zs = g.z.data();
     const double* as = g.area.data();
-    State* committed = committed_.data();
-    const std::size_t n = committed_.size();
+    const std::size_t n = count_;
     // The only failure of these laws is a non-finite stress or tangent, and it makes the sums
     // non-finite too: the caller checks those once instead of every fiber here.
-    if constexpr (kKeepsResponse) {
-      // Block by block, the pending commits (at the strains of the committed pass, formed again
-      // from its section strains) and then the updates at this pass's strains: the strains live
-      // in a small buffer in L1 instead of an array a section long that each pass would write
-      // and the next fold read back (on a model whose states do not fit in the cache, 16 of the
-      // about 130 bytes a pass moves a fiber). Every block but the last is a whole number of
-      // fours and the last has at least four fibers, so the fibers go four at a time, and the
-      // ones after the fours as the last four again, as they would in one call (Steel02's powers
-      // four at a time may differ in the last bits from its powers one at a time).
-      const Responses trial{trialStress_.data(), trialTangent_.data()};
-      alignas(32) double strains[kStrainBlock + 3];
-      for (std::size_t start = 0, count = 0; start < n; start += count) {
-        count = n - start <= kStrainBlock + 3 ? n - start : kStrainBlock;
-        const double* y = ys + start;
-        const double* z = zs + start;
-        State* states = committed + start;
-        const Responses block = trial.from(start);
-        if constexpr (Fold) {
-          if (planar_)
-            fiberStrains<true>(e0_, kz_, ky_, y, z, strains, count);
-          else
-            fiberStrains<false>(e0_, kz_, ky_, y, z, strains, count);
-          if constexpr (kCommitsArrays) {
-            law_.commitTrials(states, strains, block, count);
-          } else {
-            for (std::size_t i = 0; i < count; ++i)
-              law_.commitTrial(states[i], strains[i], block.stress[i], block.tangent[i]);
-          }
-        }
-        fiberStrains<Planar>(e0, kz, ky, y, z, strains, count);
-        if constexpr (kUpdatesArrays)
-          law_.computeTrials(states, strains, block, count);
+    //
+    // Block by block, the pending commits (at the strains of the committed pass, formed again
+    // from its section strains) and then the updates at this pass's strains: the strains live
+    // in a small buffer in L1 instead of an array a section long that each pass would write
+    // and the next fold read back (on a model whose states do not fit in the cache, 16 of the
+    // about 130 bytes a pass moved a fiber). Every block but the last is a whole number of
+    // fours and the last has at least four fibers, so the fibers go four at a time as they would
+    // in one call (Steel02's powers four at a time may differ in the last bits from its powers
+    // one at a time).
+    const Responses trial{trialStress_.data(), trialTangent_.data()};
+    alignas(32) double strains[kStrainBlock + 3];
+    for (std::size_t start = 0, count = 0; start < n; start += count) {
+      count = n - start <= kStrainBlock + 3 ? n - start : kStrainBlock;
+      const double* y = ys + start;
+      const double* z = zs + start;
+      Fours* states = committed_.data() + start / 4;
+      const Responses block = trial.from(start);
+      if constexpr (Fold) {
+        if (planar_)
+          fiberStrains<true>(e0_, kz_, ky_, y, z, strains, count);
         else
-          lanes::computeOneByOne(law_, states, strains, block, 0, count);
+          fiberStrains<false>(e0_, kz_, ky_, y, z, strains, count);
+        law_.commitTrials(states, strains, block, count);
       }
-      addResponses<Planar>(ys, zs, as, trial.stress, trial.tangent, n, sums);
-    } else {
-      State* trial = trial_.data();
-      for (std::size_t i = 0; i < n; ++i)
-        static_cast<void>(law_.computeTrial(committed[i], trial[i],
-                                            fiberStrain<Planar>(e0, kz, ky, ys[i], zs[i])));
-      addOneByOne<Planar>(
-          ys, zs, as,
-          [trial](std::size_t i) {
-            return StressTangent{trial[i].stress, trial[i].tangent};
-          },
-          n, sums);
+      fiberStrains<Planar>(e0, kz, ky, y, z, strains, count);
+      law_.computeTrials(states, strains, block, count);
     }
+    addResponses<Planar>(ys, zs, as, trial.stress, trial.tangent, n, sums);
     e0_ = e0;
     kz_ = kz;
     ky_ = ky;
@@ -535,37 +497,34 @@ class StateFiberGroup final : public FiberGroup {
     return planar_ ? fiberStrain<true>(e0_, kz_, ky_, g.y[i], g.z[i])
                    : fiberStrain<false>(e0_, kz_, ky_, g.y[i], g.z[i]);
   }
+  /// Fiber i's committed state as it is stored (without a pending commit).
+  State stored(std::size_t i) const { return stateOf(committed_.data(), i); }
   /// The stress and tangent the fibers are at: the trial ones after a setTrial (also once
   /// committed), the committed states' after a revert.
   Response response(std::size_t i) const {
-    if (phase_ == Phase::Committed) return {committed_[i].stress, committed_[i].tangent};
-    if constexpr (kKeepsResponse)
-      return {trialStress_[i], trialTangent_[i]};
-    else
-      return {trial_[i].stress, trial_[i].tangent};
-  }
-  /// Fiber i's whole current state (for responses; formed again when only the response is kept).
-  State currentState(std::size_t i) const {
-    if (phase_ == Phase::Committed) return committed_[i];
-    if constexpr (kKeepsResponse) {
-      State t = committed_[i];
-      if (phase_ == Phase::CommitPending) {
-        law_.commitTrial(t, trialStrain(i), trialStress_[i], trialTangent_[i]);
-        return t;
-      }
-      static_cast<void>(law_.computeTrial(committed_[i], t, trialStrain(i)));
-      return t;
-    } else {
-      return trial_[i];
+    if (phase_ == Phase::Committed) {
+      const State c = stored(i);
+      return {c.stress, c.tangent};
     }
+    return {trialStress_[i], trialTangent_[i]};
+  }
+  /// Fiber i's whole current state (for responses; formed again from the committed one).
+  State currentState(std::size_t i) const {
+    State t = stored(i);
+    if (phase_ == Phase::Committed) return t;
+    if (phase_ == Phase::CommitPending) {
+      law_.commitTrial(t, trialStrain(i), trialStress_[i], trialTangent_[i]);
+      return t;
+    }
+    static_cast<void>(law_.computeTrial(stored(i), t, trialStrain(i)));
+    return t;
   }
 
   M law_;                           ///< parameters (its own state is not used)
   const UniaxialMaterial* source_;  ///< only compared with, while the section is built
-  std::vector<State> committed_;
-  std::vector<State> trial_;  ///< the fibers' trial states (laws that keep whole states)
-  /// The fibers' trial stresses and tangents (laws that keep responses; lanes::store writes four
-  /// of each as one vector)
+  std::vector<Fours> committed_;    ///< the fibers' committed states, four to an element
+  std::size_t count_ = 0;           ///< fibers
+  /// The fibers' trial stresses and tangents (lanes::store writes four of each as one vector)
   std::vector<double> trialStress_, trialTangent_;
   double e0_ = 0.0, kz_ = 0.0, ky_ = 0.0;  ///< section strains of the last setTrial
   bool planar_ = false;                    ///< the last setTrial was a plane one

@@ -11,6 +11,7 @@
 #include <utility>
 #include <vector>
 
+#include "materials/FourLanes.h"
 #include "materials/StatefulUniaxial.h"
 
 namespace dabs::materials::testing {
@@ -33,6 +34,16 @@ auto ownUpdate(const Law& law) {
   };
 }
 
+/// The first n states as the array of fours computeTrials and commitTrials read (the lanes past
+/// the last state hold `padding`).
+template <class State>
+std::vector<StateFours<State>> asFours(const std::vector<State>& states, std::size_t n,
+                                       const State& padding) {
+  std::vector<StateFours<State>> fours((n + 3) / 4, StateFours<State>::filledWith(padding));
+  for (std::size_t i = 0; i < n; ++i) fours[i / 4].set(i % 4, states[i]);
+  return fours;
+}
+
 /// Expects law.computeTrials over the first n fibers to give each fiber the stress and tangent of
 /// `reference(committed, trial, strain)` (the law's computeTrial unless said) to the bit.
 template <class Law, class Reference>
@@ -40,8 +51,9 @@ void expectEachFibersOwnUpdate(const Law& law, const std::vector<typename Law::S
                                const std::vector<double>& strains, std::size_t n,
                                const Reference& reference) {
   std::vector<double> stresses(n), tangents(n);
-  law.computeTrials(committed.data(), strains.data(), Responses{stresses.data(), tangents.data()},
-                    n);
+  // Lanes past the last fiber hold a state of the walk, not a virgin one (nobody reads them).
+  const auto fours = asFours(committed, n, committed.back());
+  law.computeTrials(fours.data(), strains.data(), Responses{stresses.data(), tangents.data()}, n);
   SCOPED_TRACE(::testing::Message() << "group of " << n);
   for (std::size_t i = 0; i < n; ++i) {
     typename Law::State trial;
@@ -107,14 +119,22 @@ void expectEachFibersOwnCommit(const Law& law, const std::vector<typename Law::S
     stresses[i] = trial.stress;
     tangents[i] = trial.tangent;
   }
-  std::vector<State> states(committed.begin(), committed.begin() + static_cast<long>(n));
-  law.commitTrials(states.data(), strains.data(), Responses{stresses.data(), tangents.data()}, n);
+  auto fours = asFours(committed, n, committed.back());
+  law.commitTrials(fours.data(), strains.data(), Responses{stresses.data(), tangents.data()}, n);
   SCOPED_TRACE(::testing::Message() << "commit of a group of " << n);
+  // The lanes past the last fiber are left as they were.
+  using Bits = std::array<std::uint64_t, sizeof(State) / 8>;
+  const auto padding = std::bit_cast<Bits>(committed.back());
+  for (std::size_t i = n; i % 4 != 0; ++i) {
+    const auto lane = std::bit_cast<Bits>(stateOf(fours.data(), i));
+    EXPECT_EQ(lane, padding) << "lane " << i % 4 << " past the last fiber";
+  }
   for (std::size_t i = 0; i < n; ++i) {
     State one = committed[i];
     law.commitTrial(one, strains[i], stresses[i], tangents[i]);
-    const auto got = std::bit_cast<std::array<std::uint64_t, sizeof(State) / 8>>(states[i]);
-    const auto expected = std::bit_cast<std::array<std::uint64_t, sizeof(State) / 8>>(one);
+    const auto got =
+        std::bit_cast<std::array<std::uint64_t, sizeof(State) / 8>>(stateOf(fours.data(), i));
+    const auto expected = std::bit_cast<Bits>(one);
     for (std::size_t k = 0; k < got.size(); ++k)
       EXPECT_EQ(got[k], expected[k]) << "fiber " << i << " field " << k << " strain " << strains[i];
   }

@@ -194,7 +194,9 @@ TEST(Steel02Test, CommitFromTrialResponseEqualsTheTrialState) {
 // states from walks of growing cycles (materials below), each with strains that stay on the
 // branch (the initial line, either side of its limit, the binomial series, the power), that
 // reverse it, or that start the first branch, shuffled so that the four lanes mix them, and a
-// count not a multiple of four.
+// count not a multiple of four. commitTrials (the fold of a commit; four at a time where every
+// fiber of the four stays on its branch) must leave each state as commitTrial does, on the same
+// fibers.
 TEST(Steel02Test, ArraysOfFibersGiveEachFibersOwnUpdate) {
   // The usual curvature with an initial stress; the same with isotropic hardening (whose
   // reversals shift the asymptotes: those fibers go one by one), both ways and each way alone; a
@@ -268,6 +270,10 @@ TEST(Steel02Test, ArraysOfFibersGiveEachFibersOwnUpdate) {
     const std::size_t n = testing::expectEveryGroupSize(m, committed, strains, inFours);
     for (const std::size_t few : {std::size_t{1}, std::size_t{2}, std::size_t{3}})
       testing::expectEachFibersOwnUpdate(m, committed, strains, few);
+    {
+      SCOPED_TRACE("commits");
+      testing::expectEveryGroupSizeCommits(m, committed, strains);
+    }
     for (std::size_t i = 0; i < n; ++i) {
       const auto& c = committed[i];
       const double e = strains[i];

@@ -10,6 +10,7 @@
 
 #include "materials/Concrete02.h"
 #include "materials/ENT.h"
+#include "materials/FourLanes.h"
 #include "materials/Elastic.h"
 #include "materials/ElasticPP.h"
 #include "materials/Steel02.h"
@@ -442,7 +443,9 @@ TEST(FiberSectionTest, GroupsLongerThanAStrainBlockUpdateAsInOneCall) {
     for (std::size_t j = 0; j < n; ++j)
       fibers.push_back({-0.35 + 0.7 * double(j) / double(n), 0.0, 0.0005, &steel});
     FiberSection<2> sec(1, fibers, 0.0);
-    std::vector<Steel02::State> states(n, steel.virginState());
+    // The states as Steel02::computeTrials takes them, every lane virgin to begin with.
+    std::vector<StateFours<Steel02::State>> states(
+        (n + 3) / 4, StateFours<Steel02::State>::filledWith(steel.virginState()));
     std::vector<double> strains(n), stresses(n), tangents(n);
     Eigen::VectorXd e(2);
     int onCurve = 0;
@@ -450,15 +453,18 @@ TEST(FiberSectionTest, GroupsLongerThanAStrainBlockUpdateAsInOneCall) {
       e << 0.5 * epsY, curvature * epsY;
       ASSERT_TRUE(ok(sec.setTrialDeformation(e)));
       for (std::size_t j = 0; j < n; ++j) strains[j] = e(0) - fibers[j].y * e(1);
-      steel.computeTrials(states.data(), strains.data(), Responses{stresses.data(), tangents.data()},
-                          n);
+      steel.computeTrials(states.data(), strains.data(),
+                          Responses{stresses.data(), tangents.data()}, n);
       for (std::size_t j = 0; j < n; ++j) {
         ASSERT_EQ(sec.fiberStress(static_cast<int>(j)), stresses[j]) << "bar " << j;
         onCurve += std::fabs(stresses[j]) < 0.999 * 4e5 && std::fabs(tangents[j]) < 0.99 * 2e8;
       }
       sec.commitState();
-      for (std::size_t j = 0; j < n; ++j)
-        steel.commitTrial(states[j], strains[j], stresses[j], tangents[j]);
+      for (std::size_t j = 0; j < n; ++j) {
+        Steel02::State s = stateOf(states.data(), j);
+        steel.commitTrial(s, strains[j], stresses[j], tangents[j]);
+        states[j / 4].set(j % 4, s);
+      }
     }
     EXPECT_GT(onCurve, static_cast<int>(n));  // many bars off the straight parts of their branches
   }
