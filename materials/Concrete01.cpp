@@ -40,12 +40,12 @@ Concrete01::State Concrete01::initialState() const {
   return s;
 }
 
-void Concrete01::computeTrials(const StateFours<State>* committed, const double* strains,
+void Concrete01::computeTrials(const StateFours<State>* committed, const FiberStrains& strains,
                                const Responses& out, std::size_t n) const {
   lanes::computeInFours(*this, &Concrete01::computeFourAtOnce, committed, strains, out, n);
 }
 
-void Concrete01::commitTrials(StateFours<State>* states, const double* strains,
+void Concrete01::commitTrials(StateFours<State>* states, const FiberStrains& strains,
                               const Responses& trial, std::size_t n) const {
   lanes::commitInFours(*this, &Concrete01::commitFourAtOnce, states, strains, trial, n);
 }
@@ -72,7 +72,7 @@ static_assert(std::is_standard_layout_v<Concrete01State> && sizeof(Concrete01Sta
 // order (so the same bits) wherever one of the four lanes takes it, and each lane keeps the
 // result of its own branch. Comparisons with a NaN are false here as there.
 __attribute__((target("avx"))) void Concrete01::computeFourAtOnce(
-    const StateFours<State>* committed, const double* strains, const Responses& out,
+    const StateFours<State>* committed, const FiberStrains& strains, const Responses& out,
     std::size_t n) const {
   const auto& p = params_;
   const __m256d Ec0 = _mm256_set1_pd(Ec0_), descentSlope = _mm256_set1_pd(descentSlope_);
@@ -89,7 +89,7 @@ __attribute__((target("avx"))) void Concrete01::computeFourAtOnce(
     const StateFours<State>& c = committed[i / 4];
     const __m256d cStrain = lanes::load(c, kStrain), cStress = lanes::load(c, kStress);
     const __m256d cTangent = lanes::load(c, kTangent);
-    const __m256d strain = lanes::strainsAt(strains, i, n, c.row[kStrain]);
+    const __m256d strain = lanes::strainsAt(strains, i, n);
     const __m256d unchanged = _mm256_cmp_pd(
         _mm256_andnot_pd(signBit, _mm256_sub_pd(strain, cStrain)), epsilon, _CMP_LT_OQ);
     const __m256d tensile = _mm256_cmp_pd(strain, zero, _CMP_GT_OQ);
@@ -170,45 +170,81 @@ __attribute__((target("avx"))) void Concrete01::computeFourAtOnce(
   }
 }
 
-// commitTrial, lane by lane: the trial's strain, stress and tangent in every lane whose strain
-// moved (a lane that did not keeps them). Four fibers of which one reaches a new most compressive
-// strain (the envelope and a new unloading line) go one at a time instead.
-__attribute__((target("avx"))) std::size_t Concrete01::commitFourAtOnce(StateFours<State>* states,
-                                                                        const double* strains,
-                                                                        const Responses& trial,
-                                                                        std::size_t n) const {
+// commitTrial, lane by lane, with its operations in its order: at a new most compressive strain
+// the envelope and the new unloading line (envelope, unload), then the trial's strain, stress and
+// tangent, in every lane whose strain moved; a lane that did not, or lies past the last fiber,
+// keeps its fields.
+__attribute__((target("avx"))) void Concrete01::commitFourAtOnce(StateFours<State>* states,
+                                                                 const FiberStrains& strains,
+                                                                 const Responses& trial,
+                                                                 std::size_t n) const {
+  const auto& p = params_;
   const __m256d epsilon = _mm256_set1_pd(DBL_EPSILON), signBit = _mm256_set1_pd(-0.0);
-  const __m256d zero = _mm256_setzero_pd();
-  std::size_t i = 0;
-  for (; i + 4 <= n; i += 4) {
+  const __m256d minusEpsilon = _mm256_set1_pd(-DBL_EPSILON);
+  const __m256d zero = _mm256_setzero_pd(), two = _mm256_set1_pd(2.0);
+  const __m256d Ec0 = _mm256_set1_pd(Ec0_), descentSlope = _mm256_set1_pd(descentSlope_);
+  const __m256d fpc = _mm256_set1_pd(p.fpc), epsc0 = _mm256_set1_pd(p.epsc0);
+  const __m256d fpcu = _mm256_set1_pd(p.fpcu), epsU = _mm256_set1_pd(p.epsU);
+  // Karsan-Jirsa's zero-stress strain (unload): its two polynomials' coefficients.
+  const __m256d a2 = _mm256_set1_pd(0.145), a1 = _mm256_set1_pd(0.13);
+  const __m256d b1 = _mm256_set1_pd(0.707), b0 = _mm256_set1_pd(0.834);
+  for (std::size_t i = 0; i < n; i += 4) {
     StateFours<State>& s = states[i / 4];
     const __m256d strain = lanes::load(s, kStrain);
-    const __m256d newStrain = _mm256_loadu_pd(strains + i);
-    const __m256d moved = _mm256_cmp_pd(_mm256_andnot_pd(signBit, _mm256_sub_pd(newStrain, strain)),
-                                        epsilon, _CMP_NLT_UQ);
+    const __m256d newStrain = lanes::strainsAt(strains, i, n);
+    const __m256d moved =
+        _mm256_and_pd(lanes::fibersBelow(i, n),
+                      _mm256_cmp_pd(_mm256_andnot_pd(signBit, _mm256_sub_pd(newStrain, strain)),
+                                    epsilon, _CMP_NLT_UQ));
     const __m256d newMinimum = _mm256_and_pd(
         _mm256_and_pd(moved, _mm256_cmp_pd(newStrain, zero, _CMP_NGT_UQ)),
         _mm256_and_pd(_mm256_cmp_pd(newStrain, strain, _CMP_LT_OQ),
                       _mm256_cmp_pd(newStrain, lanes::load(s, kMinStrain), _CMP_LE_OQ)));
     if (lanes::any(newMinimum)) {
-      lanes::commitOneByOne(*this, states, strains, trial, i, i + 4);
-      continue;
+      // commitTrial's envelope and unload at the new most compressive strain.
+      const __m256d eta = _mm256_div_pd(newStrain, epsc0);
+      const __m256d parabolaStress =
+          _mm256_mul_pd(fpc, _mm256_sub_pd(_mm256_mul_pd(two, eta), _mm256_mul_pd(eta, eta)));
+      const __m256d descentStress =
+          _mm256_add_pd(fpc, _mm256_mul_pd(descentSlope, _mm256_sub_pd(newStrain, epsc0)));
+      const __m256d envelopeStress =
+          lanes::pick(_mm256_cmp_pd(newStrain, epsc0, _CMP_GT_OQ), parabolaStress,
+                      lanes::pick(_mm256_cmp_pd(newStrain, epsU, _CMP_GT_OQ), descentStress, fpcu));
+      const __m256d forRatio =
+          lanes::pick(_mm256_cmp_pd(newStrain, epsU, _CMP_LT_OQ), epsU, newStrain);
+      const __m256d etaU = _mm256_div_pd(forRatio, epsc0);
+      const __m256d ratio = lanes::pick(
+          _mm256_cmp_pd(etaU, two, _CMP_LT_OQ),
+          _mm256_add_pd(_mm256_mul_pd(_mm256_mul_pd(a2, etaU), etaU), _mm256_mul_pd(a1, etaU)),
+          _mm256_add_pd(_mm256_mul_pd(b1, _mm256_sub_pd(etaU, two)), b0));
+      const __m256d endStrain = _mm256_mul_pd(ratio, epsc0);
+      const __m256d span = _mm256_sub_pd(newStrain, endStrain);
+      const __m256d elasticSpan = _mm256_div_pd(envelopeStress, Ec0);
+      const __m256d flat = _mm256_cmp_pd(span, minusEpsilon, _CMP_GT_OQ);
+      const __m256d steep = _mm256_andnot_pd(flat, _mm256_cmp_pd(span, elasticSpan, _CMP_LE_OQ));
+      const __m256d newEnd = lanes::pick(flat, endStrain,
+                                         lanes::pick(steep, _mm256_sub_pd(newStrain, span),
+                                                     _mm256_sub_pd(newStrain, elasticSpan)));
+      const __m256d newSlope = lanes::pick(steep, _mm256_div_pd(envelopeStress, span), Ec0);
+      lanes::store(s, kMinStrain, lanes::pick(newMinimum, newStrain, lanes::load(s, kMinStrain)));
+      lanes::store(s, kEndStrain, lanes::pick(newMinimum, newEnd, lanes::load(s, kEndStrain)));
+      lanes::store(s, kUnloadSlope,
+                   lanes::pick(newMinimum, newSlope, lanes::load(s, kUnloadSlope)));
     }
     lanes::store(s, kStrain, lanes::pick(moved, newStrain, strain));
-    lanes::store(s, kStress,
-                 lanes::pick(moved, _mm256_loadu_pd(trial.stress + i), lanes::load(s, kStress)));
-    lanes::store(s, kTangent,
-                 lanes::pick(moved, _mm256_loadu_pd(trial.tangent + i), lanes::load(s, kTangent)));
+    lanes::store(
+        s, kStress,
+        lanes::pick(moved, lanes::loadFibers(trial.stress, i, n), lanes::load(s, kStress)));
+    lanes::store(
+        s, kTangent,
+        lanes::pick(moved, lanes::loadFibers(trial.tangent, i, n), lanes::load(s, kTangent)));
   }
-  return i;
 }
 
 #else
 
-std::size_t Concrete01::commitFourAtOnce(StateFours<State>*, const double*, const Responses&,
-                                         std::size_t) const {
-  return 0;
-}
+void Concrete01::commitFourAtOnce(StateFours<State>*, const double*, const Responses&,
+                                  std::size_t) const {}
 void Concrete01::computeFourAtOnce(const StateFours<State>*, const double*, const Responses&,
                                    std::size_t) const {}
 

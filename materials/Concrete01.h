@@ -55,13 +55,13 @@ class Concrete01 final : public StatefulUniaxial<Concrete01, Concrete01State> {
   /// computeTrial of n fibers: out.stress[i] and out.tangent[i] are the trial stress and tangent at
   /// strains[i] from committed[i], bit for bit. Where the processor has AVX the fibers go four at a
   /// time through every branch one of the four takes, each lane keeping its own result.
-  void computeTrials(const StateFours<State>* committed, const double* strains,
+  void computeTrials(const StateFours<State>* committed, const FiberStrains& strains,
                      const Responses& out, std::size_t n) const;
   /// commitTrial of n fibers: fiber i of `states` committed at strains[i] with trial.stress[i]
   /// and trial.tangent[i], bit for bit. Where the processor has AVX four fibers at a time (the
   /// pass after a commit folds the commit in; one at a time it was a third of that pass's group
   /// work).
-  void commitTrials(StateFours<State>* states, const double* strains, const Responses& trial,
+  void commitTrials(StateFours<State>* states, const FiberStrains& strains, const Responses& trial,
                     std::size_t n) const;
   /// Whether computeTrials takes four fibers at a time on this processor.
   static bool updatesFourAtOnce() { return lanes::available(); }
@@ -78,11 +78,11 @@ class Concrete01 final : public StatefulUniaxial<Concrete01, Concrete01State> {
   void envelope(State& s) const;
   void unload(State& s) const;
   void reload(State& s) const;
-  /// commitTrials of the first n - n % 4 fibers, four at a time (AVX); returns their count.
-  std::size_t commitFourAtOnce(StateFours<State>* states, const double* strains,
-                               const Responses& trial, std::size_t n) const;
-  /// computeTrials of n >= 4 fibers, four at a time (AVX), the last one to three in their own four.
-  void computeFourAtOnce(const StateFours<State>* committed, const double* strains,
+  /// commitTrials four at a time (AVX), the last one to three in their own four.
+  void commitFourAtOnce(StateFours<State>* states, const FiberStrains& strains,
+                        const Responses& trial, std::size_t n) const;
+  /// computeTrials four at a time (AVX), the last one to three in their own four.
+  void computeFourAtOnce(const StateFours<State>* committed, const FiberStrains& strains,
                          const Responses& out, std::size_t n) const;
   Params params_;
   // Constants of the parameters, formed once with the expressions the update used to evaluate

@@ -48,12 +48,12 @@ Concrete02::State Concrete02::initialState() const {
   return s;
 }
 
-void Concrete02::computeTrials(const StateFours<State>* committed, const double* strains,
+void Concrete02::computeTrials(const StateFours<State>* committed, const FiberStrains& strains,
                                const Responses& out, std::size_t n) const {
   lanes::computeInFours(*this, &Concrete02::computeFourAtOnce, committed, strains, out, n);
 }
 
-void Concrete02::commitTrials(StateFours<State>* states, const double* strains,
+void Concrete02::commitTrials(StateFours<State>* states, const FiberStrains& strains,
                               const Responses& trial, std::size_t n) const {
   lanes::commitInFours(*this, &Concrete02::commitFourAtOnce, states, strains, trial, n);
 }
@@ -99,7 +99,7 @@ struct TensionLanes {
 // result of its own branch. A comparison with a NaN is false here as there, so a NaN strain
 // takes the same branch too.
 __attribute__((target("avx"))) void Concrete02::computeFourAtOnce(
-    const StateFours<State>* committed, const double* strains, const Responses& out,
+    const StateFours<State>* committed, const FiberStrains& strains, const Responses& out,
     std::size_t n) const {
   const auto& p = params_;
   const __m256d Ec0 = _mm256_set1_pd(Ec0_);
@@ -124,7 +124,7 @@ __attribute__((target("avx"))) void Concrete02::computeFourAtOnce(
     const __m256d ecmin = lanes::load(c, kEcmin), dept = lanes::load(c, kDept);
     const __m256d sigMin = lanes::load(c, kSigMin), Er = lanes::load(c, kEr);
     const __m256d ept = lanes::load(c, kEpt);
-    const __m256d strain = lanes::strainsAt(strains, i, n, c.row[kStrain]);
+    const __m256d strain = lanes::strainsAt(strains, i, n);
     const __m256d deps = _mm256_sub_pd(strain, cStrain);
     const __m256d unchanged = _mm256_cmp_pd(_mm256_andnot_pd(signBit, deps), epsilon, _CMP_LT_OQ);
     const __m256d newMinimum =
@@ -190,22 +190,24 @@ __attribute__((target("avx"))) void Concrete02::computeFourAtOnce(
 // commitTrial, lane by lane, with its operations in its order: a new most compressive strain
 // (setMinimumStrain's reloading slope and zero-stress strain), else a crack opened further, then
 // the trial's strain, stress and tangent, in every lane whose strain moved; a lane that did not
-// move keeps its fields. A row is stored only where one of its lanes changes.
-__attribute__((target("avx"))) std::size_t Concrete02::commitFourAtOnce(StateFours<State>* states,
-                                                                        const double* strains,
-                                                                        const Responses& trial,
-                                                                        std::size_t n) const {
+// move, or lies past the last fiber, keeps its fields. A row is stored only where one of its lanes
+// changes.
+__attribute__((target("avx"))) void Concrete02::commitFourAtOnce(StateFours<State>* states,
+                                                                 const FiberStrains& strains,
+                                                                 const Responses& trial,
+                                                                 std::size_t n) const {
   const __m256d epsilon = _mm256_set1_pd(DBL_EPSILON), signBit = _mm256_set1_pd(-0.0);
   const __m256d sigR = _mm256_set1_pd(sigR_), epsR = _mm256_set1_pd(epsR_);
-  std::size_t i = 0;
-  for (; i + 4 <= n; i += 4) {
+  for (std::size_t i = 0; i < n; i += 4) {
     StateFours<State>& s = states[i / 4];
     const __m256d strain = lanes::load(s, kStrain);
-    const __m256d newStrain = _mm256_loadu_pd(strains + i);
-    const __m256d moved = _mm256_cmp_pd(_mm256_andnot_pd(signBit, _mm256_sub_pd(newStrain, strain)),
-                                        epsilon, _CMP_NLT_UQ);
+    const __m256d newStrain = lanes::strainsAt(strains, i, n);
+    const __m256d moved =
+        _mm256_and_pd(lanes::fibersBelow(i, n),
+                      _mm256_cmp_pd(_mm256_andnot_pd(signBit, _mm256_sub_pd(newStrain, strain)),
+                                    epsilon, _CMP_NLT_UQ));
     if (!lanes::any(moved)) continue;
-    const __m256d newStress = _mm256_loadu_pd(trial.stress + i);
+    const __m256d newStress = lanes::loadFibers(trial.stress, i, n);
     const __m256d ecmin = lanes::load(s, kEcmin), ept = lanes::load(s, kEpt);
     const __m256d dept = lanes::load(s, kDept);
     const __m256d newMinimum = _mm256_and_pd(moved, _mm256_cmp_pd(newStrain, ecmin, _CMP_LT_OQ));
@@ -227,18 +229,16 @@ __attribute__((target("avx"))) std::size_t Concrete02::commitFourAtOnce(StateFou
     }
     lanes::store(s, kStrain, lanes::pick(moved, newStrain, strain));
     lanes::store(s, kStress, lanes::pick(moved, newStress, lanes::load(s, kStress)));
-    lanes::store(s, kTangent,
-                 lanes::pick(moved, _mm256_loadu_pd(trial.tangent + i), lanes::load(s, kTangent)));
+    lanes::store(
+        s, kTangent,
+        lanes::pick(moved, lanes::loadFibers(trial.tangent, i, n), lanes::load(s, kTangent)));
   }
-  return i;
 }
 
 #else
 
-std::size_t Concrete02::commitFourAtOnce(StateFours<State>*, const double*, const Responses&,
-                                         std::size_t) const {
-  return 0;
-}
+void Concrete02::commitFourAtOnce(StateFours<State>*, const double*, const Responses&,
+                                  std::size_t) const {}
 void Concrete02::computeFourAtOnce(const StateFours<State>*, const double*, const Responses&,
                                    std::size_t) const {}
 

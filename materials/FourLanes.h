@@ -46,6 +46,46 @@ struct alignas(64) StateFours {
   }
 };
 
+/// The strains of an array of fibers: given one by one (`values`), or under plane-section
+/// kinematics from the fibers' coordinates, e0 - y kz + z ky (a fiber section's pass; without the
+/// z term in a plane section), formed where an update reads them. A section's strains formed
+/// again (to commit a pass, or for a fiber's response) are the pass's to the bit: one expression,
+/// here and in lanes::strainsAt, with the same operations.
+struct FiberStrains {
+  const double* values = nullptr;  ///< the strains, or null for the section's kinematics
+  const double* y = nullptr;       ///< fibers' coordinates (values null)
+  const double* z = nullptr;
+  double e0 = 0.0, kz = 0.0, ky = 0.0;  ///< section strains (values null)
+  bool planar = false;                  ///< a plane section: no z term
+
+  /// Strains given one by one.
+  static FiberStrains given(const double* values) {
+    FiberStrains s;
+    s.values = values;
+    return s;
+  }
+  /// A section's: e0 - y kz (+ z ky unless `planar`).
+  static FiberStrains ofSection(double e0, double kz, double ky, bool planar, const double* y,
+                                const double* z) {
+    return FiberStrains{nullptr, y, z, e0, kz, ky, planar};
+  }
+  double operator[](std::size_t i) const {
+    if (values != nullptr) return values[i];
+    return planar ? e0 - y[i] * kz : e0 - y[i] * kz + z[i] * ky;
+  }
+  /// The strains of the fibers from k on.
+  FiberStrains from(std::size_t k) const {
+    FiberStrains s = *this;
+    if (values != nullptr) {
+      s.values += k;
+    } else {
+      s.y += k;
+      s.z += k;
+    }
+    return s;
+  }
+};
+
 /// Fiber i of an array of fours.
 template <class State>
 State stateOf(const StateFours<State>* fours, std::size_t i) {
@@ -60,7 +100,8 @@ namespace dabs::materials::lanes {
 /// or all of them where the processor has no AVX.
 template <class Law>
 void computeOneByOne(const Law& law, const StateFours<typename Law::State>* committed,
-                     const double* strains, const Responses& out, std::size_t from, std::size_t n) {
+                     const FiberStrains& strains, const Responses& out, std::size_t from,
+                     std::size_t n) {
   for (std::size_t i = from; i < n; ++i) {
     typename Law::State trial;
     static_cast<void>(law.computeTrial(stateOf(committed, i), trial, strains[i]));
@@ -70,8 +111,9 @@ void computeOneByOne(const Law& law, const StateFours<typename Law::State>* comm
 
 /// law.commitTrial of fibers from..n-1, one at a time.
 template <class Law>
-void commitOneByOne(const Law& law, StateFours<typename Law::State>* states, const double* strains,
-                    const Responses& trial, std::size_t from, std::size_t n) {
+void commitOneByOne(const Law& law, StateFours<typename Law::State>* states,
+                    const FiberStrains& strains, const Responses& trial, std::size_t from,
+                    std::size_t n) {
   for (std::size_t i = from; i < n; ++i) {
     typename Law::State s = stateOf(states, i);
     law.commitTrial(s, strains[i], trial.stress[i], trial.tangent[i]);
@@ -79,34 +121,34 @@ void commitOneByOne(const Law& law, StateFours<typename Law::State>* states, con
   }
 }
 
-/// A law's computeTrials: its `fours` member updates all n fibers four at a time, the last one
-/// to three in their own four. A group of fewer than four (a plane section's bars at two heights)
-/// goes one by one, and so does every group where the processor cannot run the fours
-/// (Law::updatesFourAtOnce).
+/// A law's computeTrials: its `fours` member updates all n fibers four at a time (the last one
+/// to three in their own four); where the processor cannot run the fours (Law::updatesFourAtOnce)
+/// they go one by one.
 template <class Law>
 void computeInFours(const Law& law,
-                    void (Law::*fours)(const StateFours<typename Law::State>*, const double*,
+                    void (Law::*fours)(const StateFours<typename Law::State>*, const FiberStrains&,
                                        const Responses&, std::size_t) const,
-                    const StateFours<typename Law::State>* committed, const double* strains,
+                    const StateFours<typename Law::State>* committed, const FiberStrains& strains,
                     const Responses& out, std::size_t n) {
-  if (n >= 4 && Law::updatesFourAtOnce())
+  if (Law::updatesFourAtOnce())
     (law.*fours)(committed, strains, out, n);
   else
     computeOneByOne(law, committed, strains, out, 0, n);
 }
 
-/// A law's commitTrials: its `fours` member commits the first n - n % 4 fibers four at a time
-/// and returns their count; the rest (all of them where the processor cannot run the fours) go one
-/// at a time through law.commitTrial.
+/// A law's commitTrials: its `fours` member commits all n fibers four at a time (the last one to
+/// three in their own four, its other lanes untouched); where the processor cannot run the fours
+/// they go one at a time through law.commitTrial.
 template <class Law>
 void commitInFours(const Law& law,
-                   std::size_t (Law::*fours)(StateFours<typename Law::State>*, const double*,
-                                             const Responses&, std::size_t) const,
-                   StateFours<typename Law::State>* states, const double* strains,
+                   void (Law::*fours)(StateFours<typename Law::State>*, const FiberStrains&,
+                                      const Responses&, std::size_t) const,
+                   StateFours<typename Law::State>* states, const FiberStrains& strains,
                    const Responses& trial, std::size_t n) {
-  const std::size_t done =
-      n >= 4 && Law::updatesFourAtOnce() ? (law.*fours)(states, strains, trial, n) : 0;
-  commitOneByOne(law, states, strains, trial, done, n);
+  if (Law::updatesFourAtOnce())
+    (law.*fours)(states, strains, trial, n);
+  else
+    commitOneByOne(law, states, strains, trial, 0, n);
 }
 
 }  // namespace dabs::materials::lanes
@@ -152,14 +194,33 @@ __attribute__((target("avx"))) inline void store(StateFours<State>& four, std::s
   _mm256_store_pd(four.row[k], v);
 }
 
-/// The strains of fibers i .. i + 3 of n; a lane past the last fiber gets `padding`'s (the
-/// four's own committed strain, so that its update is a cheap one nobody reads).
-__attribute__((target("avx"))) inline __m256d strainsAt(const double* strains, std::size_t i,
-                                                        std::size_t n, const double* padding) {
-  if (i + 4 <= n) return _mm256_loadu_pd(strains + i);
-  alignas(32) double four[4];
-  for (std::size_t l = 0; l < 4; ++l) four[l] = i + l < n ? strains[i + l] : padding[l];
-  return _mm256_load_pd(four);
+/// The lanes of fibers i .. i + 3 that are below n (all ones), the others zero.
+__attribute__((target("avx"))) inline __m256d fibersBelow(std::size_t i, std::size_t n) {
+  if (i + 4 <= n) return _mm256_castsi256_pd(_mm256_set1_epi64x(-1));
+  const auto lane = [i, n](std::size_t l) { return i + l < n ? -1LL : 0LL; };
+  return _mm256_castsi256_pd(_mm256_set_epi64x(lane(3), lane(2), lane(1), lane(0)));
+}
+
+/// Fibers i .. i + 3 of an array of n, zero past the last (a masked load: no copy, whose stores
+/// would stall the vector load that reads them).
+__attribute__((target("avx"))) inline __m256d loadFibers(const double* values, std::size_t i,
+                                                         std::size_t n) {
+  if (i + 4 <= n) return _mm256_loadu_pd(values + i);
+  return _mm256_maskload_pd(values + i, _mm256_castpd_si256(fibersBelow(i, n)));
+}
+
+/// The strains of fibers i .. i + 3 of n, FiberStrains::operator[] of each; a lane past the last
+/// fiber gets the section's axial strain e0 (or zero), an update of it nobody reads.
+__attribute__((target("avx"))) inline __m256d strainsAt(const FiberStrains& strains, std::size_t i,
+                                                        std::size_t n) {
+  if (strains.values != nullptr) return loadFibers(strains.values, i, n);
+  __m256d strain =
+      _mm256_sub_pd(_mm256_set1_pd(strains.e0),
+                    _mm256_mul_pd(loadFibers(strains.y, i, n), _mm256_set1_pd(strains.kz)));
+  if (!strains.planar)
+    strain = _mm256_add_pd(strain,
+                           _mm256_mul_pd(loadFibers(strains.z, i, n), _mm256_set1_pd(strains.ky)));
+  return strain;
 }
 
 /// Four fibers' stresses and tangents stored as fibers i .. i + 3 of `out`, those of them below n.
@@ -170,10 +231,9 @@ __attribute__((target("avx"))) inline void store(const Responses& out, std::size
     _mm256_storeu_pd(out.tangent + i, tangent);
     return;
   }
-  alignas(32) double stresses[4], tangents[4];
-  _mm256_store_pd(stresses, stress);
-  _mm256_store_pd(tangents, tangent);
-  for (std::size_t l = 0; i + l < n; ++l) out.set(i + l, stresses[l], tangents[l]);
+  const __m256i below = _mm256_castpd_si256(fibersBelow(i, n));
+  _mm256_maskstore_pd(out.stress + i, below, stress);
+  _mm256_maskstore_pd(out.tangent + i, below, tangent);
 }
 
 }  // namespace dabs::materials::lanes

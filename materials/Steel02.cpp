@@ -88,13 +88,20 @@ Steel02::State Steel02::initialState() const {
   return s;
 }
 
-void Steel02::computeTrials(const StateFours<State>* committed, const double* strains,
-                            const Responses& out, std::size_t n) const {
-  lanes::computeInFours(*this, &Steel02::computeFourAtOnce, committed, strains, out, n);
+// Flattened: the update one at a time inlined whole (its branch tests among them), as it was
+// where it had one caller; left to the compiler it kept followBranch a call of its own, a fifth
+// more instructions in the RC frame benchmark's bar updates.
+[[gnu::flatten]] void Steel02::computeTrials(const StateFours<State>* committed,
+                                             const FiberStrains& strains, const Responses& out,
+                                             std::size_t n) const {
+  if (n < 4)
+    lanes::computeOneByOne(*this, committed, strains, out, 0, n);
+  else
+    lanes::computeInFours(*this, &Steel02::computeFourAtOnce, committed, strains, out, n);
 }
 
-void Steel02::commitTrials(StateFours<State>* states, const double* strains, const Responses& trial,
-                           std::size_t n) const {
+void Steel02::commitTrials(StateFours<State>* states, const FiberStrains& strains,
+                           const Responses& trial, std::size_t n) const {
   lanes::commitInFours(*this, &Steel02::commitFourAtOnce, states, strains, trial, n);
 }
 
@@ -146,7 +153,7 @@ __attribute__((target("avx"))) inline __m256d binomialSeries(__m256d a, __m256d 
 // lane needs them. A fiber on its first excursion, or reversing with a shift, takes
 // computeTrialWith<steel02::LanePowers> itself.
 __attribute__((target("avx"))) void Steel02::computeFourAtOnce(const StateFours<State>* committed,
-                                                               const double* strains,
+                                                               const FiberStrains& strains,
                                                                const Responses& out,
                                                                std::size_t n) const {
   const auto& p = params_;
@@ -180,7 +187,7 @@ __attribute__((target("avx"))) void Steel02::computeFourAtOnce(const StateFours<
     __m256d linearLimit = lanes::load(c, kLinearLimit), sig0 = lanes::load(c, kSig0);
     __m256d sigR = lanes::load(c, kSigR), R = lanes::load(c, kR);
     const __m256d kon = lanes::load(c, kKon);
-    const __m256d strain = lanes::strainsAt(strains, i, n, c.row[kStrain]);
+    const __m256d strain = lanes::strainsAt(strains, i, n);
 
     // computeTrial's shifted strains and the increment that decides a reversal.
     const __m256d eps = _mm256_add_pd(strain, epsIni);
@@ -304,47 +311,46 @@ __attribute__((target("avx"))) void Steel02::computeFourAtOnce(const StateFours<
 
 // commitTrial, lane by lane: a fiber that stays on its branch (kon 1 and a strain increment not
 // below zero, kon 2 and one not above: followBranch changes nothing) takes the trial's strain,
-// stress and tangent; the others of its four (a reversal, a first excursion) go one at a time.
-__attribute__((target("avx"))) std::size_t Steel02::commitFourAtOnce(StateFours<State>* states,
-                                                                     const double* strains,
-                                                                     const Responses& trial,
-                                                                     std::size_t n) const {
+// stress and tangent; the others of its four (a reversal, a first excursion) go one at a time, and
+// lanes past the last fiber are left as they are.
+__attribute__((target("avx"))) void Steel02::commitFourAtOnce(StateFours<State>* states,
+                                                              const FiberStrains& strains,
+                                                              const Responses& trial,
+                                                              std::size_t n) const {
   const __m256d epsIni = _mm256_set1_pd(epsIni_), zero = _mm256_setzero_pd();
   const __m256d loading = _mm256_set1_pd(1.0), unloading = _mm256_set1_pd(2.0);
-  std::size_t i = 0;
-  for (; i + 4 <= n; i += 4) {
+  for (std::size_t i = 0; i < n; i += 4) {
     StateFours<State>& s = states[i / 4];
     const __m256d cStrain = lanes::load(s, kStrain), kon = lanes::load(s, kKon);
-    const __m256d newStrain = _mm256_loadu_pd(strains + i);
+    const __m256d below = lanes::fibersBelow(i, n);
+    const __m256d newStrain = lanes::strainsAt(strains, i, n);
     // commitTrial's increment: (strain + epsIni) - (committed strain + epsIni).
     const __m256d deps =
         _mm256_sub_pd(_mm256_add_pd(newStrain, epsIni), _mm256_add_pd(cStrain, epsIni));
-    const __m256d steady = _mm256_or_pd(_mm256_and_pd(_mm256_cmp_pd(kon, loading, _CMP_EQ_OQ),
-                                                      _mm256_cmp_pd(deps, zero, _CMP_NLT_UQ)),
-                                        _mm256_and_pd(_mm256_cmp_pd(kon, unloading, _CMP_EQ_OQ),
-                                                      _mm256_cmp_pd(deps, zero, _CMP_NGT_UQ)));
+    const __m256d steady =
+        _mm256_and_pd(below, _mm256_or_pd(_mm256_and_pd(_mm256_cmp_pd(kon, loading, _CMP_EQ_OQ),
+                                                        _mm256_cmp_pd(deps, zero, _CMP_NLT_UQ)),
+                                          _mm256_and_pd(_mm256_cmp_pd(kon, unloading, _CMP_EQ_OQ),
+                                                        _mm256_cmp_pd(deps, zero, _CMP_NGT_UQ))));
     lanes::store(s, kStrain, lanes::pick(steady, newStrain, cStrain));
-    lanes::store(s, kStress,
-                 lanes::pick(steady, _mm256_loadu_pd(trial.stress + i), lanes::load(s, kStress)));
-    lanes::store(s, kTangent,
-                 lanes::pick(steady, _mm256_loadu_pd(trial.tangent + i), lanes::load(s, kTangent)));
-    const int steadyLanes = _mm256_movemask_pd(steady);
-    if (steadyLanes == 0xF) continue;
+    lanes::store(
+        s, kStress,
+        lanes::pick(steady, lanes::loadFibers(trial.stress, i, n), lanes::load(s, kStress)));
+    lanes::store(
+        s, kTangent,
+        lanes::pick(steady, lanes::loadFibers(trial.tangent, i, n), lanes::load(s, kTangent)));
+    const int others = _mm256_movemask_pd(_mm256_andnot_pd(steady, below));
     for (std::size_t l = 0; l < 4; ++l)
-      if (!(steadyLanes >> l & 1))
-        lanes::commitOneByOne(*this, states, strains, trial, i + l, i + l + 1);
+      if (others >> l & 1) lanes::commitOneByOne(*this, states, strains, trial, i + l, i + l + 1);
   }
-  return i;
 }
 
 #else
 
 void Steel02::computeFourAtOnce(const StateFours<State>*, const double*, const Responses&,
                                 std::size_t) const {}
-std::size_t Steel02::commitFourAtOnce(StateFours<State>*, const double*, const Responses&,
-                                      std::size_t) const {
-  return 0;
-}
+void Steel02::commitFourAtOnce(StateFours<State>*, const double*, const Responses&,
+                               std::size_t) const {}
 
 #endif
 

@@ -139,14 +139,15 @@ class Steel02 final : public StatefulUniaxial<Steel02, Steel02State> {
   /// asymptote, on its own), else those of computeTrial. (Fewer than four, a plane section's bars
   /// at two heights, go one at a time with the C library's powers: their results wait on each
   /// power, and glibc's one-value functions answer sooner; through the four-lane ones the RC
-  /// frame benchmark took 4 % longer.)
-  void computeTrials(const StateFours<State>* committed, const double* strains,
+  /// frame benchmark took 4 % longer, and through the four-lane code with the C library's powers
+  /// 4 % longer too.)
+  void computeTrials(const StateFours<State>* committed, const FiberStrains& strains,
                      const Responses& out, std::size_t n) const;
   /// commitTrial of n fibers: fiber i of `states` committed at strains[i] with trial.stress[i]
   /// and trial.tangent[i], bit for bit. Where the processor has AVX, four fibers at a time that
   /// stay on their branches store only their strain, stress and tangent rows (two cache lines of
   /// the four's seven); a fiber that reverses or leaves its virgin point goes one at a time.
-  void commitTrials(StateFours<State>* states, const double* strains, const Responses& trial,
+  void commitTrials(StateFours<State>* states, const FiberStrains& strains, const Responses& trial,
                     std::size_t n) const;
   /// Whether computeTrials takes four fibers at a time on this processor.
   static bool updatesFourAtOnce() { return lanes::available(); }
@@ -166,12 +167,12 @@ class Steel02 final : public StatefulUniaxial<Steel02, Steel02State> {
   /// reversal. False when the material stays at its virgin point (s then has its stress and
   /// tangent).
   bool followBranch(State& s, double epsP, double sigP, double deps) const;
-  /// computeTrials of n >= 4 fibers, four at a time (AVX), the last one to three in their own four.
-  void computeFourAtOnce(const StateFours<State>* committed, const double* strains,
+  /// computeTrials of n >= 4 fibers four at a time (AVX), the last one to three in their own four.
+  void computeFourAtOnce(const StateFours<State>* committed, const FiberStrains& strains,
                          const Responses& out, std::size_t n) const;
-  /// commitTrials of the first n - n % 4 fibers, four at a time (AVX); returns their count.
-  std::size_t commitFourAtOnce(StateFours<State>* states, const double* strains,
-                               const Responses& trial, std::size_t n) const;
+  /// commitTrials four at a time (AVX), the last one to three in their own four.
+  void commitFourAtOnce(StateFours<State>* states, const FiberStrains& strains,
+                        const Responses& trial, std::size_t n) const;
   Params params_;
   double epsy_ = 0.0;    ///< Fy / E
   double Esh_ = 0.0;     ///< b E

@@ -185,47 +185,6 @@ void addResponses(const double* ys, const double* zs, const double* as, const do
       n, sums);
 }
 
-/// A fiber's strain under plane-section kinematics: one expression for every use, so that a
-/// strain formed again (to commit, or for a response) is the pass's to the bit.
-template <bool Planar>
-double fiberStrain(double e0, double kz, double ky, double y, double z) {
-  return Planar ? e0 - y * kz : e0 - y * kz + z * ky;
-}
-
-/// The fibers' strains of a pass, fiberStrain of each. Where the processor has AVX, four at a time
-/// and stored as one vector each (the last four again for the fibers after the fours): a law's
-/// update that reads them four at a time then gets each four from one store (a four written by
-/// several stores waits for them to reach the cache). The same operations, so the same bits.
-#ifdef DABS_FOUR_LANES
-template <bool Planar>
-__attribute__((target("avx"))) void fiberStrainsFourAtOnce(double e0, double kz, double ky,
-                                                           const double* ys, const double* zs,
-                                                           double* strains, std::size_t n) {
-  const __m256d e0s = _mm256_set1_pd(e0), kzs = _mm256_set1_pd(kz), kys = _mm256_set1_pd(ky);
-  const auto four = [&](std::size_t i) __attribute__((target("avx"))) {
-    __m256d strain = _mm256_sub_pd(e0s, _mm256_mul_pd(_mm256_loadu_pd(ys + i), kzs));
-    if constexpr (!Planar)
-      strain = _mm256_add_pd(strain, _mm256_mul_pd(_mm256_loadu_pd(zs + i), kys));
-    _mm256_storeu_pd(strains + i, strain);
-  };
-  std::size_t i = 0;
-  for (; i + 4 <= n; i += 4) four(i);
-  if (i < n) four(n - 4);
-}
-#endif
-
-template <bool Planar>
-void fiberStrains(double e0, double kz, double ky, const double* ys, const double* zs,
-                  double* strains, std::size_t n) {
-#ifdef DABS_FOUR_LANES
-  if (n >= 4 && lanes::available()) {
-    fiberStrainsFourAtOnce<Planar>(e0, kz, ky, ys, zs, strains, n);
-    return;
-  }
-#endif
-  for (std::size_t i = 0; i < n; ++i) strains[i] = fiberStrain<Planar>(e0, kz, ky, ys[i], zs[i]);
-}
-
 /// Any uniaxial material held by pointer, with the calls a fiber loop makes (virtual ones).
 class BoxedMaterial {
  public:
@@ -352,7 +311,7 @@ class StateFiberGroup final : public FiberGroup {
   using State = typename M::State;
   using Fours = StateFours<State>;
   static_assert(
-      requires(const M& m, State& s, const Fours* c, Fours* f, const double* e,
+      requires(const M& m, State& s, const Fours* c, Fours* f, const FiberStrains& e,
                const Responses& r) {
         m.commitTrial(s, 0.0, 0.0, 0.0);
         m.computeTrials(c, e, r, std::size_t{0});
@@ -422,10 +381,6 @@ class StateFiberGroup final : public FiberGroup {
 
  private:
   using Response = StressTangent;
-  /// Fibers whose strains a pass forms at a time (a whole number of fours; 1 kB of stack), up to
-  /// three more in a group's last block: most groups of a section are one block.
-  static constexpr std::size_t kStrainBlock = 128;
-  static_assert(kStrainBlock % 4 == 0);
   enum class Phase {
     Committed,      ///< committed_ is the current state; the trial arrays are stale
     Trial,          ///< the trial arrays hold the trial at the strains of the last setTrial
@@ -446,7 +401,7 @@ class StateFiberGroup final : public FiberGroup {
   /// run over two small arrays: 7 % less time on the fiber bridges than one loop that did both
   /// (on the RC frame, whose groups are small, within 1 %); the sums in the order PartialSums
   /// describes. A plane section skips the z terms (a third of the sums). `Fold`: first commit
-  /// each fiber's pending trial into its state. The strains are formed a block at a time.
+  /// each fiber's pending trial into its state.
   template <bool Planar, bool Fold>
   void sweepFolding(double e0, double kz, double ky, FiberSums& sums) {
     const Geometry& g = geometry();
@@ -457,32 +412,16 @@ class StateFiberGroup final : public FiberGroup {
     // The only failure of these laws is a non-finite stress or tangent, and it makes the sums
     // non-finite too: the caller checks those once instead of every fiber here.
     //
-    // Block by block, the pending commits (at the strains of the committed pass, formed again
-    // from its section strains) and then the updates at this pass's strains: the strains live
-    // in a small buffer in L1 instead of an array a section long that each pass would write
-    // and the next fold read back (on a model whose states do not fit in the cache, 16 of the
-    // about 130 bytes a pass moved a fiber). Every block but the last is a whole number of
-    // fours and the last has at least four fibers, so the fibers go four at a time as they would
-    // in one call (Steel02's powers four at a time may differ in the last bits from its powers
-    // one at a time).
+    // The laws form the fibers' strains from the section's as they read them (FiberStrains): no
+    // array of strains a section long that each pass would write and the next fold read back (on
+    // a model whose states do not fit in the cache, 16 of the about 130 bytes a pass moved a
+    // fiber). The pending commits are at the strains of the committed pass, formed again.
     const Responses trial{trialStress_.data(), trialTangent_.data()};
-    alignas(32) double strains[kStrainBlock + 3];
-    for (std::size_t start = 0, count = 0; start < n; start += count) {
-      count = n - start <= kStrainBlock + 3 ? n - start : kStrainBlock;
-      const double* y = ys + start;
-      const double* z = zs + start;
-      Fours* states = committed_.data() + start / 4;
-      const Responses block = trial.from(start);
-      if constexpr (Fold) {
-        if (planar_)
-          fiberStrains<true>(e0_, kz_, ky_, y, z, strains, count);
-        else
-          fiberStrains<false>(e0_, kz_, ky_, y, z, strains, count);
-        law_.commitTrials(states, strains, block, count);
-      }
-      fiberStrains<Planar>(e0, kz, ky, y, z, strains, count);
-      law_.computeTrials(states, strains, block, count);
-    }
+    if constexpr (Fold)
+      law_.commitTrials(committed_.data(), FiberStrains::ofSection(e0_, kz_, ky_, planar_, ys, zs),
+                        trial, n);
+    law_.computeTrials(committed_.data(), FiberStrains::ofSection(e0, kz, ky, Planar, ys, zs),
+                       trial, n);
     addResponses<Planar>(ys, zs, as, trial.stress, trial.tangent, n, sums);
     e0_ = e0;
     kz_ = kz;
@@ -494,8 +433,7 @@ class StateFiberGroup final : public FiberGroup {
   /// Fiber i's strain in the last setTrial.
   double trialStrain(std::size_t i) const {
     const Geometry& g = geometry();
-    return planar_ ? fiberStrain<true>(e0_, kz_, ky_, g.y[i], g.z[i])
-                   : fiberStrain<false>(e0_, kz_, ky_, g.y[i], g.z[i]);
+    return FiberStrains::ofSection(e0_, kz_, ky_, planar_, g.y.data(), g.z.data())[i];
   }
   /// Fiber i's committed state as it is stored (without a pending commit).
   State stored(std::size_t i) const { return stateOf(committed_.data(), i); }

@@ -154,8 +154,9 @@ TEST(Concrete01Test, ArraysOfFibersGiveEachFibersOwnUpdate) {
   const auto [committed, strains] = testing::shuffledArrays(fibers, random);
   const std::size_t n = testing::expectEveryGroupSize(m, committed, strains);
   {
-    // commitTrials: the same fibers, and those that reach no new most compressive strain (a four
-    // with one that does goes one at a time, so these are the fours the lanes commit).
+    // commitTrials: the same fibers (among them new most compressive strains on every part of
+    // the envelope and each of unload's three lines), and those that reach none (fours of fibers
+    // that only take the trial's strain, stress and tangent).
     SCOPED_TRACE("commits");
     testing::expectEveryGroupSizeCommits(m, committed, strains);
     std::vector<std::pair<Concrete01::State, double>> noNewMinimum;

@@ -53,7 +53,8 @@ void expectEachFibersOwnUpdate(const Law& law, const std::vector<typename Law::S
   std::vector<double> stresses(n), tangents(n);
   // Lanes past the last fiber hold a state of the walk, not a virgin one (nobody reads them).
   const auto fours = asFours(committed, n, committed.back());
-  law.computeTrials(fours.data(), strains.data(), Responses{stresses.data(), tangents.data()}, n);
+  law.computeTrials(fours.data(), FiberStrains::given(strains.data()),
+                    Responses{stresses.data(), tangents.data()}, n);
   SCOPED_TRACE(::testing::Message() << "group of " << n);
   for (std::size_t i = 0; i < n; ++i) {
     typename Law::State trial;
@@ -120,7 +121,8 @@ void expectEachFibersOwnCommit(const Law& law, const std::vector<typename Law::S
     tangents[i] = trial.tangent;
   }
   auto fours = asFours(committed, n, committed.back());
-  law.commitTrials(fours.data(), strains.data(), Responses{stresses.data(), tangents.data()}, n);
+  law.commitTrials(fours.data(), FiberStrains::given(strains.data()),
+                   Responses{stresses.data(), tangents.data()}, n);
   SCOPED_TRACE(::testing::Message() << "commit of a group of " << n);
   // The lanes past the last fiber are left as they were.
   using Bits = std::array<std::uint64_t, sizeof(State) / 8>;

@@ -453,7 +453,7 @@ TEST(FiberSectionTest, GroupsLongerThanAStrainBlockUpdateAsInOneCall) {
       e << 0.5 * epsY, curvature * epsY;
       ASSERT_TRUE(ok(sec.setTrialDeformation(e)));
       for (std::size_t j = 0; j < n; ++j) strains[j] = e(0) - fibers[j].y * e(1);
-      steel.computeTrials(states.data(), strains.data(),
+      steel.computeTrials(states.data(), FiberStrains::given(strains.data()),
                           Responses{stresses.data(), tangents.data()}, n);
       for (std::size_t j = 0; j < n; ++j) {
         ASSERT_EQ(sec.fiberStress(static_cast<int>(j)), stresses[j]) << "bar " << j;
