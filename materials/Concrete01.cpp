@@ -243,9 +243,9 @@ __attribute__((target("avx"))) void Concrete01::commitFourAtOnce(StateFours<Stat
 
 #else
 
-void Concrete01::commitFourAtOnce(StateFours<State>*, const double*, const Responses&,
+void Concrete01::commitFourAtOnce(StateFours<State>*, const FiberStrains&, const Responses&,
                                   std::size_t) const {}
-void Concrete01::computeFourAtOnce(const StateFours<State>*, const double*, const Responses&,
+void Concrete01::computeFourAtOnce(const StateFours<State>*, const FiberStrains&, const Responses&,
                                    std::size_t) const {}
 
 #endif

@@ -237,9 +237,9 @@ __attribute__((target("avx"))) void Concrete02::commitFourAtOnce(StateFours<Stat
 
 #else
 
-void Concrete02::commitFourAtOnce(StateFours<State>*, const double*, const Responses&,
+void Concrete02::commitFourAtOnce(StateFours<State>*, const FiberStrains&, const Responses&,
                                   std::size_t) const {}
-void Concrete02::computeFourAtOnce(const StateFours<State>*, const double*, const Responses&,
+void Concrete02::computeFourAtOnce(const StateFours<State>*, const FiberStrains&, const Responses&,
                                    std::size_t) const {}
 
 #endif

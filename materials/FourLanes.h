@@ -50,7 +50,9 @@ struct alignas(64) StateFours {
 /// kinematics from the fibers' coordinates, e0 - y kz + z ky (a fiber section's pass; without the
 /// z term in a plane section), formed where an update reads them. A section's strains formed
 /// again (to commit a pass, or for a fiber's response) are the pass's to the bit: one expression,
-/// here and in lanes::strainsAt, with the same operations.
+/// here and in lanes::strainsAt, with the same operations (but for the payload of a NaN made of
+/// two NaNs, which on x86 is the first operand's, and the compiler may order a product's
+/// operands either way; a NaN strain fails the section whatever its bits).
 struct FiberStrains {
   const double* values = nullptr;  ///< the strains, or null for the section's kinematics
   const double* y = nullptr;       ///< fibers' coordinates (values null)
@@ -72,17 +74,6 @@ struct FiberStrains {
   double operator[](std::size_t i) const {
     if (values != nullptr) return values[i];
     return planar ? e0 - y[i] * kz : e0 - y[i] * kz + z[i] * ky;
-  }
-  /// The strains of the fibers from k on.
-  FiberStrains from(std::size_t k) const {
-    FiberStrains s = *this;
-    if (values != nullptr) {
-      s.values += k;
-    } else {
-      s.y += k;
-      s.z += k;
-    }
-    return s;
   }
 };
 
@@ -154,8 +145,9 @@ void commitInFours(const Law& law,
 }  // namespace dabs::materials::lanes
 
 // x86-64 only: 32-bit x86 may compute the scalar updates in x87 extended precision, which the
-// lanes would not reproduce.
-#if defined(__x86_64__)
+// lanes would not reproduce. DABS_NO_LANES builds the one-at-a-time code alone, as off x86-64
+// (the build compiles the laws so once, so that that code cannot break unseen).
+#if defined(__x86_64__) && !defined(DABS_NO_LANES)
 #define DABS_FOUR_LANES 1
 #include <immintrin.h>
 

@@ -347,9 +347,9 @@ __attribute__((target("avx"))) void Steel02::commitFourAtOnce(StateFours<State>*
 
 #else
 
-void Steel02::computeFourAtOnce(const StateFours<State>*, const double*, const Responses&,
+void Steel02::computeFourAtOnce(const StateFours<State>*, const FiberStrains&, const Responses&,
                                 std::size_t) const {}
-void Steel02::commitFourAtOnce(StateFours<State>*, const double*, const Responses&,
+void Steel02::commitFourAtOnce(StateFours<State>*, const FiberStrains&, const Responses&,
                                std::size_t) const {}
 
 #endif

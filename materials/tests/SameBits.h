@@ -50,12 +50,18 @@ template <class Law, class Reference>
 void expectEachFibersOwnUpdate(const Law& law, const std::vector<typename Law::State>& committed,
                                const std::vector<double>& strains, std::size_t n,
                                const Reference& reference) {
-  std::vector<double> stresses(n), tangents(n);
+  // Four values past the last fiber that nothing may write over.
+  constexpr double kUntouched = 12345.0;
+  std::vector<double> stresses(n + 4, kUntouched), tangents(n + 4, kUntouched);
   // Lanes past the last fiber hold a state of the walk, not a virgin one (nobody reads them).
   const auto fours = asFours(committed, n, committed.back());
   law.computeTrials(fours.data(), FiberStrains::given(strains.data()),
                     Responses{stresses.data(), tangents.data()}, n);
   SCOPED_TRACE(::testing::Message() << "group of " << n);
+  for (std::size_t i = n; i < n + 4; ++i) {
+    EXPECT_EQ(stresses[i], kUntouched) << "response " << i << " past the last fiber";
+    EXPECT_EQ(tangents[i], kUntouched) << "response " << i << " past the last fiber";
+  }
   for (std::size_t i = 0; i < n; ++i) {
     typename Law::State trial;
     static_cast<void>(reference(committed[i], trial, strains[i]));
@@ -88,7 +94,7 @@ std::pair<std::vector<State>, std::vector<double>> shuffledArrays(
 template <class Law, class Reference>
 std::size_t expectEveryGroupSize(const Law& law, const std::vector<typename Law::State>& committed,
                                  const std::vector<double>& strains, const Reference& reference) {
-#if defined(__x86_64__)
+#if defined(DABS_FOUR_LANES)
   // On x86-64 the four-lane path runs wherever the processor has AVX (else this compares the
   // one-by-one loop with itself).
   EXPECT_EQ(Law::updatesFourAtOnce(), __builtin_cpu_supports("avx") != 0);

@@ -3,11 +3,16 @@
 // rectangle, discretised section properties, FD tangent, commit/revert, patch and layer layouts.
 #include <gtest/gtest.h>
 
+#include <bit>
 #include <cmath>
+#include <cstdint>
 #include <limits>
+#include <memory>
 #include <numbers>
+#include <random>
 #include <tuple>
 
+#include "materials/Concrete01.h"
 #include "materials/Concrete02.h"
 #include "materials/ENT.h"
 #include "materials/FourLanes.h"
@@ -428,45 +433,221 @@ TEST(FiberSectionTest, FiberStressIsTheStressTheSectionSummed) {
   EXPECT_GT(onCurve, 8);
 }
 
-// A group forms its fibers' strains a block at a time; its fibers must still go through the
-// law's update as in one call over the whole group: Steel02 bars (whose powers four at a time may
-// differ in the last bits from those one at a time) in groups of 131 to 263, around every block
-// boundary, yielded, committed, reversed and reloaded. Each bar's stress is the one
-// Steel02::computeTrials gives over the whole array of states, each state committed by
-// Steel02::commitTrial with its trial stress and tangent.
-TEST(FiberSectionTest, GroupsLongerThanAStrainBlockUpdateAsInOneCall) {
+// A group's fibers go through the law's update as in one call over the whole group, at strains
+// the group forms from the section's: Steel02 bars (whose powers four at a time may differ in
+// the last bits from those one at a time) in groups of 131 to 263 at distinct heights (and
+// depths in 3D), yielded, committed, reversed and reloaded. Each bar's stress is the one
+// Steel02::computeTrials gives over the whole array of states at strains e0 - y kz (+ z ky)
+// formed here, each state committed by Steel02::commitTrial with its trial stress and tangent.
+template <int Ndm>
+void expectBarsUpdatedAsInOneCall(std::size_t n) {
+  SCOPED_TRACE(testing::Message() << Ndm << "D, " << n << " bars");
   const Steel02 steel = steel02();
   const double epsY = 4e5 / 2e8;
-  for (const std::size_t n : {131u, 132u, 133u, 135u, 258u, 263u}) {
-    SCOPED_TRACE(testing::Message() << n << " bars");
-    std::vector<FiberSection<2>::Fiber> fibers;
+  std::vector<typename FiberSection<Ndm>::Fiber> fibers;
+  for (std::size_t j = 0; j < n; ++j) {
+    const double t = double(j) / double(n);
+    fibers.push_back({-0.35 + 0.7 * t, Ndm == 3 ? 0.2 * std::cos(9.0 * t) : 0.0, 0.0005, &steel});
+  }
+  FiberSection<Ndm> sec(1, fibers, 0.0);
+  // The states as Steel02::computeTrials takes them, every lane virgin to begin with.
+  std::vector<StateFours<Steel02::State>> states(
+      (n + 3) / 4, StateFours<Steel02::State>::filledWith(steel.virginState()));
+  std::vector<double> strains(n), stresses(n), tangents(n);
+  Eigen::VectorXd e = Eigen::VectorXd::Zero(Ndm == 3 ? 4 : 2);
+  int onCurve = 0;
+  for (const double curvature : {30.0, 21.0, 12.0, 19.0, 3.0, 17.5}) {
+    e(0) = 0.5 * epsY;
+    e(1) = curvature * epsY;
+    if constexpr (Ndm == 3) e(2) = -0.6 * curvature * epsY;
+    ASSERT_TRUE(ok(sec.setTrialDeformation(e)));
     for (std::size_t j = 0; j < n; ++j)
-      fibers.push_back({-0.35 + 0.7 * double(j) / double(n), 0.0, 0.0005, &steel});
-    FiberSection<2> sec(1, fibers, 0.0);
-    // The states as Steel02::computeTrials takes them, every lane virgin to begin with.
-    std::vector<StateFours<Steel02::State>> states(
-        (n + 3) / 4, StateFours<Steel02::State>::filledWith(steel.virginState()));
-    std::vector<double> strains(n), stresses(n), tangents(n);
-    Eigen::VectorXd e(2);
-    int onCurve = 0;
-    for (const double curvature : {30.0, 21.0, 12.0, 19.0, 3.0, 17.5}) {
-      e << 0.5 * epsY, curvature * epsY;
-      ASSERT_TRUE(ok(sec.setTrialDeformation(e)));
-      for (std::size_t j = 0; j < n; ++j) strains[j] = e(0) - fibers[j].y * e(1);
-      steel.computeTrials(states.data(), FiberStrains::given(strains.data()),
-                          Responses{stresses.data(), tangents.data()}, n);
-      for (std::size_t j = 0; j < n; ++j) {
-        ASSERT_EQ(sec.fiberStress(static_cast<int>(j)), stresses[j]) << "bar " << j;
-        onCurve += std::fabs(stresses[j]) < 0.999 * 4e5 && std::fabs(tangents[j]) < 0.99 * 2e8;
-      }
-      sec.commitState();
-      for (std::size_t j = 0; j < n; ++j) {
-        Steel02::State s = stateOf(states.data(), j);
-        steel.commitTrial(s, strains[j], stresses[j], tangents[j]);
-        states[j / 4].set(j % 4, s);
-      }
+      strains[j] =
+          Ndm == 3 ? e(0) - fibers[j].y * e(1) + fibers[j].z * e(2) : e(0) - fibers[j].y * e(1);
+    steel.computeTrials(states.data(), FiberStrains::given(strains.data()),
+                        Responses{stresses.data(), tangents.data()}, n);
+    for (std::size_t j = 0; j < n; ++j) {
+      ASSERT_EQ(sec.fiberStress(static_cast<int>(j)), stresses[j]) << "bar " << j;
+      ASSERT_EQ(sec.fiberStrain(static_cast<int>(j)), strains[j]) << "bar " << j;
+      onCurve += std::fabs(stresses[j]) < 0.999 * 4e5 && std::fabs(tangents[j]) < 0.99 * 2e8;
     }
-    EXPECT_GT(onCurve, static_cast<int>(n));  // many bars off the straight parts of their branches
+    sec.commitState();
+    for (std::size_t j = 0; j < n; ++j) {
+      Steel02::State s = stateOf(states.data(), j);
+      steel.commitTrial(s, strains[j], stresses[j], tangents[j]);
+      states[j / 4].set(j % 4, s);
+    }
+  }
+  EXPECT_GT(onCurve, static_cast<int>(n));  // many bars off the straight parts of their branches
+}
+
+TEST(FiberSectionTest, LongGroupsUpdateAsInOneCallOfTheLaw) {
+  for (const std::size_t n : {131u, 132u, 133u, 135u, 258u, 263u}) {
+    expectBarsUpdatedAsInOneCall<2>(n);
+    expectBarsUpdatedAsInOneCall<3>(n);
+  }
+}
+
+// Every fiber of a section follows its own law through any sequence of trials (new strains, the
+// same ones, or one ulp apart), commits, reverts, returns to the start and copies: a 3D and a
+// plane section of interleaved Steel02, Concrete01 and Concrete02 fibers (groups of 1 to 10, so
+// every count of lanes in a group's last four), random steps. Each fiber's stress and strain,
+// after every operation, are those of its law's computeTrial and commitTrial one fiber at a time
+// (Steel02 in a group of four or more with steel02::LanePowers, as Steel02::computeTrials
+// promises), to the bit.
+template <int Ndm>
+void expectEveryFiberFollowsItsLaw(std::size_t nSteel, std::size_t nConcrete01,
+                                   std::size_t nConcrete02, unsigned seed) {
+  SCOPED_TRACE(testing::Message() << Ndm << "D, " << nSteel << " Steel02, " << nConcrete01
+                                  << " Concrete01, " << nConcrete02 << " Concrete02, seed "
+                                  << seed);
+  Steel02::Params steelParams = steel02().params();
+  steelParams.sigInit = 30.0;
+  const Steel02 steel(1, steelParams);
+  const Concrete01 concrete1(2, Concrete01::Params{-30e3, -0.002, -6e3, -0.006});
+  const Concrete02 concrete2 = concrete02();
+  // Each fiber's committed and current states, advanced here one fiber at a time.
+  struct OwnStates {
+    int law;  // 0 Steel02, 1 Concrete01, 2 Concrete02
+    double y, z;
+    Steel02::State steel, steelNow;
+    Concrete01::State concrete1, concrete1Now;
+    Concrete02::State concrete2, concrete2Now;
+  };
+  std::vector<typename FiberSection<Ndm>::Fiber> fibers;
+  std::vector<OwnStates> own;
+  std::mt19937 random(seed);
+  std::uniform_real_distribution<double> coordinate(-0.3, 0.3), unit(-1.0, 1.0);
+  std::size_t left[3] = {nSteel, nConcrete01, nConcrete02};
+  const UniaxialMaterial* laws[3] = {&steel, &concrete1, &concrete2};
+  while (left[0] + left[1] + left[2] > 0) {
+    const int law = static_cast<int>(random() % 3);
+    if (left[law] == 0) continue;
+    --left[law];
+    OwnStates f{law,
+                coordinate(random),
+                coordinate(random),
+                steel.virginState(),
+                {},
+                concrete1.virginState(),
+                {},
+                concrete2.virginState(),
+                {}};
+    own.push_back(f);
+    fibers.push_back({f.y, f.z, 0.001, laws[law]});
+  }
+  auto sec = std::make_unique<FiberSection<Ndm>>(1, fibers, 1.0);
+  enum class Phase { Committed, Trial, CommitPending } phase = Phase::Committed;
+  double e0 = 0.0, kz = 0.0, ky = 0.0;
+  const bool steelInLanes = Steel02::updatesFourAtOnce() && nSteel >= 4;
+  const auto strainOf = [&](const OwnStates& f) {
+    return Ndm == 2 ? e0 - f.y * kz : e0 - f.y * kz + f.z * ky;
+  };
+  for (int step = 0; step < 400; ++step) {
+    const auto operation = static_cast<unsigned>(random() % 10);
+    if (operation < 5) {
+      const auto how = static_cast<unsigned>(random() % 4);
+      if (how == 1) {
+        e0 = std::nextafter(e0, 1.0);
+      } else if (how > 1) {
+        e0 = 0.0012 * unit(random);
+        kz = 0.004 * unit(random) / 0.3;
+        ky = Ndm == 3 ? 0.004 * unit(random) / 0.3 : 0.0;
+      }  // how == 0: the same strains again
+      if (phase == Phase::CommitPending) {
+        for (auto& f : own) {
+          f.steel = f.steelNow;
+          f.concrete1 = f.concrete1Now;
+          f.concrete2 = f.concrete2Now;
+        }
+      }
+      Eigen::VectorXd e = Eigen::VectorXd::Zero(Ndm == 3 ? 4 : 2);
+      e(0) = e0;
+      e(1) = kz;
+      if constexpr (Ndm == 3) e(2) = ky;
+      ASSERT_TRUE(ok(sec->setTrialDeformation(e)));
+      for (auto& f : own) {
+        const double strain = strainOf(f);
+        if (f.law == 0)
+          static_cast<void>(steelInLanes ? steel.computeTrialWith<steel02::LanePowers>(
+                                               f.steel, f.steelNow, strain)
+                                         : steel.computeTrial(f.steel, f.steelNow, strain));
+        else if (f.law == 1)
+          static_cast<void>(concrete1.computeTrial(f.concrete1, f.concrete1Now, strain));
+        else
+          static_cast<void>(concrete2.computeTrial(f.concrete2, f.concrete2Now, strain));
+      }
+      phase = Phase::Trial;
+    } else if (operation < 7) {
+      sec->commitState();
+      if (phase == Phase::Trial) {
+        // The state the trial leaves (commitTrial with the trial's stress and tangent).
+        for (auto& f : own) {
+          const double strain = strainOf(f);
+          if (f.law == 0) {
+            Steel02::State c = f.steel;
+            steel.commitTrial(c, strain, f.steelNow.stress, f.steelNow.tangent);
+            f.steelNow = c;
+          } else if (f.law == 1) {
+            Concrete01::State c = f.concrete1;
+            concrete1.commitTrial(c, strain, f.concrete1Now.stress, f.concrete1Now.tangent);
+            f.concrete1Now = c;
+          } else {
+            Concrete02::State c = f.concrete2;
+            concrete2.commitTrial(c, strain, f.concrete2Now.stress, f.concrete2Now.tangent);
+            f.concrete2Now = c;
+          }
+        }
+        phase = Phase::CommitPending;
+      }
+    } else if (operation < 8) {
+      sec->revertToLastCommit();
+      if (phase == Phase::Trial) phase = Phase::Committed;
+    } else if (operation < 9) {
+      if (random() % 4 == 0) {
+        sec->revertToStart();
+        for (auto& f : own) {
+          f.steel = steel.virginState();
+          f.concrete1 = concrete1.virginState();
+          f.concrete2 = concrete2.virginState();
+        }
+        phase = Phase::Committed;
+      }
+    } else {
+      auto copy = sec->clone();
+      sec.reset(static_cast<FiberSection<Ndm>*>(copy.release()));
+    }
+    for (std::size_t i = 0; i < own.size(); ++i) {
+      const OwnStates& f = own[i];
+      const bool now = phase != Phase::Committed;
+      double stress = 0.0, strain = 0.0;
+      if (f.law == 0) {
+        stress = now ? f.steelNow.stress : f.steel.stress;
+        strain = now ? f.steelNow.strain : f.steel.strain;
+      } else if (f.law == 1) {
+        stress = now ? f.concrete1Now.stress : f.concrete1.stress;
+        strain = now ? f.concrete1Now.strain : f.concrete1.strain;
+      } else {
+        stress = now ? f.concrete2Now.stress : f.concrete2.stress;
+        strain = now ? f.concrete2Now.strain : f.concrete2.strain;
+      }
+      const int fiber = static_cast<int>(i);
+      ASSERT_EQ(std::bit_cast<std::uint64_t>(sec->fiberStress(fiber)),
+                std::bit_cast<std::uint64_t>(stress))
+          << "step " << step << " operation " << operation << " fiber " << i;
+      ASSERT_EQ(std::bit_cast<std::uint64_t>(sec->fiberStrain(fiber)),
+                std::bit_cast<std::uint64_t>(strain))
+          << "step " << step << " operation " << operation << " fiber " << i;
+    }
+  }
+}
+
+TEST(FiberSectionTest, EveryFiberFollowsItsLawThroughCommitsRevertsAndCopies) {
+  for (unsigned seed = 1; seed <= 6; ++seed) {
+    for (std::size_t n = 1; n <= 9; ++n) {
+      expectEveryFiberFollowsItsLaw<3>(n, n + 1, (n + 2) % 10 + 1, seed);
+      expectEveryFiberFollowsItsLaw<2>(n, n + 1, (n + 2) % 10 + 1, seed);
+    }
   }
 }
 
