@@ -179,7 +179,6 @@ __attribute__((target("avx"))) void Concrete01::commitFourAtOnce(StateFours<Stat
                                                                  const Responses& trial,
                                                                  std::size_t n) const {
   const auto& p = params_;
-  const __m256d epsilon = _mm256_set1_pd(DBL_EPSILON), signBit = _mm256_set1_pd(-0.0);
   const __m256d minusEpsilon = _mm256_set1_pd(-DBL_EPSILON);
   const __m256d zero = _mm256_setzero_pd(), two = _mm256_set1_pd(2.0);
   const __m256d Ec0 = _mm256_set1_pd(Ec0_), descentSlope = _mm256_set1_pd(descentSlope_);
@@ -192,10 +191,7 @@ __attribute__((target("avx"))) void Concrete01::commitFourAtOnce(StateFours<Stat
     StateFours<State>& s = states[i / 4];
     const __m256d strain = lanes::load(s, kStrain);
     const __m256d newStrain = lanes::strainsAt(strains, i, n);
-    const __m256d moved =
-        _mm256_and_pd(lanes::fibersBelow(i, n),
-                      _mm256_cmp_pd(_mm256_andnot_pd(signBit, _mm256_sub_pd(newStrain, strain)),
-                                    epsilon, _CMP_NLT_UQ));
+    const __m256d moved = lanes::movedLanes(strain, newStrain, i, n);
     const __m256d newMinimum = _mm256_and_pd(
         _mm256_and_pd(moved, _mm256_cmp_pd(newStrain, zero, _CMP_NGT_UQ)),
         _mm256_and_pd(_mm256_cmp_pd(newStrain, strain, _CMP_LT_OQ),
@@ -231,13 +227,7 @@ __attribute__((target("avx"))) void Concrete01::commitFourAtOnce(StateFours<Stat
       lanes::store(s, kUnloadSlope,
                    lanes::pick(newMinimum, newSlope, lanes::load(s, kUnloadSlope)));
     }
-    lanes::store(s, kStrain, lanes::pick(moved, newStrain, strain));
-    lanes::store(
-        s, kStress,
-        lanes::pick(moved, lanes::loadFibers(trial.stress, i, n), lanes::load(s, kStress)));
-    lanes::store(
-        s, kTangent,
-        lanes::pick(moved, lanes::loadFibers(trial.tangent, i, n), lanes::load(s, kTangent)));
+    lanes::takeTrial(s, moved, newStrain, trial, i, n, kStrain, kStress, kTangent);
   }
 }
 

@@ -196,16 +196,12 @@ __attribute__((target("avx"))) void Concrete02::commitFourAtOnce(StateFours<Stat
                                                                  const FiberStrains& strains,
                                                                  const Responses& trial,
                                                                  std::size_t n) const {
-  const __m256d epsilon = _mm256_set1_pd(DBL_EPSILON), signBit = _mm256_set1_pd(-0.0);
   const __m256d sigR = _mm256_set1_pd(sigR_), epsR = _mm256_set1_pd(epsR_);
   for (std::size_t i = 0; i < n; i += 4) {
     StateFours<State>& s = states[i / 4];
     const __m256d strain = lanes::load(s, kStrain);
     const __m256d newStrain = lanes::strainsAt(strains, i, n);
-    const __m256d moved =
-        _mm256_and_pd(lanes::fibersBelow(i, n),
-                      _mm256_cmp_pd(_mm256_andnot_pd(signBit, _mm256_sub_pd(newStrain, strain)),
-                                    epsilon, _CMP_NLT_UQ));
+    const __m256d moved = lanes::movedLanes(strain, newStrain, i, n);
     if (!lanes::any(moved)) continue;
     const __m256d newStress = lanes::loadFibers(trial.stress, i, n);
     const __m256d ecmin = lanes::load(s, kEcmin), ept = lanes::load(s, kEpt);
@@ -227,11 +223,7 @@ __attribute__((target("avx"))) void Concrete02::commitFourAtOnce(StateFours<Stat
       lanes::store(s, kEr, lanes::pick(newMinimum, newEr, lanes::load(s, kEr)));
       lanes::store(s, kEpt, lanes::pick(newMinimum, newEpt, ept));
     }
-    lanes::store(s, kStrain, lanes::pick(moved, newStrain, strain));
-    lanes::store(s, kStress, lanes::pick(moved, newStress, lanes::load(s, kStress)));
-    lanes::store(
-        s, kTangent,
-        lanes::pick(moved, lanes::loadFibers(trial.tangent, i, n), lanes::load(s, kTangent)));
+    lanes::takeTrial(s, moved, newStrain, trial, i, n, kStrain, kStress, kTangent);
   }
 }
 

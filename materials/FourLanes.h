@@ -7,6 +7,7 @@
 
 #include <array>
 #include <bit>
+#include <cfloat>
 #include <cstddef>
 #include <type_traits>
 
@@ -213,6 +214,29 @@ __attribute__((target("avx"))) inline __m256d strainsAt(const FiberStrains& stra
     strain = _mm256_add_pd(strain,
                            _mm256_mul_pd(loadFibers(strains.z, i, n), _mm256_set1_pd(strains.ky)));
   return strain;
+}
+
+/// The lanes of fibers i .. i + 3 below n whose strain moved from `committed` to `strain` by
+/// DBL_EPSILON or more (a NaN strain counts as moved): the fibers a commit changes, as the laws'
+/// commitTrial decides it.
+__attribute__((target("avx"))) inline __m256d movedLanes(__m256d committed, __m256d strain,
+                                                         std::size_t i, std::size_t n) {
+  const __m256d distance = _mm256_andnot_pd(_mm256_set1_pd(-0.0), _mm256_sub_pd(strain, committed));
+  return _mm256_and_pd(fibersBelow(i, n),
+                       _mm256_cmp_pd(distance, _mm256_set1_pd(DBL_EPSILON), _CMP_NLT_UQ));
+}
+
+/// In the lanes of `where`, fibers i .. i + 3 of n take their trial's strain, stress and tangent
+/// (rows `strainRow`, `stressRow`, `tangentRow` of their four); the other lanes keep theirs.
+template <class State>
+__attribute__((target("avx"))) inline void takeTrial(StateFours<State>& four, __m256d where,
+                                                     __m256d strain, const Responses& trial,
+                                                     std::size_t i, std::size_t n,
+                                                     std::size_t strainRow, std::size_t stressRow,
+                                                     std::size_t tangentRow) {
+  store(four, strainRow, pick(where, strain, load(four, strainRow)));
+  store(four, stressRow, pick(where, loadFibers(trial.stress, i, n), load(four, stressRow)));
+  store(four, tangentRow, pick(where, loadFibers(trial.tangent, i, n), load(four, tangentRow)));
 }
 
 /// Four fibers' stresses and tangents stored as fibers i .. i + 3 of `out`, those of them below n.

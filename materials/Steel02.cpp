@@ -332,13 +332,7 @@ __attribute__((target("avx"))) void Steel02::commitFourAtOnce(StateFours<State>*
                                                         _mm256_cmp_pd(deps, zero, _CMP_NLT_UQ)),
                                           _mm256_and_pd(_mm256_cmp_pd(kon, unloading, _CMP_EQ_OQ),
                                                         _mm256_cmp_pd(deps, zero, _CMP_NGT_UQ))));
-    lanes::store(s, kStrain, lanes::pick(steady, newStrain, cStrain));
-    lanes::store(
-        s, kStress,
-        lanes::pick(steady, lanes::loadFibers(trial.stress, i, n), lanes::load(s, kStress)));
-    lanes::store(
-        s, kTangent,
-        lanes::pick(steady, lanes::loadFibers(trial.tangent, i, n), lanes::load(s, kTangent)));
+    lanes::takeTrial(s, steady, newStrain, trial, i, n, kStrain, kStress, kTangent);
     const int others = _mm256_movemask_pd(_mm256_andnot_pd(steady, below));
     for (std::size_t l = 0; l < 4; ++l)
       if (others >> l & 1) lanes::commitOneByOne(*this, states, strains, trial, i + l, i + l + 1);
