@@ -461,19 +461,36 @@ Status AnalysisModel::updateElements() {
   if (threads_ > 1 && count > 1) {
     // The costs are measured (material updates per update), so the lists are formed again after
     // the first update and whenever the updates since the build have grown sixteenfold. Each
-    // thread runs its own list, then takes light items from the shared pool until it is empty.
+    // thread runs its own list, then what is left of the others' (a list's items are taken one at
+    // a time through its cursor, by its owner or by a thread done with its own), then takes light
+    // items from the shared pool until it is empty. Taking the rest of another's list costs
+    // nothing where the lists balance, and where the system stops one thread for a while (a
+    // shared machine's other work, or its processors given to another guest) the other does that
+    // thread's remaining elements instead of waiting for it at the pass's end.
     if (unitsFormedAt_ < 0 || updateCalls_ >= std::max(16 * unitsFormedAt_, 1L)) formUnits();
     const int units = units_.size();
+    for (int u = 0; u < units; ++u) cursors_[u].next.store(0, std::memory_order_relaxed);
     const std::span<const int> pool = units_.shared();
     const auto poolSize = static_cast<int>(pool.size());
     constexpr int kChunk = WorkUnits::kSharedChunk;
     std::atomic<int> nextShared{0};
 #pragma omp parallel num_threads(threads_)
     {
-#pragma omp for schedule(static, 1) nowait
-      for (int u = 0; u < units; ++u)
-        for (const int k : units_.unit(u)) updateOne(k);
-          // The deferred elements' force, by the first thread done with its list.
+      // Its own list first (list t for thread t, as the lists were formed), then the next ones.
+      int own = 0;
+#ifdef _OPENMP
+      own = omp_get_thread_num();
+#endif
+      for (int step = 0; step < units; ++step) {
+        const int u = (own + step) % units;
+        const std::span<const int> list = units_.unit(u);
+        const auto size = static_cast<int>(list.size());
+        std::atomic<int>& next = cursors_[u].next;
+        for (int i = next.fetch_add(1, std::memory_order_relaxed); i < size;
+             i = next.fetch_add(1, std::memory_order_relaxed))
+          updateOne(list[static_cast<std::size_t>(i)]);
+      }
+      // The deferred elements' force, by the first thread done with the lists.
 #pragma omp single nowait
       residual_.formDeferredForce(eqDof_);
       for (int b = nextShared.fetch_add(kChunk, std::memory_order_relaxed); b < poolSize;
@@ -537,6 +554,10 @@ void AnalysisModel::formUnits() {
   team = std::min(team, std::max(omp_get_thread_limit(), 1));
 #endif
   units_.form(costs_, team);
+  if (cursorCount_ < units_.size()) {
+    cursors_ = std::make_unique<ListCursor[]>(static_cast<std::size_t>(units_.size()));
+    cursorCount_ = units_.size();
+  }
   unitsFormedAt_ = updateCalls_;
 }
 

@@ -4,7 +4,9 @@
 #include <Eigen/Core>
 #include <Eigen/SparseCore>
 #include <array>
+#include <atomic>
 #include <cstdint>
+#include <memory>
 #include <functional>
 #include <limits>
 #include <optional>
@@ -191,7 +193,14 @@ class AnalysisModel {
   int threads_ = 1;
   // The awake elements' lists, one per thread (WorkUnits), from the elements' material updates.
   WorkUnits units_;
-  long unitsFormedAt_ = -1;             ///< updateCalls_ when units_ was formed; -1: to form
+  long unitsFormedAt_ = -1;  ///< updateCalls_ when units_ was formed; -1: to form
+  /// The next item of each list in a pass, each on a cache line of its own: a thread done with
+  /// its own list takes the rest of the others' (formUnits sizes them).
+  struct alignas(64) ListCursor {
+    std::atomic<int> next{0};
+  };
+  std::unique_ptr<ListCursor[]> cursors_;
+  int cursorCount_ = 0;
   long updateCalls_ = 0;                ///< updateElements calls since the last build
   std::vector<long> materialsAtBuild_;  ///< each element's material update count at the build
   std::vector<double> costs_;           ///< work buffer of formUnits
