@@ -13,7 +13,9 @@ namespace dabs::analysis {
 /// lists stay the same from iteration to iteration, so each thread updates the same elements every
 /// time and their states (a fiber pier's are tens of kilobytes) stay in the cache of the core it
 /// runs on, while the system keeps it there; a first-come schedule moves elements between cores.
-/// Elements share nothing, so the lists change the time only, never a result.
+/// (A thread done with its own list takes what is left of the others', one item at a time:
+/// AnalysisModel::updateElements.) Elements share nothing, so the lists change the time only,
+/// never a result.
 ///
 /// The costs are averages, and a force-based element's varies from iteration to iteration with
 /// its local iterations, so lists that balance on average leave one thread waiting for the other
