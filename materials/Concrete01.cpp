@@ -66,6 +66,60 @@ constexpr std::size_t kEndStrain = offsetof(Concrete01State, endStrain) / sizeof
 constexpr std::size_t kUnloadSlope = offsetof(Concrete01State, unloadSlope) / sizeof(double);
 static_assert(std::is_standard_layout_v<Concrete01State> && sizeof(Concrete01State) == 48);
 
+/// Concrete01::envelope and Concrete01::unload in four lanes, with their operations in their
+/// order: the update and the commit of a new most compressive strain share them.
+struct EnvelopeLanes {
+  __m256d Ec0, descentSlope, fpc, epsc0, fpcu, epsU, zero, one, two, minusEpsilon;
+  // Karsan-Jirsa's zero-stress strain (unload): its two polynomials' coefficients.
+  __m256d a2, a1, b1, b0;
+
+  /// For the parameters `p` (negative), the initial tangent and the descent's slope.
+  __attribute__((target("avx"))) static EnvelopeLanes of(const Concrete01::Params& p, double Ec0,
+                                                         double descentSlope) {
+    return EnvelopeLanes{
+        _mm256_set1_pd(Ec0),          _mm256_set1_pd(descentSlope), _mm256_set1_pd(p.fpc),
+        _mm256_set1_pd(p.epsc0),      _mm256_set1_pd(p.fpcu),       _mm256_set1_pd(p.epsU),
+        _mm256_setzero_pd(),          _mm256_set1_pd(1.0),          _mm256_set1_pd(2.0),
+        _mm256_set1_pd(-DBL_EPSILON), _mm256_set1_pd(0.145),        _mm256_set1_pd(0.13),
+        _mm256_set1_pd(0.707),        _mm256_set1_pd(0.834)};
+  }
+
+  /// The envelope's stress and tangent at `strain`.
+  __attribute__((target("avx"))) void envelope(__m256d strain, __m256d& stress,
+                                               __m256d& tangent) const {
+    const __m256d parabola = _mm256_cmp_pd(strain, epsc0, _CMP_GT_OQ);
+    const __m256d descending = _mm256_cmp_pd(strain, epsU, _CMP_GT_OQ);
+    const __m256d eta = _mm256_div_pd(strain, epsc0);
+    const __m256d parabolaStress =
+        _mm256_mul_pd(fpc, _mm256_sub_pd(_mm256_mul_pd(two, eta), _mm256_mul_pd(eta, eta)));
+    const __m256d parabolaTangent = _mm256_mul_pd(Ec0, _mm256_sub_pd(one, eta));
+    const __m256d descentStress =
+        _mm256_add_pd(fpc, _mm256_mul_pd(descentSlope, _mm256_sub_pd(strain, epsc0)));
+    stress = pick(parabola, parabolaStress, pick(descending, descentStress, fpcu));
+    tangent = pick(parabola, parabolaTangent, pick(descending, descentSlope, zero));
+  }
+  /// The unloading line from the envelope point (minStrain, stress): its zero-stress strain and
+  /// its slope.
+  __attribute__((target("avx"))) void unload(__m256d minStrain, __m256d stress, __m256d& endStrain,
+                                             __m256d& slope) const {
+    const __m256d forRatio = pick(_mm256_cmp_pd(minStrain, epsU, _CMP_LT_OQ), epsU, minStrain);
+    const __m256d eta = _mm256_div_pd(forRatio, epsc0);
+    const __m256d ratio =
+        pick(_mm256_cmp_pd(eta, two, _CMP_LT_OQ),
+             _mm256_add_pd(_mm256_mul_pd(_mm256_mul_pd(a2, eta), eta), _mm256_mul_pd(a1, eta)),
+             _mm256_add_pd(_mm256_mul_pd(b1, _mm256_sub_pd(eta, two)), b0));
+    const __m256d end = _mm256_mul_pd(ratio, epsc0);
+    const __m256d span = _mm256_sub_pd(minStrain, end);
+    const __m256d elasticSpan = _mm256_div_pd(stress, Ec0);
+    const __m256d flat = _mm256_cmp_pd(span, minusEpsilon, _CMP_GT_OQ);
+    const __m256d steep = _mm256_andnot_pd(flat, _mm256_cmp_pd(span, elasticSpan, _CMP_LE_OQ));
+    endStrain =
+        pick(flat, end,
+             pick(steep, _mm256_sub_pd(minStrain, span), _mm256_sub_pd(minStrain, elasticSpan)));
+    slope = pick(steep, _mm256_div_pd(stress, span), Ec0);
+  }
+};
+
 }  // namespace
 
 // computeTrial, lane by lane: each branch is evaluated with the scalar code's operations in its
@@ -74,16 +128,9 @@ static_assert(std::is_standard_layout_v<Concrete01State> && sizeof(Concrete01Sta
 __attribute__((target("avx"))) void Concrete01::computeFourAtOnce(
     const StateFours<State>* committed, const FiberStrains& strains, const Responses& out,
     std::size_t n) const {
-  const auto& p = params_;
-  const __m256d Ec0 = _mm256_set1_pd(Ec0_), descentSlope = _mm256_set1_pd(descentSlope_);
-  const __m256d fpc = _mm256_set1_pd(p.fpc), epsc0 = _mm256_set1_pd(p.epsc0);
-  const __m256d fpcu = _mm256_set1_pd(p.fpcu), epsU = _mm256_set1_pd(p.epsU);
-  const __m256d zero = _mm256_setzero_pd(), one = _mm256_set1_pd(1.0), two = _mm256_set1_pd(2.0);
-  const __m256d epsilon = _mm256_set1_pd(DBL_EPSILON), minusEpsilon = _mm256_set1_pd(-DBL_EPSILON);
+  const EnvelopeLanes envelope = EnvelopeLanes::of(params_, Ec0_, descentSlope_);
+  const __m256d zero = _mm256_setzero_pd(), epsilon = _mm256_set1_pd(DBL_EPSILON);
   const __m256d signBit = _mm256_set1_pd(-0.0);
-  // Karsan-Jirsa's zero-stress strain (unload): its two polynomials' coefficients.
-  const __m256d a2 = _mm256_set1_pd(0.145), a1 = _mm256_set1_pd(0.13);
-  const __m256d b1 = _mm256_set1_pd(0.707), b0 = _mm256_set1_pd(0.834);
 
   for (std::size_t i = 0; i < n; i += 4) {
     const StateFours<State>& c = committed[i / 4];
@@ -123,18 +170,8 @@ __attribute__((target("avx"))) void Concrete01::computeFourAtOnce(
       const __m256d newMinimum =
           _mm256_and_pd(loading, _mm256_cmp_pd(strain, minStrain, _CMP_LE_OQ));
       if (any(newMinimum)) {
-        const __m256d parabola = _mm256_cmp_pd(strain, epsc0, _CMP_GT_OQ);
-        const __m256d descending = _mm256_cmp_pd(strain, epsU, _CMP_GT_OQ);
-        const __m256d eta = _mm256_div_pd(strain, epsc0);
-        const __m256d parabolaStress =
-            _mm256_mul_pd(fpc, _mm256_sub_pd(_mm256_mul_pd(two, eta), _mm256_mul_pd(eta, eta)));
-        const __m256d parabolaTangent = _mm256_mul_pd(Ec0, _mm256_sub_pd(one, eta));
-        const __m256d descentStress =
-            _mm256_add_pd(fpc, _mm256_mul_pd(descentSlope, _mm256_sub_pd(strain, epsc0)));
-        const __m256d envelopeStress =
-            pick(parabola, parabolaStress, pick(descending, descentStress, fpcu));
-        const __m256d envelopeTangent =
-            pick(parabola, parabolaTangent, pick(descending, descentSlope, zero));
+        __m256d envelopeStress, envelopeTangent;
+        envelope.envelope(strain, envelopeStress, envelopeTangent);
         loadStress = pick(newMinimum, envelopeStress, loadStress);
         loadTangent = pick(newMinimum, envelopeTangent, loadTangent);
         // The new unloading slope matters only where the committed line lies above the
@@ -142,18 +179,9 @@ __attribute__((target("avx"))) void Concrete01::computeFourAtOnce(
         const __m256d unloads =
             _mm256_and_pd(newMinimum, _mm256_cmp_pd(linear, envelopeStress, _CMP_GT_OQ));
         if (any(unloads)) {
-          const __m256d forRatio = pick(_mm256_cmp_pd(strain, epsU, _CMP_LT_OQ), epsU, strain);
-          const __m256d etaU = _mm256_div_pd(forRatio, epsc0);
-          const __m256d ratio = pick(
-              _mm256_cmp_pd(etaU, two, _CMP_LT_OQ),
-              _mm256_add_pd(_mm256_mul_pd(_mm256_mul_pd(a2, etaU), etaU), _mm256_mul_pd(a1, etaU)),
-              _mm256_add_pd(_mm256_mul_pd(b1, _mm256_sub_pd(etaU, two)), b0));
-          const __m256d span = _mm256_sub_pd(strain, _mm256_mul_pd(ratio, epsc0));
-          const __m256d elasticSpan = _mm256_div_pd(envelopeStress, Ec0);
-          const __m256d secant = _mm256_div_pd(envelopeStress, span);
-          const __m256d steep = _mm256_andnot_pd(_mm256_cmp_pd(span, minusEpsilon, _CMP_GT_OQ),
-                                                 _mm256_cmp_pd(span, elasticSpan, _CMP_LE_OQ));
-          lineSlope = pick(unloads, pick(steep, secant, Ec0), lineSlope);
+          __m256d newEnd, newSlope;
+          envelope.unload(strain, envelopeStress, newEnd, newSlope);
+          lineSlope = pick(unloads, newSlope, lineSlope);
         }
       }
       const __m256d aboveLine = _mm256_cmp_pd(linear, loadStress, _CMP_GT_OQ);
@@ -178,15 +206,8 @@ __attribute__((target("avx"))) void Concrete01::commitFourAtOnce(StateFours<Stat
                                                                  const FiberStrains& strains,
                                                                  const Responses& trial,
                                                                  std::size_t n) const {
-  const auto& p = params_;
-  const __m256d minusEpsilon = _mm256_set1_pd(-DBL_EPSILON);
-  const __m256d zero = _mm256_setzero_pd(), two = _mm256_set1_pd(2.0);
-  const __m256d Ec0 = _mm256_set1_pd(Ec0_), descentSlope = _mm256_set1_pd(descentSlope_);
-  const __m256d fpc = _mm256_set1_pd(p.fpc), epsc0 = _mm256_set1_pd(p.epsc0);
-  const __m256d fpcu = _mm256_set1_pd(p.fpcu), epsU = _mm256_set1_pd(p.epsU);
-  // Karsan-Jirsa's zero-stress strain (unload): its two polynomials' coefficients.
-  const __m256d a2 = _mm256_set1_pd(0.145), a1 = _mm256_set1_pd(0.13);
-  const __m256d b1 = _mm256_set1_pd(0.707), b0 = _mm256_set1_pd(0.834);
+  const EnvelopeLanes envelope = EnvelopeLanes::of(params_, Ec0_, descentSlope_);
+  const __m256d zero = _mm256_setzero_pd();
   for (std::size_t i = 0; i < n; i += 4) {
     StateFours<State>& s = states[i / 4];
     const __m256d strain = lanes::load(s, kStrain);
@@ -198,30 +219,9 @@ __attribute__((target("avx"))) void Concrete01::commitFourAtOnce(StateFours<Stat
                       _mm256_cmp_pd(newStrain, lanes::load(s, kMinStrain), _CMP_LE_OQ)));
     if (lanes::any(newMinimum)) {
       // commitTrial's envelope and unload at the new most compressive strain.
-      const __m256d eta = _mm256_div_pd(newStrain, epsc0);
-      const __m256d parabolaStress =
-          _mm256_mul_pd(fpc, _mm256_sub_pd(_mm256_mul_pd(two, eta), _mm256_mul_pd(eta, eta)));
-      const __m256d descentStress =
-          _mm256_add_pd(fpc, _mm256_mul_pd(descentSlope, _mm256_sub_pd(newStrain, epsc0)));
-      const __m256d envelopeStress =
-          lanes::pick(_mm256_cmp_pd(newStrain, epsc0, _CMP_GT_OQ), parabolaStress,
-                      lanes::pick(_mm256_cmp_pd(newStrain, epsU, _CMP_GT_OQ), descentStress, fpcu));
-      const __m256d forRatio =
-          lanes::pick(_mm256_cmp_pd(newStrain, epsU, _CMP_LT_OQ), epsU, newStrain);
-      const __m256d etaU = _mm256_div_pd(forRatio, epsc0);
-      const __m256d ratio = lanes::pick(
-          _mm256_cmp_pd(etaU, two, _CMP_LT_OQ),
-          _mm256_add_pd(_mm256_mul_pd(_mm256_mul_pd(a2, etaU), etaU), _mm256_mul_pd(a1, etaU)),
-          _mm256_add_pd(_mm256_mul_pd(b1, _mm256_sub_pd(etaU, two)), b0));
-      const __m256d endStrain = _mm256_mul_pd(ratio, epsc0);
-      const __m256d span = _mm256_sub_pd(newStrain, endStrain);
-      const __m256d elasticSpan = _mm256_div_pd(envelopeStress, Ec0);
-      const __m256d flat = _mm256_cmp_pd(span, minusEpsilon, _CMP_GT_OQ);
-      const __m256d steep = _mm256_andnot_pd(flat, _mm256_cmp_pd(span, elasticSpan, _CMP_LE_OQ));
-      const __m256d newEnd = lanes::pick(flat, endStrain,
-                                         lanes::pick(steep, _mm256_sub_pd(newStrain, span),
-                                                     _mm256_sub_pd(newStrain, elasticSpan)));
-      const __m256d newSlope = lanes::pick(steep, _mm256_div_pd(envelopeStress, span), Ec0);
+      __m256d envelopeStress, envelopeTangent, newEnd, newSlope;
+      envelope.envelope(newStrain, envelopeStress, envelopeTangent);
+      envelope.unload(newStrain, envelopeStress, newEnd, newSlope);
       lanes::store(s, kMinStrain, lanes::pick(newMinimum, newStrain, lanes::load(s, kMinStrain)));
       lanes::store(s, kEndStrain, lanes::pick(newMinimum, newEnd, lanes::load(s, kEndStrain)));
       lanes::store(s, kUnloadSlope,

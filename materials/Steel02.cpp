@@ -132,6 +132,16 @@ static_assert(kStrain < 8 && kEpsR < 8 && kInvSpan < 8 && kLinearLimit < 8 && kS
 // A commit on the branch writes the strain and the stress and tangent, which share a line.
 static_assert(kStress / 2 == kTangent / 2);
 
+/// The lanes whose fiber stays on its branch (followBranch changes nothing): kon 1 (loading) and
+/// an increment deps not below zero, or kon 2 and one not above (a NaN increment stays).
+__attribute__((target("avx"))) inline __m256d onTheirBranch(__m256d kon, __m256d deps) {
+  const __m256d zero = _mm256_setzero_pd();
+  return _mm256_or_pd(_mm256_and_pd(_mm256_cmp_pd(kon, _mm256_set1_pd(1.0), _CMP_EQ_OQ),
+                                    _mm256_cmp_pd(deps, zero, _CMP_NLT_UQ)),
+                      _mm256_and_pd(_mm256_cmp_pd(kon, _mm256_set1_pd(2.0), _CMP_EQ_OQ),
+                                    _mm256_cmp_pd(deps, zero, _CMP_NGT_UQ)));
+}
+
 /// steel02::binomialSeries of four lanes, its operations in its order.
 __attribute__((target("avx"))) inline __m256d binomialSeries(__m256d a, __m256d x) {
   const __m256d one = _mm256_set1_pd(1.0), two = _mm256_set1_pd(2.0);
@@ -195,9 +205,7 @@ __attribute__((target("avx"))) void Steel02::computeFourAtOnce(const StateFours<
     const __m256d deps = _mm256_sub_pd(eps, epsP);
     const __m256d isLoading = _mm256_cmp_pd(kon, loading, _CMP_EQ_OQ);
     const __m256d isUnloading = _mm256_cmp_pd(kon, unloading, _CMP_EQ_OQ);
-    const __m256d steady =
-        _mm256_or_pd(_mm256_and_pd(isLoading, _mm256_cmp_pd(deps, zero, _CMP_NLT_UQ)),
-                     _mm256_and_pd(isUnloading, _mm256_cmp_pd(deps, zero, _CMP_NGT_UQ)));
+    const __m256d steady = onTheirBranch(kon, deps);
     __m256d updated = steady;
     if (anyShiftless && !lanes::all(steady)) {
       // Reversals: the new origin is the committed point, the asymptotes meet where the elastic
@@ -317,8 +325,7 @@ __attribute__((target("avx"))) void Steel02::commitFourAtOnce(StateFours<State>*
                                                               const FiberStrains& strains,
                                                               const Responses& trial,
                                                               std::size_t n) const {
-  const __m256d epsIni = _mm256_set1_pd(epsIni_), zero = _mm256_setzero_pd();
-  const __m256d loading = _mm256_set1_pd(1.0), unloading = _mm256_set1_pd(2.0);
+  const __m256d epsIni = _mm256_set1_pd(epsIni_);
   for (std::size_t i = 0; i < n; i += 4) {
     StateFours<State>& s = states[i / 4];
     const __m256d cStrain = lanes::load(s, kStrain), kon = lanes::load(s, kKon);
@@ -327,11 +334,7 @@ __attribute__((target("avx"))) void Steel02::commitFourAtOnce(StateFours<State>*
     // commitTrial's increment: (strain + epsIni) - (committed strain + epsIni).
     const __m256d deps =
         _mm256_sub_pd(_mm256_add_pd(newStrain, epsIni), _mm256_add_pd(cStrain, epsIni));
-    const __m256d steady =
-        _mm256_and_pd(below, _mm256_or_pd(_mm256_and_pd(_mm256_cmp_pd(kon, loading, _CMP_EQ_OQ),
-                                                        _mm256_cmp_pd(deps, zero, _CMP_NLT_UQ)),
-                                          _mm256_and_pd(_mm256_cmp_pd(kon, unloading, _CMP_EQ_OQ),
-                                                        _mm256_cmp_pd(deps, zero, _CMP_NGT_UQ))));
+    const __m256d steady = _mm256_and_pd(below, onTheirBranch(kon, deps));
     lanes::takeTrial(s, steady, newStrain, trial, i, n, kStrain, kStress, kTangent);
     const int others = _mm256_movemask_pd(_mm256_andnot_pd(steady, below));
     for (std::size_t l = 0; l < 4; ++l)

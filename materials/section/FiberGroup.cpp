@@ -454,7 +454,8 @@ class StateFiberGroup final : public FiberGroup {
       law_.commitTrial(t, trialStrain(i), trialStress_[i], trialTangent_[i]);
       return t;
     }
-    static_cast<void>(law_.computeTrial(stored(i), t, trialStrain(i)));
+    const State committed = t;
+    static_cast<void>(law_.computeTrial(committed, t, trialStrain(i)));
     return t;
   }
 

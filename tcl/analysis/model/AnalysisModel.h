@@ -6,9 +6,9 @@
 #include <array>
 #include <atomic>
 #include <cstdint>
-#include <memory>
 #include <functional>
 #include <limits>
+#include <memory>
 #include <optional>
 #include <span>
 #include <string>
@@ -200,7 +200,7 @@ class AnalysisModel {
     std::atomic<int> next{0};
   };
   std::unique_ptr<ListCursor[]> cursors_;
-  int cursorCount_ = 0;
+  int cursorCount_ = 0;                 ///< cursors_'s length (kept when the lists shrink)
   long updateCalls_ = 0;                ///< updateElements calls since the last build
   std::vector<long> materialsAtBuild_;  ///< each element's material update count at the build
   std::vector<double> costs_;           ///< work buffer of formUnits
